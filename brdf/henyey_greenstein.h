@@ -1,0 +1,23 @@
+/* Henyey-Greenstein phase function and the single-scattering subsurface lobe built on it. */
+#ifndef BRDF_HENYEY_GREENSTEIN_H
+#define BRDF_HENYEY_GREENSTEIN_H
+#include "common.h"
+
+/* p(cos) = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^(3/2)), normalised over the sphere. */
+BRDF_FN float henyey_greenstein_phase(float cos_angle, float g) {
+    float denom = 1.0f + g * g - 2.0f * g * cos_angle;
+    return BRDF_INV_4PI * (1.0f - g * g) / (denom * sqrt(denom));
+}
+
+/* First-order scattering in a semi-infinite medium of single-scattering albedo 1 (Hanrahan and
+ * Krueger 1993, without the boundary's Fresnel terms): f = p(-wi . wo) / (cos_i + cos_o).
+ * Light travels along -wi and leaves along wo, so g < 0 scatters back towards the light: the
+ * retro-reflection. Reciprocal, and its albedo is at most that of the phase function over the
+ * upper hemisphere, since cos_o / (cos_i + cos_o) <= 1. */
+BRDF_FN float henyey_greenstein_subsurface_brdf(float3 wo, float3 wi, float g) {
+    float cos_sum = wo.z + wi.z;
+    if (!(cos_sum > 0.0f)) return 0.0f;
+    return henyey_greenstein_phase(-dot(wi, wo), g) / cos_sum;
+}
+
+#endif

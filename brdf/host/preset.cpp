@@ -1,0 +1,151 @@
+#include "brdf/host/preset.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "brdf/host/parameters.hpp"
+#include "common/input_error.hpp"
+
+namespace brdf {
+namespace {
+
+using nlohmann::json;
+using lab::InputError;
+
+const json* find_key(const json& doc, const std::string& key) {
+    auto dot = key.find('.');
+    if (dot == std::string::npos) return doc.contains(key) ? &doc.at(key) : nullptr;
+    std::string group = key.substr(0, dot);
+    if (!doc.contains(group) || !doc.at(group).is_object()) return nullptr;
+    const json& inner = doc.at(group);
+    std::string rest = key.substr(dot + 1);
+    return inner.contains(rest) ? &inner.at(rest) : nullptr;
+}
+
+float checked_number(const json& value, const std::string& source, const std::string& key, float lo, float hi) {
+    if (!value.is_number())
+        throw InputError(source, key, std::string("expected a number, got ") + value.type_name());
+    double v = value.get<double>();
+    if (!std::isfinite(v)) throw InputError(source, key, "not a finite number");
+    // a little slack for values written with fewer digits than the bounds
+    double slack = 1e-6 * std::max(1.0, std::fabs(double(hi)));
+    if (v < lo - slack || v > hi + slack) {
+        std::ostringstream msg;
+        msg << "value " << v << " is out of range [" << lo << ", " << hi << "]";
+        throw InputError(source, key, msg.str());
+    }
+    return float(std::min(std::max(v, double(lo)), double(hi)));
+}
+
+int parse_enum(const json& doc, const std::string& source, const std::string& key, const char* a, int va, const char* b, int vb,
+               int fallback) {
+    if (!doc.contains(key)) return fallback;
+    const json& value = doc.at(key);
+    if (!value.is_string()) throw InputError(source, key, std::string("expected a string, got ") + value.type_name());
+    std::string s = value.get<std::string>();
+    if (s == a) return va;
+    if (s == b) return vb;
+    throw InputError(source, key, "unknown value \"" + s + "\" (expected \"" + a + "\" or \"" + b + "\")");
+}
+
+void reject_unknown_keys(const json& doc, const std::string& source) {
+    std::set<std::string> top = {"name", "description", "model", "distribution", "lobes"};
+    std::set<std::string> lobes;
+    for (const ScalarParameter& p : scalar_parameters()) {
+        std::string key = p.key;
+        if (key.rfind("lobes.", 0) == 0)
+            lobes.insert(key.substr(6));
+        else
+            top.insert(key);
+    }
+    for (auto it = doc.begin(); it != doc.end(); ++it)
+        if (!top.count(it.key())) throw InputError(source, it.key(), "unknown key");
+    if (doc.contains("lobes")) {
+        const json& l = doc.at("lobes");
+        if (!l.is_object()) throw InputError(source, "lobes", std::string("expected an object, got ") + l.type_name());
+        for (auto it = l.begin(); it != l.end(); ++it)
+            if (!lobes.count(it.key())) throw InputError(source, "lobes." + it.key(), "unknown key");
+    }
+}
+
+}  // namespace
+
+Preset parse_preset(const json& doc, const std::string& source) {
+    if (!doc.is_object()) throw InputError(source, "", "a preset must be a JSON object");
+    reject_unknown_keys(doc, source);
+    Preset preset;
+    preset.source = source;
+    preset.material = default_material();
+    preset.name = std::filesystem::path(source).stem().string();
+    for (const char* key : {"name", "description"}) {
+        if (!doc.contains(key)) continue;
+        if (!doc.at(key).is_string()) throw InputError(source, key, std::string("expected a string, got ") + doc.at(key).type_name());
+        (std::string(key) == "name" ? preset.name : preset.description) = doc.at(key).get<std::string>();
+    }
+    preset.material.model = parse_enum(doc, source, "model", "lab", BRDF_MODEL_LAB, "dtoadq2017", BRDF_MODEL_DTOADQ2017, BRDF_MODEL_LAB);
+    preset.material.distribution = parse_enum(doc, source, "distribution", "ggx", BRDF_DISTRIBUTION_GGX, "hyper_cauchy",
+                                              BRDF_DISTRIBUTION_HYPER_CAUCHY, BRDF_DISTRIBUTION_GGX);
+    for (const ScalarParameter& p : scalar_parameters()) {
+        const json* value = find_key(doc, p.key);
+        if (!value) continue;
+        if (p.field) {
+            preset.material.*p.field = checked_number(*value, source, p.key, p.min, p.max) * p.to_material;
+            continue;
+        }
+        // the albedo: three numbers
+        if (!value->is_array() || value->size() != 3)
+            throw InputError(source, p.key, "expected an array of 3 numbers (linear RGB)");
+        for (int c = 0; c < 3; ++c)
+            preset.material.albedo[c] = checked_number(value->at(c), source, std::string(p.key) + "[" + std::to_string(c) + "]", p.min, p.max);
+    }
+    return preset;
+}
+
+Preset load_preset(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path, "", "cannot open preset file");
+    json doc;
+    try {
+        doc = json::parse(in);
+    } catch (const json::parse_error& e) {
+        // nlohmann's message names the byte offset; keep its text after the "[json.exception...]" tag
+        std::string what = e.what();
+        auto pos = what.find("] ");
+        throw InputError(path, "", "malformed JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2)));
+    }
+    return parse_preset(doc, path);
+}
+
+json preset_to_json(const Preset& preset) {
+    json doc;
+    doc["name"] = preset.name;
+    if (!preset.description.empty()) doc["description"] = preset.description;
+    doc["model"] = model_name(preset.material.model);
+    doc["distribution"] = distribution_name(preset.material.distribution);
+    for (const ScalarParameter& p : scalar_parameters()) {
+        json value;
+        if (p.field)
+            value = preset.material.*p.field / p.to_material;
+        else
+            value = {preset.material.albedo[0], preset.material.albedo[1], preset.material.albedo[2]};
+        std::string key = p.key;
+        if (key.rfind("lobes.", 0) == 0)
+            doc["lobes"][key.substr(6)] = value;
+        else
+            doc[key] = value;
+    }
+    return doc;
+}
+
+void save_preset(const Preset& preset, const std::string& path) {
+    std::ofstream out(path);
+    if (!out) throw lab::InputError(path, "", "cannot write preset file");
+    out << preset_to_json(preset).dump(2) << "\n";
+}
+
+}  // namespace brdf

@@ -1,0 +1,27 @@
+// Material presets: JSON files (schema in docs/materials.md) loaded with validation.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "brdf/brdf.hpp"
+
+namespace brdf {
+
+struct Preset {
+    std::string name;         // from the file, or the file's stem
+    std::string description;
+    std::string source;       // where it came from, for messages
+    Material material;
+};
+
+// Throws lab::InputError naming the file and the field for an unreadable file, malformed JSON,
+// an unknown key, a wrong type, a NaN or an out-of-range value.
+Preset load_preset(const std::string& path);
+Preset parse_preset(const nlohmann::json& document, const std::string& source);
+
+nlohmann::json preset_to_json(const Preset& preset);
+void save_preset(const Preset& preset, const std::string& path);
+
+}  // namespace brdf

@@ -1,0 +1,66 @@
+/* Material parameters as every BRDF consumer sees them (host, lobe plots, kernels).
+ * Plain scalars only, so the struct has the same layout in C++ and OpenCL C and can be copied
+ * into a buffer as is. Meanings and ranges: docs/materials.md; the range table lives in
+ * brdf/host/parameters.cpp and the loader enforces it. */
+#ifndef BRDF_MATERIAL_H
+#define BRDF_MATERIAL_H
+#include "common.h"
+
+#define BRDF_MODEL_LAB 0        /* the physically plausible default model */
+#define BRDF_MODEL_DTOADQ2017 1 /* the 2017 write-up's formulas, kept for comparison */
+
+#define BRDF_DISTRIBUTION_GGX 0
+#define BRDF_DISTRIBUTION_HYPER_CAUCHY 1
+
+typedef struct Material {
+    float albedo[3];            /* linear RGB reflectance / tint */
+    float roughness;            /* perceptual; microfacet alpha = roughness^2 */
+    float metallic;             /* 0 dielectric .. 1 conductor */
+    float fresnel;              /* reflectance at normal incidence of the dielectric part */
+    float subsurface;           /* diffuse lobe: 0 Lambert/Disney .. 1 Henyey-Greenstein single scattering */
+    float subsurface_asymmetry; /* Henyey-Greenstein g; < 0 scatters back (retro-reflection) */
+    float retroreflection;      /* diffuse lobe: 0 Lambert .. 1 Disney's diffuse Fresnel factor */
+    float anisotropic;          /* 0 isotropic .. 1 strongest stretch along the tangent */
+    float tangent_rotation;     /* radians, rotates the anisotropy tangent about the normal */
+    float hc_shape;             /* Hyper-Cauchy shape g; 2 equals GGX, larger is lighter-tailed */
+    float weight_diffuse;       /* lobe weights: relative, normalised by their sum */
+    float weight_glossy;
+    float weight_specular;
+    float weight_transmission;
+    float ior;                  /* index of refraction of the transmissive lobe */
+    int model;                  /* BRDF_MODEL_* */
+    int distribution;           /* BRDF_DISTRIBUTION_*, used by glossy and rough transmission */
+} Material;
+
+/* Parameter ranges: the single source for the loader, the docs table, the sweeps and the clamp
+ * below (which keeps a kernel defined even when handed an unchecked struct). */
+#define BRDF_ASYMMETRY_MAX 0.95f
+#define BRDF_HC_SHAPE_MIN 1.6f
+#define BRDF_HC_SHAPE_MAX 16.0f
+#define BRDF_IOR_MIN 1.0f
+#define BRDF_IOR_MAX 3.0f
+
+/* fmin(fmax()) rather than clamp(): it maps NaN to the lower bound instead of leaving it. */
+BRDF_FN float clamp_param(float x, float lo, float hi) { return fmin(fmax(x, lo), hi); }
+
+BRDF_FN Material material_clamped(const Material* in) {
+    Material m = *in;
+    for (int c = 0; c < 3; ++c) m.albedo[c] = clamp_param(m.albedo[c], 0.0f, 1.0f);
+    m.roughness = clamp_param(m.roughness, 0.0f, 1.0f);
+    m.metallic = clamp_param(m.metallic, 0.0f, 1.0f);
+    m.fresnel = clamp_param(m.fresnel, 0.0f, 1.0f);
+    m.subsurface = clamp_param(m.subsurface, 0.0f, 1.0f);
+    m.subsurface_asymmetry = clamp_param(m.subsurface_asymmetry, -BRDF_ASYMMETRY_MAX, BRDF_ASYMMETRY_MAX);
+    m.retroreflection = clamp_param(m.retroreflection, 0.0f, 1.0f);
+    m.anisotropic = clamp_param(m.anisotropic, 0.0f, 1.0f);
+    m.tangent_rotation = clamp_param(m.tangent_rotation, -2.0f * BRDF_PI, 2.0f * BRDF_PI);
+    m.hc_shape = clamp_param(m.hc_shape, BRDF_HC_SHAPE_MIN, BRDF_HC_SHAPE_MAX);
+    m.weight_diffuse = clamp_param(m.weight_diffuse, 0.0f, 1.0f);
+    m.weight_glossy = clamp_param(m.weight_glossy, 0.0f, 1.0f);
+    m.weight_specular = clamp_param(m.weight_specular, 0.0f, 1.0f);
+    m.weight_transmission = clamp_param(m.weight_transmission, 0.0f, 1.0f);
+    m.ior = clamp_param(m.ior, BRDF_IOR_MIN, BRDF_IOR_MAX);
+    return m;
+}
+
+#endif

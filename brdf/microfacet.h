@@ -1,0 +1,72 @@
+/* One microfacet distribution, GGX or Hyper-Cauchy, behind one interface: D, Smith masking
+ * (uncorrelated G1 and height-correlated G2, Heitz 2014 eq. 99) and the sampled normal's density. */
+#ifndef BRDF_MICROFACET_H
+#define BRDF_MICROFACET_H
+#include "common.h"
+#include "ggx.h"
+#include "hyper_cauchy.h"
+#include "material.h"
+
+/* Below this alpha a surface is treated as smooth: its lobe becomes a delta (mirror / refraction). */
+#define BRDF_SMOOTH_ALPHA 1e-3f
+#define BRDF_MIN_ALPHA 1e-4f
+
+typedef struct Microfacet {
+    int kind;   /* BRDF_DISTRIBUTION_* */
+    float ax;   /* GGX alpha along the tangent; Hyper-Cauchy width is alpha / sqrt(2) */
+    float ay;   /* ... along the bitangent */
+    float shape;
+} Microfacet;
+
+/* Disney's anisotropy mapping (Burley 2012): aspect = sqrt(1 - 0.9 anisotropic). */
+BRDF_FN Microfacet microfacet_from_material(const Material* m) {
+    float alpha = fmax(sqr(m->roughness), BRDF_MIN_ALPHA);
+    float aspect = sqrt(1.0f - 0.9f * m->anisotropic);
+    Microfacet mf;
+    mf.kind = m->distribution;
+    mf.ax = fmax(alpha / aspect, BRDF_MIN_ALPHA);
+    mf.ay = fmax(alpha * aspect, BRDF_MIN_ALPHA);
+    mf.shape = m->hc_shape;
+    return mf;
+}
+
+BRDF_FN bool microfacet_is_smooth(Microfacet mf) { return fmax(mf.ax, mf.ay) < BRDF_SMOOTH_ALPHA; }
+
+#define BRDF_INV_SQRT2 0.70710678118654752440f
+
+BRDF_FN float microfacet_d(Microfacet mf, float3 m) {
+    if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
+        return hyper_cauchy_d(m, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape);
+    return ggx_d(m, mf.ax, mf.ay);
+}
+
+BRDF_FN float microfacet_lambda(Microfacet mf, float3 w) {
+    if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
+        return hyper_cauchy_lambda(w, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape);
+    return ggx_lambda(w, mf.ax, mf.ay);
+}
+
+BRDF_FN float microfacet_g1(Microfacet mf, float3 w) { return 1.0f / (1.0f + microfacet_lambda(mf, w)); }
+
+BRDF_FN float microfacet_g2(Microfacet mf, float3 wo, float3 wi) {
+    return 1.0f / (1.0f + microfacet_lambda(mf, wo) + microfacet_lambda(mf, wi));
+}
+
+/* Samples a microfacet normal on the upper side: visible normals of wo for GGX, the distribution
+ * of normals (exact inversion) for Hyper-Cauchy. */
+BRDF_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, float u2) {
+    if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
+        return hyper_cauchy_sample_normal(mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, u1, u2);
+    return ggx_sample_visible_normal(wo, mf.ax, mf.ay, u1, u2);
+}
+
+/* Density of microfacet_sample_normal() over solid angle of m. */
+BRDF_FN float microfacet_normal_pdf(Microfacet mf, float3 wo, float3 m) {
+    if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) return microfacet_d(mf, m) * fmax(m.z, 0.0f);
+    float3 w = wo.z < 0.0f ? -wo : wo;
+    float wm = dot(w, m);
+    if (!(wm > 0.0f) || !(w.z > 0.0f)) return 0.0f;
+    return microfacet_g1(mf, w) * wm * microfacet_d(mf, m) / w.z;
+}
+
+#endif

@@ -1,0 +1,15 @@
+// Each subcommand registers itself on the application; one file per subcommand.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace lab::cli {
+
+void register_lobe(CLI::App& app);
+void register_albedo(CLI::App& app);
+void register_brdf(CLI::App& app);
+void register_validate(CLI::App& app);
+void register_bench(CLI::App& app);
+void register_report(CLI::App& app);
+
+}  // namespace lab::cli

@@ -1,0 +1,31 @@
+// dtoadq: the lab's command line. Every job runs headless from here.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "common/input_error.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"DTOADQ lab: BRDF prototyping and image-based lighting"};
+    app.require_subcommand(1);
+    lab::cli::register_report(app);
+    lab::cli::register_lobe(app);
+    lab::cli::register_albedo(app);
+    lab::cli::register_brdf(app);
+    lab::cli::register_validate(app);
+    lab::cli::register_bench(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const lab::InputError& e) {
+        std::fprintf(stderr, "dtoadq: error: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "dtoadq: error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
