@@ -112,7 +112,7 @@ Preset load_preset(const std::string& path) {
     json doc;
     try {
         doc = json::parse(in);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse errors, and number overflow such as 1e999
         // nlohmann's message names the byte offset; keep its text after the "[json.exception...]" tag
         std::string what = e.what();
         auto pos = what.find("] ");
