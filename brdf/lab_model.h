@@ -41,6 +41,14 @@ BRDF_FN LobeWeights lab_lobe_weights(const Material* m) {
     return w;
 }
 
+/* An interface of index 1 does not bend light: whatever its roughness, transmission is the delta
+ * wi = -wo, which only the smooth path represents. */
+#define BRDF_INDEX_MATCHED_EPSILON 1e-3f
+
+BRDF_FN bool lab_transmission_is_smooth(const Material* m, Microfacet mf) {
+    return microfacet_is_smooth(mf) || fabs(m->ior - 1.0f) < BRDF_INDEX_MATCHED_EPSILON;
+}
+
 BRDF_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }
 
 BRDF_FN float3 lab_specular_f0(const Material* m) { return specular_f0(material_albedo(m), m->fresnel, m->metallic); }
@@ -60,7 +68,7 @@ BRDF_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
         if (w.diffuse > 0.0f) f += material_albedo(m) * (w.diffuse * lab_diffuse_brdf(m, wo, wi));
         if (w.glossy > 0.0f && !smooth) f += w.glossy * microfacet_reflection_eval(mf, lab_specular_f0(m), wo, wi);
     }
-    if (w.transmission > 0.0f && !smooth)
+    if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf))
         f += material_albedo(m) * (w.transmission * rough_dielectric_eval(mf, m->ior, wo, wi));
     return f;
 }
@@ -74,7 +82,8 @@ BRDF_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
         pdf += w.diffuse * cosine_hemisphere_pdf(wi.z);
         if (!smooth) pdf += w.glossy * microfacet_reflection_pdf(mf, wo, wi);
     }
-    if (w.transmission > 0.0f && !smooth) pdf += w.transmission * rough_dielectric_pdf(mf, m->ior, wo, wi);
+    if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf))
+        pdf += w.transmission * rough_dielectric_pdf(mf, m->ior, wo, wi);
     return pdf;
 }
 
@@ -108,7 +117,7 @@ BRDF_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
         return lab_mirror_sample(m, w.specular, wo);
     } else if ((uc -= w.specular) < w.transmission) {
         float u_interface = fmin(uc / w.transmission, 0.99999994f);
-        if (smooth) {
+        if (lab_transmission_is_smooth(m, mf)) {
             s = smooth_dielectric_sample(m->ior, wo, u_interface);
             s.f = s.f * material_albedo(m) * w.transmission;
             s.pdf *= w.transmission;
