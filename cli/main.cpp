@@ -1,6 +1,7 @@
 // dtoadq: the lab's command line. Every job runs headless from here.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -10,6 +11,10 @@
 int main(int argc, char** argv) {
     CLI::App app{"DTOADQ lab: BRDF prototyping and image-based lighting"};
     app.require_subcommand(1);
+    // CLI11's own errors in the lab's one-line form
+    app.failure_message([](const CLI::App*, const CLI::Error& e) {
+        return std::string("dtoadq: error: command line: ") + e.what() + " (see --help)\n";
+    });
     lab::cli::register_report(app);
     lab::cli::register_lobe(app);
     lab::cli::register_albedo(app);

@@ -76,7 +76,7 @@ TEST_CASE("an unreadable or malformed preset file is one clear line", "[presets]
         FAIL("no error");
     } catch (const lab::InputError& e) {
         std::string what = e.what();
-        CHECK(what.find(bad.string() + ": malformed JSON: ") == 0);
+        CHECK(what.find(bad.string() + ": roughness: malformed JSON: ") == 0);
         CHECK(what.find('\n') == std::string::npos);
     }
     std::ofstream(bad) << "{\"ior\": 1e999}";  // overflows: JSON has no infinity
@@ -84,7 +84,7 @@ TEST_CASE("an unreadable or malformed preset file is one clear line", "[presets]
         brdf::load_preset(bad.string());
         FAIL("no error");
     } catch (const lab::InputError& e) {
-        CHECK(std::string(e.what()).find(bad.string() + ": malformed JSON: number overflow") == 0);
+        CHECK(std::string(e.what()).find(bad.string() + ": ior: malformed JSON: number overflow") == 0);
     }
     fs::remove(bad);
 }

@@ -110,13 +110,17 @@ Preset load_preset(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError(path, "", "cannot open preset file");
     json doc;
+    std::string last_key;  // the field being read when parsing fails
     try {
-        doc = json::parse(in);
-    } catch (const json::exception& e) {  // parse errors, and number overflow such as 1e999
+        doc = json::parse(in, [&last_key](int, json::parse_event_t event, json& value) {
+            if (event == json::parse_event_t::key) last_key = value.get<std::string>();
+            return true;
+        });
+    } catch (const json::exception& e) {  // syntax errors, and number overflow such as 1e999
         // nlohmann's message names the byte offset; keep its text after the "[json.exception...]" tag
         std::string what = e.what();
         auto pos = what.find("] ");
-        throw InputError(path, "", "malformed JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2)));
+        throw InputError(path, last_key, "malformed JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2)));
     }
     return parse_preset(doc, path);
 }

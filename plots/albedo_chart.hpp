@@ -1,0 +1,20 @@
+// Albedo charts as PNG: directional albedo against incident angle, per channel, one panel per
+// material, drawn by the embedded albedo_chart.py with matplotlib.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "brdf/host/preset.hpp"
+#include "plots/albedo_curve.hpp"
+
+namespace lab::plots {
+
+// csv_path may be empty; otherwise it gets one row per material and angle:
+//   material,theta,a_r,a_g,a_b,se_r,se_g,se_b  (se: standard error of the estimate).
+// Throws lab::InputError naming a path that cannot be written, std::runtime_error when no Python
+// with matplotlib is found or the script fails.
+void write_albedo_chart(const std::vector<brdf::Preset>& presets, const std::string& png_path, const std::string& csv_path,
+                        const AlbedoCurveOptions& options = {});
+
+}  // namespace lab::plots

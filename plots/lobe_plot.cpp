@@ -1,0 +1,97 @@
+#include "plots/lobe_plot.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "common/input_error.hpp"
+#include "plots/lobe_data.hpp"
+#include "plots/luminance.hpp"
+#include "plots/output_file.hpp"
+#include "plots/python_runner.hpp"
+
+namespace lab::plots {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Fine enough along the plane for the sharpest glossy lobes; coarse enough for matplotlib's 3D.
+constexpr LobeResolution kPlotResolution{1.0f, 0.1f};
+
+void check_incidence(float theta_in_deg, float phi_in_deg) {
+    if (!(theta_in_deg >= 0.0f && theta_in_deg < 90.0f) || !std::isfinite(phi_in_deg))
+        throw std::invalid_argument("lobe plot: the incident direction must have theta in [0, 90) and a finite phi");
+}
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.7g", v);
+    return text;
+}
+
+void write_plot_data(const std::vector<LobeData>& lobes, const fs::path& folder) {
+    std::ofstream materials = open_output((folder / "materials.csv").string(), "");
+    std::ofstream plane = open_output((folder / "plane.csv").string(), "");
+    std::ofstream surface = open_output((folder / "surface.csv").string(), "");
+    std::ofstream deltas = open_output((folder / "deltas.csv").string(), "");
+    materials << "material,name,transmits\n";
+    plane << "material,angle_deg,value\n";
+    surface << "material,theta_deg,phi_deg,value\n";
+    deltas << "material,theta_deg,phi_deg,plane_angle_deg,in_plane,transmission,w_r,w_g,w_b\n";
+    for (size_t i = 0; i < lobes.size(); ++i) {
+        const LobeData& d = lobes[i];
+        materials << i << "," << csv_field(d.material) << "," << int(d.transmits) << "\n";
+        for (const PlaneSample& s : d.plane) plane << i << "," << number(s.angle_deg) << "," << number(s.value) << "\n";
+        for (const LobeSample& s : d.grid) {
+            double value = luminance(s.f) * std::fabs(std::cos(double(s.theta_deg) * M_PI / 180.0));
+            surface << i << "," << number(s.theta_deg) << "," << number(s.phi_deg) << "," << number(value) << "\n";
+        }
+        for (const DeltaLobe& l : d.deltas)
+            deltas << i << "," << number(l.theta_deg) << "," << number(l.phi_deg) << "," << number(l.plane_angle_deg) << ","
+                   << int(l.in_plane) << "," << int(l.transmission) << "," << number(l.weight.x) << "," << number(l.weight.y) << ","
+                   << number(l.weight.z) << "\n";
+    }
+    for (std::ofstream* f : {&materials, &plane, &surface, &deltas})
+        if (!f->flush()) throw std::runtime_error("cannot write plot data in " + folder.string());
+}
+
+}  // namespace
+
+void write_lobe_csv(const std::vector<brdf::Preset>& presets, float theta_in_deg, float phi_in_deg, const std::string& csv_path,
+                    float theta_step_deg) {
+    check_incidence(theta_in_deg, phi_in_deg);
+    std::ofstream out = open_output(csv_path, "");
+    out << "material,theta_o,phi_o,f_r,f_g,f_b,pdf\n";
+    for (const brdf::Preset& p : presets) {
+        LobeData d = compute_lobe(p, theta_in_deg, phi_in_deg, LobeResolution{theta_step_deg, kPlotResolution.plane_step_deg});
+        std::string name = csv_field(d.material);
+        for (const LobeSample& s : d.grid)
+            out << name << "," << number(s.theta_deg) << "," << number(s.phi_deg) << "," << number(s.f.x) << "," << number(s.f.y) << ","
+                << number(s.f.z) << "," << number(s.pdf) << "\n";
+    }
+    if (!out.flush()) throw InputError(csv_path, "", "write failed");
+}
+
+void write_lobe_plot(const std::vector<brdf::Preset>& presets, float theta_in_deg, float phi_in_deg, const std::string& png_path,
+                     const std::string& csv_path, const LobePlotOptions& options) {
+    check_incidence(theta_in_deg, phi_in_deg);
+    if (presets.empty()) throw std::invalid_argument("lobe plot: no materials");
+    require_writable(png_path, "");
+    if (!csv_path.empty()) require_writable(csv_path, "");
+
+    std::vector<LobeData> lobes;
+    for (const brdf::Preset& p : presets) lobes.push_back(compute_lobe(p, theta_in_deg, phi_in_deg, kPlotResolution));
+    TempFolder folder;
+    write_plot_data(lobes, folder.path());
+    fs::path png = folder.path() / "lobe.png";
+    std::vector<std::string> args = {"--data", folder.path().string(), "--out", png.string(), "--theta-in", number(theta_in_deg),
+                                     "--phi-in", number(phi_in_deg)};
+    args.push_back("--scale");
+    args.push_back(options.scale == RadialScale::log ? "log" : options.scale == RadialScale::linear ? "linear" : "auto");
+    run_plot_script("lobe_plot.py", args, folder.path());
+    if (!csv_path.empty()) write_lobe_csv(presets, theta_in_deg, phi_in_deg, csv_path, options.csv_theta_step_deg);
+    install_output(png, png_path, "");
+}
+
+}  // namespace lab::plots

@@ -1,0 +1,35 @@
+// Runs the embedded matplotlib scripts (plots/*.py) with a Python found at run time, so an
+// installed dtoadq needs neither the source tree nor a particular Python.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lab::plots {
+
+// The interpreters tried, in order: $DTOADQ_PYTHON (when set), /usr/bin/python3, python3 on PATH.
+std::vector<std::string> python_candidates();
+
+// The first candidate that can import matplotlib and numpy. Throws std::runtime_error
+// "matplotlib not found: install python3-matplotlib ..." when none can.
+std::string find_matplotlib_python(const std::vector<std::string>& candidates);
+
+// A private temporary folder, removed with everything in it when this goes out of scope.
+class TempFolder {
+public:
+    TempFolder();
+    ~TempFolder();
+    TempFolder(const TempFolder&) = delete;
+    TempFolder& operator=(const TempFolder&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
+// Writes the embedded scripts into `folder` and runs `script` there with the Agg backend. The
+// script's output goes to a log in `folder`; a failure throws with the log's last line.
+void run_plot_script(const std::string& script, const std::vector<std::string>& args, const std::filesystem::path& folder);
+
+}  // namespace lab::plots
