@@ -1,0 +1,69 @@
+// One OpenCL device with its context and in-order queue, and what every kernel host needs:
+// building an embedded kernel source with mapped error messages, buffers, 1D launches.
+#pragma once
+
+#include <string>
+
+#include <CL/cl.h>
+
+#include "opencl/device.hpp"
+#include "opencl/error.hpp"
+#include "opencl/handle.hpp"
+#include "opencl/kernel_source.hpp"
+
+namespace lab::opencl {
+
+class Program {
+public:
+    Program(ProgramHandle handle, AssembledSource source) : handle_(std::move(handle)), source_(std::move(source)) {}
+    cl_program get() const { return handle_.get(); }
+    const AssembledSource& source() const { return source_; }
+    KernelHandle kernel(const char* name) const;
+
+private:
+    ProgramHandle handle_;
+    AssembledSource source_;
+};
+
+class Runtime {
+public:
+    // Selector as in select_device(); throws DeviceNotFound or OpenClError.
+    explicit Runtime(const std::string& selector = "");
+
+    const DeviceInfo& device() const { return device_; }
+    cl_context context() const { return context_.get(); }
+    cl_command_queue queue() const { return queue_.get(); }
+
+    // Compiles with clBuildProgram. PoCL keeps its kernel cache (POCL_CACHE_DIR, by default
+    // ~/.cache/pocl/kcache), so an unchanged source and option string build warm.
+    // Throws KernelBuildError: first line the first error at its original file:line, then the log.
+    Program build(const AssembledSource& source, const std::string& options) const;
+    Program build_embedded(const std::string& entry, const std::string& options) const;
+
+    BufferHandle buffer(size_t bytes, cl_mem_flags flags) const;
+    void write(const BufferHandle& buffer, const void* data, size_t bytes) const;
+    void read(const BufferHandle& buffer, void* data, size_t bytes) const;
+
+    // Enqueues `count` work-items in groups of `local` (the global size is rounded up, so kernels
+    // check their index against the count). A fixed local size keeps PoCL from compiling a new
+    // work-group function for every batch size.
+    void launch_1d(const KernelHandle& kernel, size_t count, size_t local) const;
+    void finish() const;
+
+private:
+    DeviceInfo device_;
+    ContextHandle context_;
+    QueueHandle queue_;
+};
+
+template <typename T>
+void set_kernel_arg(const KernelHandle& kernel, cl_uint index, const T& value) {
+    check_cl(clSetKernelArg(kernel.get(), index, sizeof(T), &value), "clSetKernelArg");
+}
+
+inline void set_kernel_arg(const KernelHandle& kernel, cl_uint index, const BufferHandle& buffer) {
+    cl_mem mem = buffer.get();
+    check_cl(clSetKernelArg(kernel.get(), index, sizeof(cl_mem), &mem), "clSetKernelArg");
+}
+
+}  // namespace lab::opencl

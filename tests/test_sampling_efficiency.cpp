@@ -1,0 +1,69 @@
+// validation/sampling_efficiency: known answers for materials whose best strategy is known.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "brdf/brdf.hpp"
+#include "brdf/host/parameters.hpp"
+#include "validation/sampling_efficiency.hpp"
+
+namespace {
+
+brdf::Material lambert() {
+    brdf::Material m = brdf::default_material();
+    m.weight_diffuse = 1.0f;
+    m.weight_glossy = m.weight_specular = m.weight_transmission = 0.0f;
+    m.retroreflection = 0.0f;
+    m.subsurface = 0.0f;
+    return m;
+}
+
+const brdf::float3 kWo(0.5f, 0.0f, 0.8660254f);  // 30 degrees
+
+}  // namespace
+
+TEST_CASE("sampling efficiency: Lambert is sampled perfectly by both strategies", "[sampling_efficiency]") {
+    lab::validation::SamplingEfficiency e = lab::validation::sampling_efficiency(lambert(), kWo, 20000);
+    CHECK(e.ratio == 1.0);
+    CHECK(e.mean_bsdf == Approx(0.8).epsilon(1e-5));
+    CHECK(e.mean_cosine == Approx(0.8).epsilon(1e-5));
+    CHECK_FALSE(e.has_delta_lobe);
+}
+
+TEST_CASE("sampling efficiency: a rough metal's own sampler beats cosine sampling", "[sampling_efficiency]") {
+    brdf::Material m = lambert();
+    m.metallic = 1.0f;
+    m.roughness = 0.3f;
+    lab::validation::SamplingEfficiency e = lab::validation::sampling_efficiency(m, kWo, 100000);
+    CHECK(e.ratio > 10.0);
+    // both estimate the same albedo: within a few standard errors of each other
+    double se = std::sqrt(e.variance_bsdf / e.samples + e.variance_cosine / e.samples);
+    CHECK(std::fabs(e.mean_bsdf - e.mean_cosine) < 5.0 * se);
+}
+
+TEST_CASE("sampling efficiency: the 2017 model samples cosine-weighted, so the ratio is 1", "[sampling_efficiency]") {
+    brdf::Material m = brdf::default_material();
+    m.model = BRDF_MODEL_DTOADQ2017;
+    lab::validation::SamplingEfficiency e = lab::validation::sampling_efficiency(m, kWo, 100000);
+    CHECK(e.ratio == Approx(1.0).epsilon(0.05));
+}
+
+TEST_CASE("sampling efficiency: delta lobes are excluded and reported", "[sampling_efficiency]") {
+    brdf::Material glass = lambert();
+    glass.weight_diffuse = 0.0f;
+    glass.weight_transmission = 1.0f;
+    glass.roughness = 0.0f;
+    lab::validation::SamplingEfficiency e = lab::validation::sampling_efficiency(glass, kWo, 10000);
+    CHECK(e.has_delta_lobe);
+    CHECK(e.delta_fraction == 1.0);
+    CHECK_FALSE(e.continuous_part);
+    CHECK(std::isnan(e.ratio));
+
+    brdf::Material coated = lambert();
+    coated.weight_specular = 1.0f;  // half the samples are the mirror
+    e = lab::validation::sampling_efficiency(coated, kWo, 20000);
+    CHECK(e.has_delta_lobe);
+    CHECK(e.delta_fraction == Approx(0.5).epsilon(0.05));
+    CHECK(e.mean_cosine == Approx(0.4).epsilon(1e-4));  // the diffuse half of albedo 0.8
+    CHECK(e.mean_bsdf == Approx(0.4).epsilon(0.03));
+}
