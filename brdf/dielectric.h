@@ -45,7 +45,7 @@ BRDF_FN float rough_dielectric_pdf(Microfacet mf, float eta, float3 wo, float3 w
     float etap;
     if (!dielectric_half_vector(wo, wi, eta, &wm, &etap)) return 0.0f;
     float fr = fresnel_dielectric(dot(wo, wm), eta);
-    float pdf_m = microfacet_normal_pdf(mf, wo, wm);
+    float pdf_m = microfacet_normal_pdf(mf, wo, wm, fabs(dot(wo, wm)));
     if (etap == 1.0f && same_hemisphere(wo, wi)) return pdf_m / (4.0f * fabs(dot(wo, wm))) * fr;
     float denom = sqr(dot(wi, wm) + dot(wo, wm) / etap);
     return pdf_m * fabs(dot(wi, wm)) / denom * (1.0f - fr);

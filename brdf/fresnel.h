@@ -20,6 +20,7 @@ BRDF_FN float3 specular_f0(float3 albedo, float fresnel, float metallic) {
 /* Exact unpolarised Fresnel reflectance of a dielectric interface. cos_i is measured on the side
  * of the normal (negative: from inside); eta = eta_inside / eta_outside. */
 BRDF_FN float fresnel_dielectric(float cos_i, float eta) {
+    if (eta == 1.0f) return 0.0f; /* index matched; below, 1 - cos^2 would round to 1 at grazing */
     cos_i = clamp(cos_i, -1.0f, 1.0f);
     if (cos_i < 0.0f) {
         eta = 1.0f / eta;

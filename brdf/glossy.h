@@ -15,13 +15,16 @@ BRDF_FN float3 microfacet_reflection_eval(Microfacet mf, float3 f0, float3 wo, f
     return fresnel_schlick(f0, dot(wi, h)) * (d * g / (4.0f * wo.z * wi.z));
 }
 
-/* Density of reflecting wo about a sampled normal: pdf(h) / (4 wo.h). */
+/* Density of reflecting wo about a sampled normal: pdf(h) / (4 wo.h). For unit wo and wi,
+ * wo.h = |wo + wi| / 2 exactly; a computed dot product is rounding noise when wi is near the
+ * mirror of a grazing wo, and would cut the pdf off where eval has no such cut. */
 BRDF_FN float microfacet_reflection_pdf(Microfacet mf, float3 wo, float3 wi) {
     if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return 0.0f;
-    float3 h = normalize(wo + wi);
-    float wo_h = dot(wo, h);
-    if (!(wo_h > 0.0f)) return 0.0f;
-    return microfacet_normal_pdf(mf, wo, h) / (4.0f * wo_h);
+    float3 sum = wo + wi;
+    float len = length(sum);
+    if (!(len > 0.0f)) return 0.0f;
+    float wo_h = 0.5f * len;
+    return microfacet_normal_pdf(mf, wo, sum / len, wo_h) / (4.0f * wo_h);
 }
 
 /* Reflects wo about a sampled normal; false where that gives no direction microfacet_reflection_pdf()

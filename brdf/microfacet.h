@@ -60,13 +60,14 @@ BRDF_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, floa
     return ggx_sample_visible_normal(wo, mf.ax, mf.ay, u1, u2);
 }
 
-/* Density of microfacet_sample_normal() over solid angle of m. */
-BRDF_FN float microfacet_normal_pdf(Microfacet mf, float3 wo, float3 m) {
+/* Density of microfacet_sample_normal() over solid angle of m. The caller passes wo_m = |wo . m|:
+ * where m is a half vector it knows this more accurately than a dot product of nearly
+ * perpendicular vectors would give it. */
+BRDF_FN float microfacet_normal_pdf(Microfacet mf, float3 wo, float3 m, float wo_m) {
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) return microfacet_d(mf, m) * fmax(m.z, 0.0f);
-    float3 w = wo.z < 0.0f ? -wo : wo;
-    float wm = dot(w, m);
-    if (!(wm > 0.0f) || !(w.z > 0.0f)) return 0.0f;
-    return microfacet_g1(mf, w) * wm * microfacet_d(mf, m) / w.z;
+    float cos_o = fabs(wo.z);
+    if (!(wo_m > 0.0f) || !(cos_o > 0.0f)) return 0.0f;
+    return microfacet_g1(mf, wo) * wo_m * microfacet_d(mf, m) / cos_o;
 }
 
 #endif

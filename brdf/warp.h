@@ -17,8 +17,8 @@ BRDF_FN float3 square_to_cosine_hemisphere(float u1, float u2) {
         r = b;
         phi = (BRDF_PI / 2.0f) - (BRDF_PI / 4.0f) * (a / b);
     }
-    float x = r * cos(phi), y = r * sin(phi);
-    return make_float3(x, y, safe_sqrt(1.0f - x * x - y * y));
+    /* z from r, not from x and y: 1 - x^2 - y^2 loses the rim to rounding */
+    return make_float3(r * cos(phi), r * sin(phi), safe_sqrt((1.0f - r) * (1.0f + r)));
 }
 
 BRDF_FN float cosine_hemisphere_pdf(float cos_theta_w) { return fmax(cos_theta_w, 0.0f) * BRDF_INV_PI; }

@@ -29,10 +29,13 @@ using glm::clamp;
 using glm::cross;
 using glm::dot;
 using glm::length;
-using glm::mix;
 using glm::normalize;
 
 inline float3 make_float3(float x, float y, float z) { return float3(x, y, z); }
+// OpenCL defines mix(x, y, a) as x + (y - x) a; glm::mix computes x (1 - a) + y a, which rounds
+// differently, so the host would not match the kernels.
+inline float mix(float x, float y, float a) { return x + (y - x) * a; }
+inline float3 mix(float3 x, float3 y, float a) { return x + (y - x) * a; }
 inline bool isfinite_f(float x) { return std::isfinite(x); }
 
 }  // namespace brdf
