@@ -16,7 +16,8 @@ BRDF_FN float ggx_lambda(float3 w, float ax, float ay) {
     float c2 = w.z * w.z;
     if (c2 <= 0.0f) return 1e30f;
     float alpha2_tan2 = (sqr(ax * w.x) + sqr(ay * w.y)) / c2;
-    return 0.5f * (-1.0f + sqrt(1.0f + alpha2_tan2));
+    /* (-1 + sqrt(1 + a)) / 2 rewritten as a / (2 (1 + sqrt(1 + a))): no cancellation when a is small */
+    return 0.5f * alpha2_tan2 / (1.0f + sqrt(1.0f + alpha2_tan2));
 }
 
 /* Visible normals of w (flipped to the upper side): Heitz 2018, "Sampling the GGX distribution

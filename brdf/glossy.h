@@ -9,10 +9,14 @@
 
 BRDF_FN float3 microfacet_reflection_eval(Microfacet mf, float3 f0, float3 wo, float3 wi) {
     if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return float3_splat(0.0f);
-    float3 h = normalize(wo + wi);
+    float3 sum = wo + wi;
+    float len = length(sum);
+    if (!(len > 0.0f)) return float3_splat(0.0f);
+    float3 h = sum / len;
     float d = microfacet_d(mf, h);
     float g = microfacet_g2(mf, wo, wi);
-    return fresnel_schlick(f0, dot(wi, h)) * (d * g / (4.0f * wo.z * wi.z));
+    /* wi.h = wo.h = |wo + wi| / 2: symmetric in its arguments, so f is exactly reciprocal */
+    return fresnel_schlick(f0, 0.5f * len) * (d * g / (4.0f * wo.z * wi.z));
 }
 
 /* Density of reflecting wo about a sampled normal: pdf(h) / (4 wo.h). For unit wo and wi,

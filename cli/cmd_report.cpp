@@ -1,5 +1,109 @@
-// PLACEHOLDER: replaced by the report subcommand implementation.
+// dtoadq report: the lab's main job on a folder of presets — overlaid lobe plots per group of
+// materials, the albedo chart of all of them, and the validation table — written to one folder.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "cli/report_groups.hpp"
+#include "common/input_error.hpp"
+#include "plots/albedo_chart.hpp"
+#include "plots/lobe_plot.hpp"
+#include "plots/output_file.hpp"
+#include "validation/report.hpp"
+
+namespace fs = std::filesystem;
+
 namespace lab::cli {
-void register_report(CLI::App&) {}
+namespace {
+
+struct ReportOptions {
+    std::string out = "lab-report";
+    std::string presets = "presets";
+    std::vector<float> thetas{30.0f, 60.0f};
+    long chi_square_samples = 1000000;
+};
+
+std::vector<brdf::Preset> load_preset_folder(const std::string& folder) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) throw InputError(folder, "--presets", "not a folder of presets");
+    std::vector<std::string> paths;
+    for (const auto& entry : fs::directory_iterator(folder))
+        if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
+    if (paths.empty()) throw InputError(folder, "--presets", "holds no .json preset");
+    std::sort(paths.begin(), paths.end());
+    return load_presets(paths);
 }
+
+void run_report(const ReportOptions& o) {
+    std::vector<brdf::Preset> presets = load_preset_folder(o.presets);
+    std::error_code ec;
+    fs::create_directories(o.out, ec);
+    if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");
+    const fs::path out(o.out);
+    std::vector<std::string> written;
+
+    for (const PresetGroup& group : group_presets(presets)) {
+        for (float theta : o.thetas) {
+            std::string name = "lobes_" + group.id + "_theta" + std::to_string(int(theta)) + ".png";
+            std::printf("report: lobes of %s at %g degrees -> %s\n", group.title.c_str(), theta, (out / name).c_str());
+            std::fflush(stdout);
+            plots::write_lobe_plot(group.presets, theta, 0.0f, (out / name).string(), "");
+            written.push_back(name);
+        }
+    }
+    std::printf("report: directional albedo of %zu presets -> %s\n", presets.size(), (out / "albedo.png").c_str());
+    std::fflush(stdout);
+    plots::write_albedo_chart(presets, (out / "albedo.png").string(), (out / "albedo.csv").string());
+    written.push_back("albedo.png");
+    written.push_back("albedo.csv");
+
+    validation::ValidationOptions options;
+    options.chi_square_samples = o.chi_square_samples;
+    std::vector<validation::MaterialValidation> results;
+    for (const brdf::Preset& p : presets) {
+        std::printf("report: validating %s\n", p.name.c_str());
+        std::fflush(stdout);
+        results.push_back(validation::validate_material(p, options));
+    }
+    std::ostringstream table;
+    validation::print_validation_table(table, results);
+    std::printf("\n%s\n", table.str().c_str());
+    plots::open_output((out / "validation.txt").string(), "-o") << table.str();
+    written.push_back("validation.txt");
+
+    // a lab-model preset failing a physical check is a defect; the 2017 model is expected to fail
+    int unexpected = 0;
+    for (const validation::MaterialValidation& r : results)
+        if (!r.passed() && r.model != BRDF_MODEL_DTOADQ2017) ++unexpected;
+    std::ofstream index = plots::open_output((out / "README.md").string(), "-o");
+    index << "# DTOADQ lab report\n\nPresets from `" << o.presets << "`, " << presets.size() << " materials.\n\n";
+    for (const std::string& name : written) index << "- [" << name << "](" << name << ")\n";
+    index << "\n## Validation\n\n```\n" << table.str() << "```\n";
+    std::printf("report: wrote %zu files to %s\n", written.size() + 1, o.out.c_str());
+    if (unexpected > 0) {
+        std::fprintf(stderr, "dtoadq: error: %d lab-model preset(s) failed a physical check (see %s)\n", unexpected,
+                     (out / "validation.txt").c_str());
+        throw CLI::RuntimeError(1);
+    }
+}
+
+}  // namespace
+
+void register_report(CLI::App& app) {
+    auto options = std::make_shared<ReportOptions>();
+    auto* cmd = app.add_subcommand("report", "Lobe plots, albedo chart and validation of every preset, written to one folder");
+    cmd->add_option("-o,--output", options->out, "Folder to write the report into")->capture_default_str();
+    cmd->add_option("--presets", options->presets, "Folder of material presets (JSON)")->capture_default_str();
+    cmd->add_option("--theta-in", options->thetas, "Incident angles of the lobe plots, degrees")->capture_default_str();
+    cmd->add_option("--samples", options->chi_square_samples, "Samples per chi-square test")->capture_default_str();
+    cmd->callback([options] { run_report(*options); });
+}
+
+}  // namespace lab::cli
