@@ -176,3 +176,13 @@ cli_output_test(lobe.writes_png_and_csv 16380 lobe.png lobe.csv
                 --theta-in 40 --phi-in 15 -o lobe.png --csv lobe.csv)
 cli_output_test(albedo.writes_png_and_csv 46 albedo.png albedo.csv
                 albedo --material ${PROJECT_SOURCE_DIR}/presets/gold.json --strata 16 -o albedo.png --csv albedo.csv)
+
+# --- validate and report ---------------------------------------------------------------------------
+cli_bad_input(NAME validate.missing_preset EXPECT "${E}${D}/absent\\.json: cannot open preset file$"
+              ARGS validate --material ${D}/absent.json)
+cli_bad_input(NAME validate.too_few_samples EXPECT "${E}command line: --samples: "
+              ARGS validate --samples 10 --material presets/gold.json)
+cli_bad_input(NAME report.no_preset_folder EXPECT "${E}tests/cli/nope: --presets: not a folder of presets$"
+              ARGS report --presets tests/cli/nope -o ${CLI_SCRATCH}/report_none)
+cli_bad_input(NAME report.bad_preset_in_folder EXPECT "${E}${D}/malformed\\.json: roughness: malformed JSON: "
+              ARGS report --presets ${D} -o ${CLI_SCRATCH}/report_bad)
