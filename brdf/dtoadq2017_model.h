@@ -26,7 +26,7 @@ BRDF_FN float dtoadq2017_hyper_cauchy(float cos_angle, float s, float g) {
 
 BRDF_FN float3 dtoadq2017_eval(const Material* m, float3 wo, float3 wi) {
     if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return float3_splat(0.0f);
-    float3 albedo = make_float3(m->albedo[0], m->albedo[1], m->albedo[2]);
+    float3 albedo = material_albedo(m);
     float3 h = normalize(wo + wi);
     float cos_nl = wi.z, cos_nv = wo.z;
     float cos_hl = dot(h, wi), cos_hv = dot(h, wo);

@@ -49,8 +49,6 @@ BRDF_FN bool lab_transmission_is_smooth(const Material* m, Microfacet mf) {
     return microfacet_is_smooth(mf) || fabs(m->ior - 1.0f) < BRDF_INDEX_MATCHED_EPSILON;
 }
 
-BRDF_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }
-
 BRDF_FN float3 lab_specular_f0(const Material* m) { return specular_f0(material_albedo(m), m->fresnel, m->metallic); }
 
 BRDF_FN float lab_diffuse_brdf(const Material* m, float3 wo, float3 wi) {

@@ -32,6 +32,8 @@ typedef struct Material {
     int distribution;           /* BRDF_DISTRIBUTION_*, used by glossy and rough transmission */
 } Material;
 
+BRDF_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }
+
 /* Parameter ranges: the single source for the loader, the docs table, the sweeps and the clamp
  * below (which keeps a kernel defined even when handed an unchecked struct). */
 #define BRDF_ASYMMETRY_MAX 0.95f

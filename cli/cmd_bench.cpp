@@ -124,18 +124,6 @@ OpenClRates opencl_rates(opencl::BrdfBatch& batch, const Workload& w, int repeat
     return rates;
 }
 
-std::vector<brdf::Preset> load_preset_folder(const std::string& folder) {
-    std::error_code error;
-    if (!fs::is_directory(folder, error))
-        throw InputError(folder, "--presets", "no such folder (run from the repository root or pass --presets DIR)");
-    std::vector<std::string> paths;
-    for (const auto& entry : fs::directory_iterator(folder))
-        if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
-    std::sort(paths.begin(), paths.end());
-    if (paths.empty()) throw InputError(folder, "--presets", "holds no .json presets");
-    return load_presets(paths);
-}
-
 constexpr int kRowName = 26;
 
 void print_rate_row(const std::string& name, const double rates[3], const double baseline[3]) {
@@ -193,7 +181,7 @@ void run_bench_brdf(const BenchBrdfOptions& o) {
     if (o.threads < 1 || o.threads > 256) throw InputError("command line", "--threads", "must be in [1, 256]");
     if (o.repeats < 1 || o.repeats > 100) throw InputError("command line", "--repeats", "must be in [1, 100]");
 
-    std::vector<brdf::Preset> presets = load_preset_folder(o.presets);
+    std::vector<brdf::Preset> presets = load_preset_folder(o.presets, "--presets");
     opencl::Runtime runtime(o.device);
     Workload w = make_workload(presets, o.samples, o.sorted);
     std::printf("dtoadq bench brdf: %ld items %s %zu presets in %s, best of %d runs\n", o.samples,

@@ -30,19 +30,8 @@ struct ReportOptions {
     long chi_square_samples = 1000000;
 };
 
-std::vector<brdf::Preset> load_preset_folder(const std::string& folder) {
-    std::error_code ec;
-    if (!fs::is_directory(folder, ec)) throw InputError(folder, "--presets", "not a folder of presets");
-    std::vector<std::string> paths;
-    for (const auto& entry : fs::directory_iterator(folder))
-        if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
-    if (paths.empty()) throw InputError(folder, "--presets", "holds no .json preset");
-    std::sort(paths.begin(), paths.end());
-    return load_presets(paths);
-}
-
 void run_report(const ReportOptions& o) {
-    std::vector<brdf::Preset> presets = load_preset_folder(o.presets);
+    std::vector<brdf::Preset> presets = load_preset_folder(o.presets, "--presets");
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");

@@ -1,6 +1,8 @@
 #include "cli/options.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "common/input_error.hpp"
@@ -11,6 +13,18 @@ std::vector<brdf::Preset> load_presets(const std::vector<std::string>& paths) {
     std::vector<brdf::Preset> presets;
     for (const std::string& path : paths) presets.push_back(brdf::load_preset(path));
     return presets;
+}
+
+std::vector<brdf::Preset> load_preset_folder(const std::string& folder, const std::string& option) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error))
+        throw InputError(folder, option, "not a folder of presets (run from the repository root or pass " + option + " DIR)");
+    std::vector<std::string> paths;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
+    if (paths.empty()) throw InputError(folder, option, "holds no .json preset");
+    std::sort(paths.begin(), paths.end());
+    return load_presets(paths);
 }
 
 void parse_angle_pair(const std::string& text, const std::string& option, float* theta_deg, float* phi_deg) {

@@ -12,6 +12,9 @@ namespace lab::cli {
 
 std::vector<brdf::Preset> load_presets(const std::vector<std::string>& paths);
 
+// Every *.json preset in a folder, sorted by file name; `option` names the flag in errors.
+std::vector<brdf::Preset> load_preset_folder(const std::string& folder, const std::string& option);
+
 // "THETA,PHI" in degrees; `option` names the flag in the error message.
 void parse_angle_pair(const std::string& text, const std::string& option, float* theta_deg, float* phi_deg);
 
