@@ -5,18 +5,15 @@
 
 #include "brdf/brdf.hpp"
 #include "brdf/host/parameters.hpp"
+#include "tests/lobe_material.hpp"
 
 using brdf::float3;
 
 namespace {
 
 brdf::Material lambert(float albedo) {
-    brdf::Material m = brdf::default_material();
+    brdf::Material m = lobe_material(1, 0, 0, 0);
     m.albedo[0] = m.albedo[1] = m.albedo[2] = albedo;
-    m.weight_diffuse = 1.0f;
-    m.weight_glossy = m.weight_specular = m.weight_transmission = 0.0f;
-    m.retroreflection = 0.0f;
-    m.subsurface = 0.0f;
     return m;
 }
 
@@ -77,9 +74,7 @@ TEST_CASE("Henyey-Greenstein phase integrates to one and has mean cosine g", "[b
 }
 
 TEST_CASE("a smooth mirror returns its Fresnel reflectance as a flagged delta sample", "[brdf]") {
-    brdf::Material m = brdf::default_material();
-    m.weight_diffuse = 0.0f;
-    m.weight_specular = 1.0f;
+    brdf::Material m = lobe_material(0, 0, 1, 0);
     m.metallic = 1.0f;
     m.albedo[0] = 0.9f, m.albedo[1] = 0.5f, m.albedo[2] = 0.2f;
     float3 wo = dir(40, 30);
@@ -95,9 +90,7 @@ TEST_CASE("a smooth mirror returns its Fresnel reflectance as a flagged delta sa
 }
 
 TEST_CASE("smooth glass refracts by Snell's law and weights by Fresnel", "[brdf]") {
-    brdf::Material m = brdf::default_material();
-    m.weight_diffuse = 0.0f;
-    m.weight_transmission = 1.0f;
+    brdf::Material m = lobe_material(0, 0, 0, 1);
     m.roughness = 0.0f;
     m.ior = 1.5f;
     m.albedo[0] = m.albedo[1] = m.albedo[2] = 1.0f;
@@ -115,9 +108,7 @@ TEST_CASE("smooth glass refracts by Snell's law and weights by Fresnel", "[brdf]
 }
 
 TEST_CASE("tangent rotation turns the anisotropic lobe about the normal", "[brdf]") {
-    brdf::Material m = brdf::default_material();
-    m.weight_diffuse = 0.0f;
-    m.weight_glossy = 1.0f;
+    brdf::Material m = lobe_material(0, 1, 0, 0);
     m.metallic = 1.0f;
     m.roughness = 0.4f;
     m.anisotropic = 0.8f;
@@ -133,8 +124,7 @@ TEST_CASE("tangent rotation turns the anisotropic lobe about the normal", "[brdf
 }
 
 TEST_CASE("all-zero lobe weights are a black material whose samples fail", "[brdf]") {
-    brdf::Material m = brdf::default_material();
-    m.weight_diffuse = m.weight_glossy = m.weight_specular = m.weight_transmission = 0.0f;
+    brdf::Material m = lobe_material(0, 0, 0, 0);
     CHECK(brdf::bsdf_eval(&m, dir(10, 0), dir(20, 40)).x == 0.0f);
     CHECK(brdf::bsdf_pdf(&m, dir(10, 0), dir(20, 40)) == 0.0f);
     CHECK(brdf::bsdf_sample(&m, dir(10, 0), float3(0.5f)).flags == 0);

@@ -11,6 +11,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/angles.hpp"
 #include "brdf/host/parameters.hpp"
+#include "tests/lobe_material.hpp"
 #include "validation/chi_square.hpp"
 
 using lab::validation::ChiSquareOptions;
@@ -26,14 +27,10 @@ struct Setting {
 };
 
 brdf::Material lobes(float diffuse, float glossy, float specular, float transmission) {
-    brdf::Material m = brdf::default_material();
+    brdf::Material m = lobe_material(diffuse, glossy, specular, transmission);
     m.albedo[0] = 0.8f;
     m.albedo[1] = 0.6f;
     m.albedo[2] = 0.4f;
-    m.weight_diffuse = diffuse;
-    m.weight_glossy = glossy;
-    m.weight_specular = specular;
-    m.weight_transmission = transmission;
     return m;
 }
 

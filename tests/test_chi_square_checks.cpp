@@ -8,6 +8,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/angles.hpp"
 #include "brdf/host/parameters.hpp"
+#include "tests/lobe_material.hpp"
 #include "validation/chi_square.hpp"
 #include "validation/chi_square_distribution.hpp"
 
@@ -15,17 +16,10 @@ using namespace lab::validation;
 
 namespace {
 
-brdf::Material lambert() {
-    brdf::Material m = brdf::default_material();
-    m.weight_diffuse = 1.0f;
-    m.weight_glossy = m.weight_specular = m.weight_transmission = 0.0f;
-    return m;
-}
+brdf::Material lambert() { return lobe_material(1, 0, 0, 0); }
 
 brdf::Material ggx_metal(float roughness) {
-    brdf::Material m = brdf::default_material();
-    m.weight_diffuse = 0.0f;
-    m.weight_glossy = 1.0f;
+    brdf::Material m = lobe_material(0, 1, 0, 0);
     m.metallic = 1.0f;
     m.roughness = roughness;
     return m;

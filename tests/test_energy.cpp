@@ -9,6 +9,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/angles.hpp"
 #include "brdf/host/parameters.hpp"
+#include "tests/lobe_material.hpp"
 #include "validation/albedo.hpp"
 #include "validation/energy.hpp"
 #include "validation/random_inputs.hpp"
@@ -18,12 +19,8 @@ using namespace lab::validation;
 namespace {
 
 brdf::Material white(float diffuse, float glossy, float specular, float transmission) {
-    brdf::Material m = brdf::default_material();
+    brdf::Material m = lobe_material(diffuse, glossy, specular, transmission);
     m.albedo[0] = m.albedo[1] = m.albedo[2] = 1.0f;
-    m.weight_diffuse = diffuse;
-    m.weight_glossy = glossy;
-    m.weight_specular = specular;
-    m.weight_transmission = transmission;
     return m;
 }
 

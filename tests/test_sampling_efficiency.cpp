@@ -5,18 +5,12 @@
 
 #include "brdf/brdf.hpp"
 #include "brdf/host/parameters.hpp"
+#include "tests/lobe_material.hpp"
 #include "validation/sampling_efficiency.hpp"
 
 namespace {
 
-brdf::Material lambert() {
-    brdf::Material m = brdf::default_material();
-    m.weight_diffuse = 1.0f;
-    m.weight_glossy = m.weight_specular = m.weight_transmission = 0.0f;
-    m.retroreflection = 0.0f;
-    m.subsurface = 0.0f;
-    return m;
-}
+brdf::Material lambert() { return lobe_material(1, 0, 0, 0); }
 
 const brdf::float3 kWo(0.5f, 0.0f, 0.8660254f);  // 30 degrees
 
