@@ -1,5 +1,5 @@
-/* Shared vocabulary of the single-source BRDF module.
- * Every header in brdf/ is written in the common subset of OpenCL C 1.2 and C++17: no references,
+/* Shared vocabulary of the single-source modules (brdf, sdf, ibl, kernels).
+ * Every such header is written in the common subset of OpenCL C 1.2 and C++17: no references,
  * no overloading, no templates; vectors are float3 built with make_float3(); functions are BRDF_FN.
  * On the host, brdf/host/glm_builtins.hpp supplies float3 and the built-ins; in a kernel, OpenCL does. */
 #ifndef BRDF_COMMON_H
@@ -7,10 +7,17 @@
 
 #ifdef __OPENCL_C_VERSION__
 #define BRDF_FN static inline
+#define make_float2(x, y) ((float2)((x), (y)))
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
+#define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
 #define isfinite_f(x) isfinite(x)
+/* Address spaces of buffer pointers; the host has one flat address space. */
+#define CL_GLOBAL __global
+#define CL_CONSTANT __constant
 #else
 #define BRDF_FN inline
+#define CL_GLOBAL
+#define CL_CONSTANT
 #endif
 
 #define BRDF_PI 3.14159265358979323846f

@@ -1,5 +1,6 @@
-// Maps the OpenCL C vocabulary used by the single-source BRDF headers onto GLM and <cmath>,
-// so the very same .h files compile as C++ on the host. Only what brdf/*.h uses is mapped.
+// Maps the OpenCL C vocabulary used by the single-source headers (brdf/, sdf/, ibl/, kernels/*.h)
+// onto GLM and <cmath>, so the very same .h files compile as C++ on the host. Only what those
+// headers use is mapped; swizzles (.xy) are not, so the headers build vectors with make_floatN().
 #pragma once
 
 #include <cmath>
@@ -7,15 +8,26 @@
 
 namespace brdf {
 
+using float2 = glm::vec2;
 using float3 = glm::vec3;
+using float4 = glm::vec4;
+using uint = unsigned int;
 
 // Float overloads from <cmath>: without these, C's double versions would be picked and the
 // host would compute in a different precision than the OpenCL build.
 using std::acos;
+using std::asin;
+using std::atan;
 using std::atan2;
 using std::cos;
 using std::exp;
+using std::exp2;
+using std::fmod;
+using std::log2;
+using std::round;
+using std::tan;
 using std::fabs;
+using std::ceil;
 using std::floor;
 using std::fmax;
 using std::fmin;
@@ -31,7 +43,23 @@ using glm::dot;
 using glm::length;
 using glm::normalize;
 
+inline float2 make_float2(float x, float y) { return float2(x, y); }
 inline float3 make_float3(float x, float y, float z) { return float3(x, y, z); }
+inline float4 make_float4(float x, float y, float z, float w) { return float4(x, y, z, w); }
+// OpenCL's component-wise vector built-ins.
+inline float2 fabs(float2 v) { return glm::abs(v); }
+inline float3 fabs(float3 v) { return glm::abs(v); }
+inline float2 fmax(float2 a, float2 b) { return glm::max(a, b); }
+inline float3 fmax(float3 a, float3 b) { return glm::max(a, b); }
+inline float2 fmin(float2 a, float2 b) { return glm::min(a, b); }
+inline float3 fmin(float3 a, float3 b) { return glm::min(a, b); }
+inline float3 floor(float3 v) { return glm::floor(v); }
+inline float3 round(float3 v) { return glm::round(v); }
+inline float sign(float x) { return x > 0.0f ? 1.0f : (x < 0.0f ? -1.0f : 0.0f); }
+inline int min(int a, int b) { return a < b ? a : b; }
+inline int max(int a, int b) { return a > b ? a : b; }
+inline uint min(uint a, uint b) { return a < b ? a : b; }
+inline uint max(uint a, uint b) { return a > b ? a : b; }
 // OpenCL defines mix(x, y, a) as x + (y - x) a; glm::mix computes x (1 - a) + y a, which rounds
 // differently, so the host would not match the kernels.
 inline float mix(float x, float y, float a) { return x + (y - x) * a; }
