@@ -2,6 +2,7 @@
 #ifndef BRDF_DIFFUSE_H
 #define BRDF_DIFFUSE_H
 #include "common.h"
+#include "features.h"
 #include "fresnel.h"
 
 BRDF_FN float lambert_brdf(void) { return BRDF_INV_PI; }
@@ -10,6 +11,7 @@ BRDF_FN float lambert_brdf(void) { return BRDF_INV_PI; }
  * F_D90 = 0.5 + 2 roughness cos^2 theta_d. Its directional albedo reaches 1.55 at roughness 1 and
  * grazing view; dividing by the bound 1 + 0.6 roughness^2 (max albedo / bound <= 0.98 over
  * roughness and angle, measured) keeps the lobe from gaining energy while staying reciprocal. */
+#if BRDF_FEATURE_RETROREFLECTION
 BRDF_FN float disney_diffuse_brdf(float roughness, float3 wo, float3 wi) {
     float3 h = wo + wi;
     float len = length(h);
@@ -19,5 +21,6 @@ BRDF_FN float disney_diffuse_brdf(float roughness, float3 wo, float3 wi) {
     float fv = 1.0f + (fd90 - 1.0f) * schlick_weight(wo.z);
     return BRDF_INV_PI * fl * fv / (1.0f + 0.6f * roughness * roughness);
 }
+#endif
 
 #endif

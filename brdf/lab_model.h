@@ -12,15 +12,24 @@
 #define BRDF_LAB_MODEL_H
 #include "bsdf_sample.h"
 #include "common.h"
-#include "dielectric.h"
-#include "diffuse.h"
+#include "features.h"
 #include "frame.h"
 #include "fresnel.h"
-#include "glossy.h"
-#include "henyey_greenstein.h"
 #include "material.h"
 #include "microfacet.h"
 #include "warp.h"
+#if BRDF_FEATURE_DIFFUSE
+#include "diffuse.h"
+#endif
+#if BRDF_FEATURE_SUBSURFACE
+#include "henyey_greenstein.h"
+#endif
+#if BRDF_FEATURE_GLOSSY
+#include "glossy.h"
+#endif
+#if BRDF_FEATURE_TRANSMISSION
+#include "dielectric.h"
+#endif
 
 typedef struct LobeWeights {
     float diffuse, glossy, specular, transmission;
@@ -51,11 +60,18 @@ BRDF_FN bool lab_transmission_is_smooth(const Material* m, Microfacet mf) {
 
 BRDF_FN float3 lab_specular_f0(const Material* m) { return specular_f0(material_albedo(m), m->fresnel, m->metallic); }
 
+#if BRDF_FEATURE_DIFFUSE
 BRDF_FN float lab_diffuse_brdf(const Material* m, float3 wo, float3 wi) {
-    float base = mix(lambert_brdf(), disney_diffuse_brdf(m->roughness, wo, wi), m->retroreflection);
-    float scattered = henyey_greenstein_subsurface_brdf(wo, wi, m->subsurface_asymmetry);
-    return mix(base, scattered, m->subsurface);
+    float base = lambert_brdf();
+#if BRDF_FEATURE_RETROREFLECTION
+    base = mix(base, disney_diffuse_brdf(m->roughness, wo, wi), m->retroreflection);
+#endif
+#if BRDF_FEATURE_SUBSURFACE
+    base = mix(base, henyey_greenstein_subsurface_brdf(wo, wi, m->subsurface_asymmetry), m->subsurface);
+#endif
+    return base;
 }
+#endif
 
 BRDF_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
     LobeWeights w = lab_lobe_weights(m);
@@ -63,11 +79,17 @@ BRDF_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
     bool smooth = microfacet_is_smooth(mf);
     float3 f = float3_splat(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
+#if BRDF_FEATURE_DIFFUSE
         if (w.diffuse > 0.0f) f += material_albedo(m) * (w.diffuse * lab_diffuse_brdf(m, wo, wi));
+#endif
+#if BRDF_FEATURE_GLOSSY
         if (w.glossy > 0.0f && !smooth) f += w.glossy * microfacet_reflection_eval(mf, lab_specular_f0(m), wo, wi);
+#endif
     }
+#if BRDF_FEATURE_TRANSMISSION
     if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf))
         f += material_albedo(m) * (w.transmission * rough_dielectric_eval(mf, m->ior, wo, wi));
+#endif
     return f;
 }
 
@@ -77,11 +99,17 @@ BRDF_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
     bool smooth = microfacet_is_smooth(mf);
     float pdf = 0.0f;
     if (wo.z > 0.0f && wi.z > 0.0f) {
+#if BRDF_FEATURE_DIFFUSE
         pdf += w.diffuse * cosine_hemisphere_pdf(wi.z);
+#endif
+#if BRDF_FEATURE_GLOSSY
         if (!smooth) pdf += w.glossy * microfacet_reflection_pdf(mf, wo, wi);
+#endif
     }
+#if BRDF_FEATURE_TRANSMISSION
     if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf))
         pdf += w.transmission * rough_dielectric_pdf(mf, m->ior, wo, wi);
+#endif
     return pdf;
 }
 
@@ -110,10 +138,15 @@ BRDF_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
     } else if ((uc -= w.diffuse) < w.glossy) {
         if (!(wo.z > 0.0f)) return s;
         if (smooth) return lab_mirror_sample(m, w.glossy, wo);
+#if BRDF_FEATURE_GLOSSY
         if (!microfacet_reflection_sample_direction(mf, wo, u.y, u.z, &wi)) return s;
+#else
+        return s;
+#endif
     } else if ((uc -= w.glossy) < w.specular) {
         return lab_mirror_sample(m, w.specular, wo);
     } else if ((uc -= w.specular) < w.transmission) {
+#if BRDF_FEATURE_TRANSMISSION
         float u_interface = fmin(uc / w.transmission, 0.99999994f);
         if (lab_transmission_is_smooth(m, mf)) {
             s = smooth_dielectric_sample(m->ior, wo, u_interface);
@@ -122,6 +155,9 @@ BRDF_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
             return s;
         }
         if (!rough_dielectric_sample_direction(mf, m->ior, wo, u_interface, u.y, u.z, &wi)) return s;
+#else
+        return s;
+#endif
     } else {
         return s; /* all weights zero */
     }

@@ -3,9 +3,14 @@
 #ifndef BRDF_MICROFACET_H
 #define BRDF_MICROFACET_H
 #include "common.h"
-#include "ggx.h"
-#include "hyper_cauchy.h"
+#include "features.h"
 #include "material.h"
+#if BRDF_FEATURE_GGX
+#include "ggx.h"
+#endif
+#if BRDF_FEATURE_HYPER_CAUCHY
+#include "hyper_cauchy.h"
+#endif
 
 /* Below this alpha a surface is treated as smooth: its lobe becomes a delta (mirror / refraction). */
 #define BRDF_SMOOTH_ALPHA 1e-3f
@@ -34,16 +39,30 @@ BRDF_FN bool microfacet_is_smooth(Microfacet mf) { return fmax(mf.ax, mf.ay) < B
 
 #define BRDF_INV_SQRT2 0.70710678118654752440f
 
+/* With a distribution switched off (brdf/features.h) its branch compiles to nothing; the host never
+ * hands such a kernel a material that uses it. */
 BRDF_FN float microfacet_d(Microfacet mf, float3 m) {
+#if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
         return hyper_cauchy_d(m, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape);
+#endif
+#if BRDF_FEATURE_GGX
     return ggx_d(m, mf.ax, mf.ay);
+#else
+    return 0.0f;
+#endif
 }
 
 BRDF_FN float microfacet_lambda(Microfacet mf, float3 w) {
+#if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
         return hyper_cauchy_lambda(w, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape);
+#endif
+#if BRDF_FEATURE_GGX
     return ggx_lambda(w, mf.ax, mf.ay);
+#else
+    return 0.0f;
+#endif
 }
 
 BRDF_FN float microfacet_g1(Microfacet mf, float3 w) { return 1.0f / (1.0f + microfacet_lambda(mf, w)); }
@@ -55,9 +74,15 @@ BRDF_FN float microfacet_g2(Microfacet mf, float3 wo, float3 wi) {
 /* Samples a microfacet normal on the upper side: visible normals of wo for GGX, the distribution
  * of normals (exact inversion) for Hyper-Cauchy. */
 BRDF_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, float u2) {
+#if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
         return hyper_cauchy_sample_normal(mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, u1, u2);
+#endif
+#if BRDF_FEATURE_GGX
     return ggx_sample_visible_normal(wo, mf.ax, mf.ay, u1, u2);
+#else
+    return make_float3(0.0f, 0.0f, 1.0f);
+#endif
 }
 
 /* Density of microfacet_sample_normal() over solid angle of m. The caller passes wo_m = |wo . m|:

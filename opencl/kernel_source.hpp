@@ -30,8 +30,12 @@ struct AssembledSource {
 using SourceLookup = std::function<std::string_view(const std::string& path)>;
 
 // Expands `#include "name"` recursively. `name` resolves against the including file's folder first,
-// then against the repository root. A file is expanded at its first include only (like #pragma once):
-// every header here has an include guard, so a second copy would preprocess to nothing anyway.
+// then against the repository root. A file is expanded at its first include only (like #pragma once)
+// unless that include sits in a block the compiler may switch off: every header here has an include
+// guard, so a second copy preprocesses to nothing when both are compiled.
+// Feature switches are resolved while assembling: a block `#if NAME` / `#ifndef NAME` whose NAME an
+// earlier line defined (as 0 or 1 for #if; see brdf/features.h) is kept or dropped here, includes
+// and all, so a kernel's source holds only the parts of the modules its scene uses.
 // Throws OpenClError naming the file and line of an include that resolves to no file.
 AssembledSource assemble_source(const std::string& entry, const SourceLookup& lookup);
 

@@ -1,0 +1,71 @@
+#include "brdf/host/features.hpp"
+
+namespace brdf {
+
+namespace {
+
+struct Needs {
+    bool lab = false, dtoadq2017 = false, diffuse = false, retroreflection = false, subsurface = false, glossy = false,
+         transmission = false, ggx = false, hyper_cauchy = false;
+};
+
+void add_distribution(const Microfacet& mf, Needs* needs) {
+    if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) needs->hyper_cauchy = true;
+    else needs->ggx = true;
+}
+
+// Mirrors the branches of lab_eval / lab_pdf / lab_sample: a feature is needed exactly when one of
+// its branches can be taken for this material.
+void add_material(const Material& input, Needs* needs) {
+    Material m = material_clamped(&input);
+    if (m.model == BRDF_MODEL_DTOADQ2017) {
+        needs->dtoadq2017 = true;
+        return;
+    }
+    needs->lab = true;
+    LobeWeights w = lab_lobe_weights(&m);
+    Microfacet mf = microfacet_from_material(&m);
+    if (w.diffuse > 0.0f) {
+        needs->diffuse = true;
+        needs->retroreflection = needs->retroreflection || m.retroreflection > 0.0f;
+        needs->subsurface = needs->subsurface || m.subsurface > 0.0f;
+    }
+    if (w.glossy > 0.0f) {
+        needs->glossy = true;
+        if (!microfacet_is_smooth(mf)) add_distribution(mf, needs);
+    }
+    if (w.transmission > 0.0f) {
+        needs->transmission = true;
+        if (!lab_transmission_is_smooth(&m, mf)) add_distribution(mf, needs);
+    }
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, bool>> used_features(const std::vector<Material>& materials) {
+    Needs n;
+    for (const Material& m : materials) add_material(m, &n);
+    return {{"BRDF_FEATURE_LAB_MODEL", n.lab},
+            {"BRDF_FEATURE_DTOADQ2017", n.dtoadq2017},
+            {"BRDF_FEATURE_DIFFUSE", n.diffuse},
+            {"BRDF_FEATURE_RETROREFLECTION", n.retroreflection},
+            {"BRDF_FEATURE_SUBSURFACE", n.subsurface},
+            {"BRDF_FEATURE_GLOSSY", n.glossy},
+            {"BRDF_FEATURE_TRANSMISSION", n.transmission},
+            {"BRDF_FEATURE_GGX", n.ggx},
+            {"BRDF_FEATURE_HYPER_CAUCHY", n.hyper_cauchy}};
+}
+
+std::string feature_defines(const std::vector<Material>& materials) {
+    std::string out;
+    for (const auto& [name, on] : used_features(materials)) out += "#define " + name + (on ? " 1\n" : " 0\n");
+    return out;
+}
+
+std::string feature_build_options(const std::vector<Material>& materials) {
+    std::string out;
+    for (const auto& [name, on] : used_features(materials)) out += (out.empty() ? "-D" : " -D") + name + (on ? "=1" : "=0");
+    return out;
+}
+
+}  // namespace brdf

@@ -1,0 +1,134 @@
+// Feature switches (brdf/features.h): a kernel built with only the features its materials need
+// gives exactly the results of the full build, and the switched-off parts never reach its source.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "brdf/brdf.hpp"
+#include "brdf/host/features.hpp"
+#include "brdf/host/preset.hpp"
+#include "opencl/brdf_batch.hpp"
+#include "opencl/kernel_source.hpp"
+#include "opencl/runtime.hpp"
+#include "tests/lobe_material.hpp"
+#include "validation/uniform_random.hpp"
+
+namespace fs = std::filesystem;
+using brdf::float3;
+
+namespace {
+
+bool feature_on(const std::vector<brdf::Material>& materials, const std::string& name) {
+    for (const auto& [feature, on] : brdf::used_features(materials))
+        if (feature == name) return on;
+    FAIL("no feature " << name);
+    return false;
+}
+
+// The kernel source a scene holding `materials` would get: its switches, then the module.
+lab::opencl::AssembledSource assembled_with(const std::vector<brdf::Material>& materials) {
+    std::string prelude = brdf::feature_defines(materials) + "#include \"brdf/bsdf.h\"\n";
+    return lab::opencl::assemble_source("generated/features_test.h", [&](const std::string& path) -> std::string_view {
+        if (path == "generated/features_test.h") return prelude;
+        return lab::opencl::embedded_kernel_file(path);
+    });
+}
+
+bool contains_file(const lab::opencl::AssembledSource& source, const std::string& file) {
+    for (const auto& origin : source.origin)
+        if (origin.file == file) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("used_features follows the lobes a material can reach", "[features]") {
+    brdf::Material lambert = lobe_material(1, 0, 0, 0);
+    CHECK(feature_on({lambert}, "BRDF_FEATURE_DIFFUSE"));
+    CHECK_FALSE(feature_on({lambert}, "BRDF_FEATURE_GLOSSY"));
+    CHECK_FALSE(feature_on({lambert}, "BRDF_FEATURE_GGX"));
+    CHECK_FALSE(feature_on({lambert}, "BRDF_FEATURE_RETROREFLECTION"));
+    CHECK_FALSE(feature_on({lambert}, "BRDF_FEATURE_DTOADQ2017"));
+
+    brdf::Material metal = lobe_material(1, 0, 0, 0);
+    metal.metallic = 1.0f;  // moves the diffuse weight onto the glossy lobe
+    CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_DIFFUSE"));
+    CHECK(feature_on({metal}, "BRDF_FEATURE_GLOSSY"));
+    CHECK(feature_on({metal}, "BRDF_FEATURE_GGX"));
+    CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_HYPER_CAUCHY"));
+    metal.distribution = BRDF_DISTRIBUTION_HYPER_CAUCHY;
+    CHECK(feature_on({metal}, "BRDF_FEATURE_HYPER_CAUCHY"));
+    CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_GGX"));
+
+    brdf::Material glass = lobe_material(0, 0, 0, 1);
+    glass.roughness = 0.0f;  // smooth: a delta lobe, no distribution needed
+    CHECK(feature_on({glass}, "BRDF_FEATURE_TRANSMISSION"));
+    CHECK_FALSE(feature_on({glass}, "BRDF_FEATURE_GGX"));
+    CHECK(feature_on({glass, metal}, "BRDF_FEATURE_HYPER_CAUCHY"));
+}
+
+TEST_CASE("switched-off features never reach the kernel source", "[features]") {
+    brdf::Material gold = lobe_material(0, 1, 0, 0);
+    gold.metallic = 1.0f;
+    lab::opencl::AssembledSource source = assembled_with({gold});
+    CHECK(contains_file(source, "brdf/ggx.h"));
+    CHECK(contains_file(source, "brdf/glossy.h"));
+    for (const char* absent : {"brdf/hyper_cauchy.h", "brdf/special_functions.h", "brdf/henyey_greenstein.h", "brdf/dielectric.h",
+                               "brdf/diffuse.h", "brdf/dtoadq2017_model.h"}) {
+        INFO(absent);
+        CHECK_FALSE(contains_file(source, absent));
+    }
+    CHECK(source.text.find("BRDF_FEATURE_HYPER_CAUCHY") != std::string::npos);  // the define itself
+    CHECK(source.text.find("hyper_cauchy_d") == std::string::npos);
+
+    // Without switches everything is there, and the #if lines are left to the compiler.
+    lab::opencl::AssembledSource full = lab::opencl::assemble_embedded_source("kernels/brdf_batch.cl");
+    for (const char* present : {"brdf/hyper_cauchy.h", "brdf/henyey_greenstein.h", "brdf/dielectric.h", "brdf/dtoadq2017_model.h"}) {
+        INFO(present);
+        CHECK(contains_file(full, present));
+    }
+    CHECK(full.text.find("#if BRDF_FEATURE_HYPER_CAUCHY") != std::string::npos);
+}
+
+TEST_CASE("a kernel built with a preset's features only agrees exactly with the full build", "[features][opencl]") {
+    lab::opencl::Runtime runtime("");
+    lab::opencl::BrdfBatch full(runtime);
+    std::vector<brdf::Preset> presets;
+    for (const auto& entry : fs::directory_iterator("presets"))
+        if (entry.path().extension() == ".json") presets.push_back(brdf::load_preset(entry.path().string()));
+    REQUIRE(presets.size() >= 8);
+
+    lab::validation::UniformRandom random(7);
+    const int n = 2000;
+    std::vector<int> index(n, 0);
+    std::vector<float3> wo(n), wi(n), u(n);
+    auto direction = [&random] {
+        float3 u = random.next_float3();
+        float z = 2.0f * u.x - 1.0f, r = std::sqrt(std::fmax(0.0f, 1.0f - z * z)), phi = 6.2831853f * u.y;
+        return float3(r * std::cos(phi), r * std::sin(phi), z);
+    };
+    for (int k = 0; k < n; ++k) {
+        wo[k] = direction();
+        wi[k] = direction();
+        u[k] = random.next_float3();
+    }
+    for (const brdf::Preset& preset : presets) {
+        INFO(preset.name << ": " << brdf::feature_build_options({preset.material}));
+        lab::opencl::BrdfBatch reduced(runtime, brdf::feature_build_options({preset.material}));
+        full.set_materials({preset.material});
+        reduced.set_materials({preset.material});
+        std::vector<float3> f_full = full.eval(index, wo, wi), f_reduced = reduced.eval(index, wo, wi);
+        std::vector<float> p_full = full.pdf(index, wo, wi), p_reduced = reduced.pdf(index, wo, wi);
+        std::vector<brdf::BsdfSample> s_full = full.sample(index, wo, u), s_reduced = reduced.sample(index, wo, u);
+        int differ = 0;
+        for (int k = 0; k < n; ++k) {
+            bool same = f_full[k] == f_reduced[k] && p_full[k] == p_reduced[k] && s_full[k].flags == s_reduced[k].flags &&
+                        (s_full[k].flags == 0 || (s_full[k].wi == s_reduced[k].wi && s_full[k].f == s_reduced[k].f && s_full[k].pdf == s_reduced[k].pdf));
+            differ += same ? 0 : 1;
+        }
+        CHECK(differ == 0);
+    }
+}
