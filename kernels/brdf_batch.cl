@@ -7,6 +7,7 @@
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "brdf/bsdf.h"
+#include "kernels/material_layout.h"
 
 static float3 load_direction(__global const float* a, int i) {
     return (float3)(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
@@ -16,16 +17,6 @@ static void store_direction(__global float* a, int i, float3 v) {
     a[3 * i] = v.x;
     a[3 * i + 1] = v.y;
     a[3 * i + 2] = v.z;
-}
-
-/* The Material layout as this compiler sees it; the host compares it with its own before use. */
-__kernel void brdf_material_layout(__global int* out) {
-    if (get_global_id(0) != 0) return;
-    out[0] = (int)sizeof(Material);
-    out[1] = (int)__builtin_offsetof(Material, roughness);
-    out[2] = (int)__builtin_offsetof(Material, ior);
-    out[3] = (int)__builtin_offsetof(Material, model);
-    out[4] = (int)__builtin_offsetof(Material, distribution);
 }
 
 __kernel void brdf_eval(int count, __global const Material* materials, __global const int* material_index,

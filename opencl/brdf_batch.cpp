@@ -1,9 +1,9 @@
 #include "opencl/brdf_batch.hpp"
 
 #include <chrono>
-#include <cstddef>
 
 #include "brdf/host/parameters.hpp"
+#include "opencl/material_layout.hpp"
 
 namespace lab::opencl {
 
@@ -11,8 +11,6 @@ namespace {
 
 // Directions travel as packed float triples; glm::vec3 is exactly that.
 static_assert(sizeof(brdf::float3) == 3 * sizeof(float), "brdf::float3 must be three packed floats");
-// Plain floats and ints only (brdf/material.h): 17 floats and 2 ints, no padding on either side.
-static_assert(sizeof(brdf::Material) == 19 * 4, "brdf::Material changed: update the layout check in kernels/brdf_batch.cl");
 
 using Clock = std::chrono::steady_clock;
 
@@ -39,7 +37,7 @@ BrdfBatch::BrdfBatch(const Runtime& runtime, const std::string& extra_options)
                  "clGetKernelWorkGroupInfo");
         while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     }
-    check_layout();
+    check_material_layout(runtime_, program_);
 
     // One item through every kernel, so later timings exclude PoCL's work-group compilation.
     Clock::time_point start = Clock::now();
@@ -50,24 +48,6 @@ BrdfBatch::BrdfBatch(const Runtime& runtime, const std::string& extra_options)
     pdf(index, wo, third);
     sample(index, wo, third);
     first_launch_seconds_ = seconds_since(start);
-}
-
-void BrdfBatch::check_layout() {
-    KernelHandle layout = program_.kernel("brdf_material_layout");
-    int device[5] = {0, 0, 0, 0, 0};
-    BufferHandle out = runtime_.buffer(sizeof(device), CL_MEM_WRITE_ONLY);
-    set_kernel_arg(layout, 0, out);
-    runtime_.launch_1d(layout, 1, 1);
-    runtime_.read(out, device, sizeof(device));
-    const int host[5] = {int(sizeof(brdf::Material)), int(offsetof(brdf::Material, roughness)), int(offsetof(brdf::Material, ior)),
-                         int(offsetof(brdf::Material, model)), int(offsetof(brdf::Material, distribution))};
-    for (int k = 0; k < 5; ++k)
-        if (device[k] != host[k])
-            throw OpenClError("Material layout differs between host and " + runtime_.device().device_name + " (size/offsets host " +
-                              std::to_string(host[0]) + "/" + std::to_string(host[1]) + "/" + std::to_string(host[2]) + "/" +
-                              std::to_string(host[3]) + "/" + std::to_string(host[4]) + ", device " + std::to_string(device[0]) + "/" +
-                              std::to_string(device[1]) + "/" + std::to_string(device[2]) + "/" + std::to_string(device[3]) + "/" +
-                              std::to_string(device[4]) + ")");
 }
 
 void BrdfBatch::set_materials(const std::vector<brdf::Material>& materials) {

@@ -43,7 +43,6 @@ public:
     const BatchTiming& last_timing() const { return timing_; }
 
 private:
-    void check_layout();
     void check_inputs(const std::vector<int>& material, size_t wo_count, size_t third_count) const;
     void upload_inputs(const std::vector<int>& material, const std::vector<brdf::float3>& wo, const std::vector<brdf::float3>& third,
                        BufferHandle* index, BufferHandle* wo_buffer, BufferHandle* third_buffer);
