@@ -1,0 +1,97 @@
+/* The cube an environment is stored on: six square faces at distance 1 from the origin, each
+ * N x N texels, following the OpenGL cube-map convention (OpenGL 4.6 core specification,
+ * section 8.13, table 8.19), so the texel array uploads to a GL cube map face by face as is.
+ *
+ * Faces, in storage order: 0 +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z.
+ * A direction d is on the face of its largest |component| m (ties go to x before y before z, and to
+ * the face whose sign matches); its face coordinates are a = sc / |m|, b = tc / |m| in [-1, 1]:
+ *
+ *   face   sc    tc    direction of face point (a, b)
+ *   +x     -z    -y    ( 1, -b, -a)
+ *   -x     +z    -y    (-1, -b,  a)
+ *   +y     +x    +z    ( a,  1,  b)
+ *   -y     +x    -z    ( a, -1, -b)
+ *   +z     +x    -y    ( a, -b,  1)
+ *   -z     -x    -y    (-a, -b, -1)
+ *
+ * Texel (i, j) of a face covers a in [-1 + 2i/N, -1 + 2(i+1)/N] (column i) and
+ * b in [-1 + 2j/N, -1 + 2(j+1)/N] (row j); it is stored at index (face * N + j) * N + i. In GL's
+ * terms a = 2s - 1 and b = 2t - 1, and row j = 0 is the first row of the face's image data. On the
+ * four side faces b = -1 is the top edge (towards +y).
+ *
+ * A point (a, b) on a face at distance 1 lies at distance r = sqrt(1 + a^2 + b^2) from the centre,
+ * and the face's normal makes the angle theta with the ray, cos theta = 1 / r. The solid angle of a
+ * small area dA there is dA cos theta / r^2 = dA / (1 + a^2 + b^2)^(3/2). */
+#ifndef IBL_CUBEMAP_H
+#define IBL_CUBEMAP_H
+
+#include "brdf/common.h"
+
+#define CUBEMAP_FACES 6
+
+/* Face of direction d (any length but 0) and its face coordinates a, b in [-1, 1]. */
+BRDF_FN int cubemap_face(float3 d, float* a, float* b) {
+    float ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
+    if (ax >= ay && ax >= az) {
+        float inv = 1.0f / ax;
+        *b = -d.y * inv;
+        if (d.x >= 0.0f) {
+            *a = -d.z * inv;
+            return 0;
+        }
+        *a = d.z * inv;
+        return 1;
+    }
+    if (ay >= az) {
+        float inv = 1.0f / ay;
+        *a = d.x * inv;
+        if (d.y >= 0.0f) {
+            *b = d.z * inv;
+            return 2;
+        }
+        *b = -d.z * inv;
+        return 3;
+    }
+    float inv = 1.0f / az;
+    *b = -d.y * inv;
+    if (d.z >= 0.0f) {
+        *a = d.x * inv;
+        return 4;
+    }
+    *a = -d.x * inv;
+    return 5;
+}
+
+/* The point (a, b) of a face as a direction (not normalised: its length is sqrt(1 + a^2 + b^2)). */
+BRDF_FN float3 cubemap_face_point(int face, float a, float b) {
+    if (face == 0) return make_float3(1.0f, -b, -a);
+    if (face == 1) return make_float3(-1.0f, -b, a);
+    if (face == 2) return make_float3(a, 1.0f, b);
+    if (face == 3) return make_float3(a, -1.0f, -b);
+    if (face == 4) return make_float3(a, -b, 1.0f);
+    return make_float3(-a, -b, -1.0f);
+}
+
+/* Column (or row) of the texel holding face coordinate a. Clamped, so a = 1 lands in the last
+ * texel and a NaN (from a zero direction) in the first: every direction reads a valid texel. */
+BRDF_FN int cubemap_texel_coordinate(int face_size, float a) {
+    float x = (a + 1.0f) * 0.5f * (float)face_size;
+    return (int)floor(fmin(fmax(x, 0.0f), (float)(face_size - 1)));
+}
+
+/* Index of the texel direction d falls into. */
+BRDF_FN int cubemap_texel_index(int face_size, float3 d) {
+    float a, b;
+    int face = cubemap_face(d, &a, &b);
+    int i = cubemap_texel_coordinate(face_size, a);
+    int j = cubemap_texel_coordinate(face_size, b);
+    return (face * face_size + j) * face_size + i;
+}
+
+/* dA / d(solid angle) at face point (a, b): (1 + a^2 + b^2)^(3/2) (see the top of this file). */
+BRDF_FN float cubemap_area_per_solid_angle(float a, float b) {
+    float r2 = 1.0f + a * a + b * b;
+    return r2 * sqrt(r2);
+}
+
+#endif

@@ -1,0 +1,211 @@
+#include "ibl/environment.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <utility>
+
+#include <OpenImageIO/imageio.h>
+
+#include "common/input_error.hpp"
+#include "ibl/distribution.hpp"
+
+namespace lab::ibl {
+
+namespace {
+
+constexpr int kMaxImageHeight = 16384;
+
+std::string number_text(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+void validate(const EnvironmentOptions& options) {
+    if (!std::isfinite(options.rotation_degrees))
+        throw InputError(options.origin, "rotation_degrees", "not a finite number");
+    if (!(std::fabs(options.exposure_stops) <= kMaxExposureStops))
+        throw InputError(options.origin, "exposure_stops",
+                         "must be a number in [-64, 64], got " + number_text(options.exposure_stops));
+    if (options.face_size < 0 || options.face_size > kMaxFaceSize)
+        throw InputError(options.origin, "face_size",
+                         "must be in [1, 4096] (0: automatic), got " + std::to_string(options.face_size));
+}
+
+// cos and sin of the rotation, exact for multiples of 90 degrees so that those turns move texels
+// without resampling error.
+void rotation(float degrees, float* c, float* s) {
+    double r = std::fmod(double(degrees), 360.0);
+    if (r < 0.0) r += 360.0;
+    if (r == 0.0 || r == 90.0 || r == 180.0 || r == 270.0) {
+        const int quarter = int(r / 90.0);
+        const float cosines[4] = {1.0f, 0.0f, -1.0f, 0.0f}, sines[4] = {0.0f, 1.0f, 0.0f, -1.0f};
+        *c = cosines[quarter];
+        *s = sines[quarter];
+        return;
+    }
+    const double radians = r * (3.14159265358979323846 / 180.0);
+    *c = float(std::cos(radians));
+    *s = float(std::sin(radians));
+}
+
+std::string trim(const std::string& s) {
+    size_t b = 0, e = s.size();
+    while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+    while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+    return s.substr(b, e - b);
+}
+
+// "R,G,B" after "constant:".
+brdf::float3 parse_constant(const std::string& text, const std::string& origin) {
+    std::vector<std::string> parts;
+    size_t start = 0;
+    while (true) {
+        size_t comma = text.find(',', start);
+        parts.push_back(trim(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (parts.size() != 3)
+        throw InputError(origin, "constant",
+                         "expected three numbers R,G,B, got " + std::to_string(parts.size()) + " in \"" + text + "\"");
+    const char* names[3] = {"R", "G", "B"};
+    float value[3];
+    for (int c = 0; c < 3; ++c) {
+        const std::string& p = parts[c];
+        char* end = nullptr;
+        const double v = p.empty() ? 0.0 : std::strtod(p.c_str(), &end);
+        if (p.empty() || end != p.c_str() + p.size())
+            throw InputError(origin, "constant", std::string(names[c]) + " is not a number: \"" + p + "\"");
+        value[c] = float(v);
+        if (!std::isfinite(value[c]))
+            throw InputError(origin, "constant", std::string(names[c]) + " is not a finite float: \"" + p + "\"");
+        if (value[c] < 0.0f)
+            throw InputError(origin, "constant", std::string(names[c]) + " is negative: \"" + p + "\"");
+    }
+    return brdf::float3(value[0], value[1], value[2]);
+}
+
+std::string lowercase_extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    return ext;
+}
+
+}  // namespace
+
+Environment::Environment(std::vector<brdf::float4> texels, int face_size, std::string source,
+                         const EnvironmentOptions& options)
+    : texels_(std::move(texels)), source_(std::move(source)) {
+    map_.face_size = face_size;
+    rotation(options.rotation_degrees, &map_.rotation_cos, &map_.rotation_sin);
+    map_.intensity = std::exp2(options.exposure_stops);
+    CubemapDistribution d = build_cubemap_distribution(texels_, face_size);
+    marginal_cdf_ = std::move(d.marginal_cdf);
+    conditional_cdf_ = std::move(d.conditional_cdf);
+}
+
+Environment Environment::from_image(const LatLongImage& image, std::string source, const EnvironmentOptions& options) {
+    validate(options);
+    const int n = options.face_size > 0 ? options.face_size
+                                        : std::clamp(image.width / 4, kMinAutomaticFaceSize, kMaxAutomaticFaceSize);
+    return Environment(equirect_to_cubemap(image, n), n, std::move(source), options);
+}
+
+Environment Environment::constant(brdf::float3 radiance, std::string source, const EnvironmentOptions& options) {
+    validate(options);
+    if (!brdf::finite3(radiance) || radiance.x < 0.0f || radiance.y < 0.0f || radiance.z < 0.0f)
+        throw InputError(options.origin, "constant", "radiance must be finite and non-negative");
+    const int n = options.face_size > 0 ? options.face_size : kMinAutomaticFaceSize;
+    std::vector<brdf::float4> texels(size_t(CUBEMAP_FACES) * n * n, brdf::float4(radiance, 1.0f));
+    return Environment(std::move(texels), n, std::move(source), options);
+}
+
+brdf::float3 Environment::radiance(brdf::float3 direction) const {
+    return ::ibl::environment_radiance(&map_, texels_.data(), direction);
+}
+
+brdf::float3 Environment::sample(float u1, float u2, float* pdf) const {
+    return ::ibl::environment_sample(&map_, marginal_cdf_.data(), conditional_cdf_.data(), u1, u2, pdf);
+}
+
+float Environment::pdf(brdf::float3 direction) const {
+    return ::ibl::environment_pdf(&map_, marginal_cdf_.data(), conditional_cdf_.data(), direction);
+}
+
+LatLongImage read_latlong_image(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw InputError(path, "", "no such file");
+    if (!fs::is_regular_file(path, ec)) throw InputError(path, "", "not a regular file");
+    const std::string ext = lowercase_extension(path);
+    if (ext != ".exr" && ext != ".hdr")
+        throw InputError(path, "", "unsupported image format \"" + ext + "\" (expected .exr or .hdr)");
+
+    auto input = OIIO::ImageInput::open(path);
+    if (!input) {
+        (void)OIIO::geterror();  // drop OpenImageIO's own text: its wording varies with the version
+        throw InputError(path, "", "cannot be read as an OpenEXR or Radiance HDR image");
+    }
+    const std::string format = input->format_name();
+    if (format != "openexr" && format != "hdr")
+        throw InputError(path, "", "holds a " + format + " image, not OpenEXR or Radiance HDR");
+    const OIIO::ImageSpec& spec = input->spec();
+    if (spec.deep) throw InputError(path, "", "deep image (expected flat pixels)");
+    const int width = spec.width, height = spec.height, channels = spec.nchannels;
+    if (width != 2 * height || height <= 0)
+        throw InputError(path, "size",
+                         std::to_string(width) + " x " + std::to_string(height) +
+                             " is not 2:1 (a lat-long image is twice as wide as it is tall)");
+    if (height > kMaxImageHeight)
+        throw InputError(path, "size", std::to_string(width) + " x " + std::to_string(height) + " exceeds 32768 x 16384");
+    if (channels != 1 && channels < 3)
+        throw InputError(path, "channels",
+                         std::to_string(channels) + " (expected 1 for grey, or 3 or more with R, G, B first)");
+
+    const int used = channels == 1 ? 1 : 3;
+    std::vector<float> pixels(size_t(width) * height * used);
+    if (!input->read_image(0, 0, 0, used, OIIO::TypeDesc::FLOAT, pixels.data())) {
+        (void)input->geterror();
+        throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
+    }
+    input->close();
+
+    LatLongImage image;
+    image.width = width;
+    image.height = height;
+    image.rgb.resize(size_t(width) * height * 3);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const size_t p = size_t(y) * width + x;
+            for (int c = 0; c < 3; ++c) {
+                const int source_channel = used == 1 ? 0 : c;
+                const float v = pixels[p * used + source_channel];
+                if (!std::isfinite(v)) {
+                    std::string name = spec.channel_name(source_channel);
+                    if (name.empty()) name = "channel " + std::to_string(source_channel);
+                    throw InputError(path, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")",
+                                     name + " is " + (std::isnan(v) ? "NaN" : "infinite") + " (radiance must be finite)");
+                }
+                image.rgb[p * 3 + c] = std::max(v, 0.0f);  // lossy compression leaves small negatives
+            }
+        }
+    }
+    return image;
+}
+
+Environment load_environment(const std::string& spec, const EnvironmentOptions& options) {
+    validate(options);
+    static const std::string kConstant = "constant:";
+    if (trim(spec).empty())
+        throw InputError(options.origin, "", "empty environment (expected an .exr or .hdr file, or constant:R,G,B)");
+    if (spec.compare(0, kConstant.size(), kConstant) == 0)
+        return Environment::constant(parse_constant(spec.substr(kConstant.size()), options.origin), spec, options);
+    return Environment::from_image(read_latlong_image(spec), spec, options);
+}
+
+}  // namespace lab::ibl

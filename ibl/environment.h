@@ -1,0 +1,93 @@
+/* Image-based lighting from an environment stored as a cube map (ibl/cubemap.h), with importance
+ * sampling of its texels (ibl/distribution2d.h). The same code runs in kernels and on the host.
+ *
+ * Buffers (built by lab::ibl::Environment, ibl/environment.hpp), for face size N:
+ *   texels       6 N^2 float4: linear RGB radiance (w unused), index (face * N + j) * N + i;
+ *                each texel holds the average radiance over its solid angle and is read with the
+ *                nearest-texel rule, so the radiance is constant on every texel;
+ *   marginal     6N + 1 floats: cdf over the 6N rows of the faces stacked top to bottom
+ *                (row r = face * N + j);
+ *   conditional  6N (N + 1) floats: per row, the cdf over its N texels.
+ * A texel's probability is proportional to its luminance times its solid angle (plus a floor so
+ * that every texel can be drawn; ibl/distribution.hpp).
+ *
+ * Rotation: the environment is turned by the angle theta about +y (right-handed), so what the
+ * image shows in direction e is seen in world direction R e, with
+ *   R (x, y, z) = (cos theta x + sin theta z, y, -sin theta x + cos theta z);
+ * theta = 90 degrees brings the image's +x to world -z and its +z to world +x. */
+#ifndef IBL_ENVIRONMENT_H
+#define IBL_ENVIRONMENT_H
+
+#include "brdf/common.h"
+#include "ibl/cubemap.h"
+#include "ibl/distribution2d.h"
+
+/* Plain 4-byte scalars only: the same layout in OpenCL C and C++, passed to kernels by value. */
+typedef struct EnvironmentMap {
+    int face_size;      /* N: every face is N x N texels */
+    float rotation_cos; /* cos and sin of the rotation about +y */
+    float rotation_sin;
+    float intensity;    /* multiplies the texels' radiance: 2^exposure */
+} EnvironmentMap;
+
+/* World direction -> direction in the image's frame: R^-1 w. */
+BRDF_FN float3 environment_to_local(const EnvironmentMap* env, float3 w) {
+    float c = env->rotation_cos, s = env->rotation_sin;
+    return make_float3(c * w.x - s * w.z, w.y, s * w.x + c * w.z);
+}
+
+/* Direction in the image's frame -> world direction: R e. */
+BRDF_FN float3 environment_to_world(const EnvironmentMap* env, float3 e) {
+    float c = env->rotation_cos, s = env->rotation_sin;
+    return make_float3(c * e.x + s * e.z, e.y, -s * e.x + c * e.z);
+}
+
+/* Radiance arriving from world direction `direction` (any length but 0): the nearest texel. */
+BRDF_FN float3 environment_radiance(const EnvironmentMap* env, CL_GLOBAL const float4* texels, float3 direction) {
+    float4 t = texels[cubemap_texel_index(env->face_size, environment_to_local(env, direction))];
+    return make_float3(t.x, t.y, t.z) * env->intensity;
+}
+
+/* Solid-angle density of a point (a, b) of a texel drawn with probability `probability`, the point
+ * uniform in the texel's square of area (2/N)^2 in face coordinates: the area density
+ * probability / (2/N)^2 times dA/d(omega) = (1 + a^2 + b^2)^(3/2) (ibl/cubemap.h). */
+BRDF_FN float environment_texel_density(int face_size, float probability, float a, float b) {
+    float texel_area = sqr(2.0f / (float)face_size);
+    return probability / texel_area * cubemap_area_per_solid_angle(a, b);
+}
+
+/* Solid-angle density with which environment_sample() returns world direction `direction`. */
+BRDF_FN float environment_pdf(const EnvironmentMap* env, CL_GLOBAL const float* marginal_cdf,
+                              CL_GLOBAL const float* conditional_cdf, float3 direction) {
+    int n = env->face_size;
+    float a, b;
+    int face = cubemap_face(environment_to_local(env, direction), &a, &b);
+    int i = cubemap_texel_coordinate(n, a);
+    int j = cubemap_texel_coordinate(n, b);
+    float probability = distribution2d_probability(marginal_cdf, conditional_cdf, n, face * n + j, i);
+    return environment_texel_density(n, probability, a, b);
+}
+
+/* A world direction drawn with density proportional to the texels' weights: a texel from
+ * (u1, u2), then a uniform point in its square from the offsets of u1 and u2 inside the texel's
+ * cdf intervals. *pdf: its solid-angle density, environment_pdf() of the returned direction. That
+ * is the drawn texel's density except on a texel edge, where rounding in the normalisation and
+ * rotation may move the direction into the neighbour: then *pdf is the neighbour's, the texel
+ * environment_radiance() reads, so radiance / pdf never mixes two texels. */
+BRDF_FN float3 environment_sample(const EnvironmentMap* env, CL_GLOBAL const float* marginal_cdf,
+                                  CL_GLOBAL const float* conditional_cdf, float u1, float u2, float* pdf) {
+    int n = env->face_size;
+    int row, column;
+    float row_offset, column_offset;
+    distribution2d_sample(marginal_cdf, conditional_cdf, CUBEMAP_FACES * n, n, u1, u2, &row, &column, &row_offset,
+                          &column_offset);
+    int face = row / n;
+    int j = row - face * n;
+    float a = -1.0f + 2.0f * ((float)column + column_offset) / (float)n;
+    float b = -1.0f + 2.0f * ((float)j + row_offset) / (float)n;
+    float3 direction = environment_to_world(env, normalize(cubemap_face_point(face, a, b)));
+    *pdf = environment_pdf(env, marginal_cdf, conditional_cdf, direction);
+    return direction;
+}
+
+#endif

@@ -1,0 +1,67 @@
+// An environment for image-based lighting: a lat-long image (OpenEXR or Radiance HDR) or a constant
+// colour, resampled to a cube map (ibl/cubemap.h) and made ready for importance sampling
+// (ibl/environment.h). The buffers a kernel needs are here as flat arrays; the host can evaluate
+// the very same single-source functions. See docs/environments.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ibl/equirect_to_cubemap.hpp"
+#include "ibl/ibl.hpp"
+
+namespace lab::ibl {
+
+struct EnvironmentOptions {
+    float rotation_degrees = 0.0f;  // about +y, right-handed: 90 brings the image's +x to world -z
+    float exposure_stops = 0.0f;    // radiance x 2^stops, in [-64, 64]
+    int face_size = 0;              // texels per face edge, in [1, 4096]; 0: image width / 4 within [16, 512]
+    std::string origin = "--env";   // names the spec and these options in error messages
+};
+
+constexpr int kMinAutomaticFaceSize = 16;
+constexpr int kMaxAutomaticFaceSize = 512;
+constexpr int kMaxFaceSize = 4096;
+constexpr float kMaxExposureStops = 64.0f;
+
+class Environment {
+public:
+    // A lat-long image (finite, non-negative radiance; see read_latlong_image) on the cube.
+    static Environment from_image(const LatLongImage& image, std::string source, const EnvironmentOptions& options);
+    // The same radiance from every direction (non-negative, finite).
+    static Environment constant(brdf::float3 radiance, std::string source, const EnvironmentOptions& options);
+
+    // What a kernel gets: the struct by value and three __global buffers.
+    const ::ibl::EnvironmentMap& map() const { return map_; }
+    const std::vector<brdf::float4>& texels() const { return texels_; }  // 6 N^2, radiance before intensity
+    const std::vector<float>& marginal_cdf() const { return marginal_cdf_; }
+    const std::vector<float>& conditional_cdf() const { return conditional_cdf_; }
+    int face_size() const { return map_.face_size; }
+    // The file name, or the constant spec, this environment came from.
+    const std::string& source() const { return source_; }
+
+    // The single-source functions of ibl/environment.h on this environment (world directions).
+    brdf::float3 radiance(brdf::float3 direction) const;
+    brdf::float3 sample(float u1, float u2, float* pdf) const;
+    float pdf(brdf::float3 direction) const;
+
+private:
+    Environment(std::vector<brdf::float4> texels, int face_size, std::string source, const EnvironmentOptions& options);
+
+    ::ibl::EnvironmentMap map_{};
+    std::vector<brdf::float4> texels_;
+    std::vector<float> marginal_cdf_, conditional_cdf_;
+    std::string source_;
+};
+
+// Reads an equirectangular OpenEXR (.exr) or Radiance HDR (.hdr) file: 2:1, one channel (grey) or
+// three and more (the first three as R, G, B). Negative values (lossy DWAB compression) become 0.
+// Throws lab::InputError naming the file for a missing, unreadable or corrupt file, another format,
+// a size that is not 2:1, and a NaN or infinite pixel.
+LatLongImage read_latlong_image(const std::string& path);
+
+// "constant:R,G,B" (three finite non-negative numbers) or the path of a lat-long image.
+// Throws lab::InputError naming the file, or options.origin for the spec and the options.
+Environment load_environment(const std::string& spec, const EnvironmentOptions& options = {});
+
+}  // namespace lab::ibl

@@ -1,0 +1,147 @@
+// Resampling lat-long images onto the cube keeps the integral of radiance over the sphere (each
+// texel is the mean over its solid angle), and a constant stays exactly constant.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "ibl/distribution.hpp"
+#include "ibl/environment.hpp"
+#include "validation/uniform_random.hpp"
+
+using brdf::float3;
+using lab::ibl::Environment;
+using lab::ibl::EnvironmentOptions;
+using lab::ibl::LatLongImage;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Integral of the image's radiance (per channel) over the sphere, each pixel constant over its
+// solid angle: (2 pi / W) (sin(elevation_top) - sin(elevation_bottom)).
+std::vector<double> latlong_integral(const LatLongImage& image) {
+    std::vector<double> sum(3, 0.0);
+    for (int y = 0; y < image.height; ++y) {
+        const double top = (0.5 - double(y) / image.height) * kPi, bottom = (0.5 - double(y + 1) / image.height) * kPi;
+        const double solid_angle = 2.0 * kPi / image.width * (std::sin(top) - std::sin(bottom));
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c) sum[c] += solid_angle * image.rgb[(size_t(y) * image.width + x) * 3 + c];
+    }
+    return sum;
+}
+
+// The same over the cube: texel radiance times its exact solid angle.
+std::vector<double> cubemap_integral(const Environment& env) {
+    const int n = env.face_size();
+    std::vector<double> sum(3, 0.0);
+    for (int face = 0; face < 6; ++face)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const brdf::float4 t = env.texels()[(size_t(face) * n + j) * n + i];
+                const double omega = lab::ibl::texel_solid_angle(n, i, j);
+                sum[0] += omega * t.x;
+                sum[1] += omega * t.y;
+                sum[2] += omega * t.z;
+            }
+    return sum;
+}
+
+double worst_relative_error(const std::vector<double>& a, const std::vector<double>& b) {
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c) worst = std::fmax(worst, std::fabs(a[c] - b[c]) / b[c]);
+    return worst;
+}
+
+EnvironmentOptions face_size(int n) {
+    EnvironmentOptions o;
+    o.face_size = n;
+    return o;
+}
+
+}  // namespace
+
+TEST_CASE("ibl: texel solid angles sum to 4 pi", "[ibl]") {
+    for (int n : {1, 3, 16, 512}) {
+        double sum = 0.0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) sum += lab::ibl::texel_solid_angle(n, i, j);
+        CHECK(6.0 * sum == Approx(4.0 * kPi).epsilon(1e-12));
+    }
+    // One face is a sixth of the sphere; its centre texel of a 1-texel face likewise.
+    CHECK(lab::ibl::face_rectangle_solid_angle(-1, 1, -1, 1) == Approx(4.0 * kPi / 6.0).epsilon(1e-14));
+}
+
+TEST_CASE("ibl: conversion keeps the sphere integral of a synthetic image", "[ibl]") {
+    // Smooth variation, a narrow bright spot and a sharp-edged band: 512 x 256.
+    LatLongImage image;
+    image.width = 512;
+    image.height = 256;
+    image.rgb.resize(size_t(image.width) * image.height * 3);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const double u = (x + 0.5) / image.width, v = (y + 0.5) / image.height;
+            const double smooth = 1.0 + 0.5 * std::sin(6.0 * kPi * u) * std::sin(kPi * v);
+            const double du = std::fmin(std::fabs(u - 0.3), 1.0 - std::fabs(u - 0.3)), dv = v - 0.35;
+            const double spot = 5000.0 * std::exp(-(du * du + dv * dv) / (2.0 * 0.004 * 0.004));
+            const double band = (v > 0.6 && v < 0.62) ? 20.0 : 0.0;
+            float* p = &image.rgb[(size_t(y) * image.width + x) * 3];
+            p[0] = float(smooth + spot);
+            p[1] = float(smooth + band);
+            p[2] = float(0.1 * smooth);
+        }
+    const std::vector<double> reference = latlong_integral(image);
+    for (int n : {16, 64, 128}) {
+        const Environment env = Environment::from_image(image, "synthetic", face_size(n));
+        const double error = worst_relative_error(cubemap_integral(env), reference);
+        INFO("face size " << n << ": relative error of the sphere integral " << error);
+        CHECK(error < 0.01);
+        std::printf("[ibl] synthetic 512x256, face %d: sphere integral relative error %.2e\n", n, error);
+    }
+}
+
+TEST_CASE("ibl: conversion keeps the sphere integral of the envmaps", "[ibl]") {
+    for (const char* name : {"courtyard", "city", "forest", "interior", "studio", "sunset"}) {
+        const std::string path = std::string("envmaps/") + name + ".exr";
+        const auto start = std::chrono::steady_clock::now();
+        const LatLongImage image = lab::ibl::read_latlong_image(path);
+        const Environment env = Environment::from_image(image, path, EnvironmentOptions{});
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        CHECK(env.face_size() == 256);
+        const double error = worst_relative_error(cubemap_integral(env), latlong_integral(image));
+        INFO(path << ": relative error of the sphere integral " << error);
+        CHECK(error < 0.01);
+        std::printf("[ibl] %s: 1024x512 -> 6x256^2 in %.3f s (read + convert + cdfs), sphere integral error %.2e\n",
+                    path.c_str(), seconds, error);
+    }
+    // A small face averages many pixels per texel.
+    const LatLongImage courtyard = lab::ibl::read_latlong_image("envmaps/courtyard.exr");
+    const Environment small = Environment::from_image(courtyard, "courtyard", face_size(16));
+    CHECK(worst_relative_error(cubemap_integral(small), latlong_integral(courtyard)) < 0.01);
+}
+
+TEST_CASE("ibl: a constant environment is exactly constant", "[ibl]") {
+    const Environment spec = lab::ibl::load_environment("constant:0.25,0.5,3", EnvironmentOptions{});
+    CHECK(spec.face_size() == 16);
+    CHECK(spec.source() == "constant:0.25,0.5,3");
+    lab::validation::UniformRandom rng(11);
+    for (int k = 0; k < 10000; ++k) {
+        const float3 d(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        REQUIRE(spec.radiance(d) == float3(0.25f, 0.5f, 3.0f));
+    }
+    // A constant image through the resampling: every texel is that constant to the last bit.
+    LatLongImage image;
+    image.width = 96;
+    image.height = 48;
+    image.rgb.resize(size_t(96) * 48 * 3);
+    for (size_t p = 0; p < image.rgb.size(); p += 3) {
+        image.rgb[p] = 0.7f;
+        image.rgb[p + 1] = 0.3f;
+        image.rgb[p + 2] = 1e-3f;
+    }
+    const Environment converted = Environment::from_image(image, "constant image", face_size(24));
+    for (const brdf::float4& t : converted.texels()) REQUIRE(t == brdf::float4(0.7f, 0.3f, 1e-3f, 1.0f));
+}

@@ -1,0 +1,151 @@
+// Bad environments are refused with one exact line naming the file (or the --env spec) and the
+// problem; images written with OpenImageIO for the purpose, in a scratch folder.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+#include "common/input_error.hpp"
+#include "ibl/environment.hpp"
+
+namespace fs = std::filesystem;
+using brdf::float3;
+using lab::ibl::EnvironmentOptions;
+
+namespace {
+
+fs::path scratch_folder() {
+    const fs::path folder = fs::temp_directory_path() / "dtoadq_ibl_tests";
+    fs::create_directories(folder);
+    return folder;
+}
+
+// A float image of width x height x channels, every value `fill`, written with OpenImageIO.
+std::string write_image(const std::string& name, int width, int height, int channels, float fill,
+                        const std::vector<std::pair<size_t, float>>& overrides = {}) {
+    const std::string path = (scratch_folder() / name).string();
+    std::vector<float> pixels(size_t(width) * height * channels, fill);
+    for (const auto& [index, value] : overrides) pixels[index] = value;
+    auto out = OIIO::ImageOutput::create(path);
+    REQUIRE(out);
+    const OIIO::TypeDesc type = fs::path(path).extension() == ".png" ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+    OIIO::ImageSpec spec(width, height, channels, type);
+    REQUIRE(out->open(path, spec));
+    REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+    REQUIRE(out->close());
+    return path;
+}
+
+std::string write_bytes(const std::string& name, const std::string& bytes) {
+    const std::string path = (scratch_folder() / name).string();
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+}
+
+// The message load_environment() throws, or "" when it loads.
+std::string load_error(const std::string& spec, const EnvironmentOptions& options = {}) {
+    try {
+        lab::ibl::load_environment(spec, options);
+    } catch (const lab::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("ibl: unreadable environment files are refused with one line", "[ibl]") {
+    CHECK(load_error("envmaps/no_such_file.exr") == "envmaps/no_such_file.exr: no such file");
+    CHECK(load_error("envmaps") == "envmaps: not a regular file");
+    CHECK(load_error("envmaps/SOURCES.txt") == "envmaps/SOURCES.txt: unsupported image format \".txt\" (expected .exr or .hdr)");
+
+    const std::string garbage = write_bytes("garbage.exr", "these bytes are not an OpenEXR image\n");
+    CHECK(load_error(garbage) == garbage + ": cannot be read as an OpenEXR or Radiance HDR image");
+
+    // The header of a real file without most of its pixel data.
+    std::ifstream real("envmaps/courtyard.exr", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(real)), std::istreambuf_iterator<char>());
+    REQUIRE(bytes.size() > 100000);
+    const std::string truncated = write_bytes("truncated.exr", bytes.substr(0, bytes.size() / 3));
+    CHECK(load_error(truncated) == truncated + ": pixels: cannot be read (corrupt or truncated file)");
+
+    // A PNG behind an .exr name.
+    const std::string png = write_image("picture.png", 8, 4, 3, 0.5f);
+    const std::string disguised = (scratch_folder() / "picture.exr").string();
+    fs::copy_file(png, disguised, fs::copy_options::overwrite_existing);
+    CHECK(load_error(disguised) == disguised + ": holds a png image, not OpenEXR or Radiance HDR");
+}
+
+TEST_CASE("ibl: environment images with a bad shape or bad pixels are refused", "[ibl]") {
+    const std::string wide = write_image("size.exr", 40, 30, 3, 1.0f);
+    CHECK(load_error(wide) == wide + ": size: 40 x 30 is not 2:1 (a lat-long image is twice as wide as it is tall)");
+    const std::string two = write_image("two_channels.exr", 16, 8, 2, 1.0f);
+    CHECK(load_error(two) == two + ": channels: 2 (expected 1 for grey, or 3 or more with R, G, B first)");
+
+    // NaN in G of pixel (5, 3); +infinity in R of pixel (2, 1).
+    const std::string nan = write_image("nan.exr", 16, 8, 3, 1.0f, {{(3 * 16 + 5) * 3 + 1, NAN}});
+    CHECK(load_error(nan) == nan + ": pixel (5, 3): G is NaN (radiance must be finite)");
+    const std::string inf = write_image("inf.exr", 16, 8, 4, 1.0f, {{(1 * 16 + 2) * 4 + 0, INFINITY}});
+    CHECK(load_error(inf) == inf + ": pixel (2, 1): R is infinite (radiance must be finite)");
+}
+
+TEST_CASE("ibl: negative pixels become 0, grey and Radiance HDR images load", "[ibl]") {
+    EnvironmentOptions small;
+    small.face_size = 4;
+    // Negative everywhere but one channel: what lossy DWAB compression leaves behind, clamped.
+    const std::string negative = write_image("negative.exr", 16, 8, 3, -0.5f);
+    const lab::ibl::Environment dark = lab::ibl::load_environment(negative, small);
+    CHECK(dark.radiance(float3(0, 0, 1)) == float3(0.0f));
+    CHECK(dark.source() == negative);
+
+    const std::string grey = write_image("grey.exr", 16, 8, 1, 0.75f);
+    CHECK(lab::ibl::load_environment(grey, small).radiance(float3(1, 2, 3)) == float3(0.75f));
+
+    // RGBE stores 8-bit mantissas with a shared exponent: 1, 2 and 4 are exact.
+    std::vector<std::pair<size_t, float>> rgb;
+    for (size_t p = 0; p < 16 * 8; ++p) rgb.push_back({p * 3 + 1, 2.0f}), rgb.push_back({p * 3 + 2, 4.0f});
+    const std::string hdr = write_image("colour.hdr", 16, 8, 3, 1.0f, rgb);
+    CHECK(lab::ibl::load_environment(hdr, small).radiance(float3(0, -1, 0)) == float3(1.0f, 2.0f, 4.0f));
+}
+
+TEST_CASE("ibl: bad constant specs and options are refused with one line", "[ibl]") {
+    CHECK(load_error("") == "--env: empty environment (expected an .exr or .hdr file, or constant:R,G,B)");
+    CHECK(load_error("constant:1,2") == "--env: constant: expected three numbers R,G,B, got 2 in \"1,2\"");
+    CHECK(load_error("constant:1,2,3,4") == "--env: constant: expected three numbers R,G,B, got 4 in \"1,2,3,4\"");
+    CHECK(load_error("constant:") == "--env: constant: expected three numbers R,G,B, got 1 in \"\"");
+    CHECK(load_error("constant:1,x,3") == "--env: constant: G is not a number: \"x\"");
+    CHECK(load_error("constant:1,2,3cd") == "--env: constant: B is not a number: \"3cd\"");
+    CHECK(load_error("constant:1,,3") == "--env: constant: G is not a number: \"\"");
+    CHECK(load_error("constant:nan,1,1") == "--env: constant: R is not a finite float: \"nan\"");
+    CHECK(load_error("constant:1,inf,1") == "--env: constant: G is not a finite float: \"inf\"");
+    CHECK(load_error("constant:1,1,1e39") == "--env: constant: B is not a finite float: \"1e39\"");
+    CHECK(load_error("constant:1,1,-0.5") == "--env: constant: B is negative: \"-0.5\"");
+    // Spaces around numbers are fine; the source keeps the spec as written.
+    CHECK(lab::ibl::load_environment("constant: 1, 2 ,3").radiance(float3(1, 0, 0)) == float3(1, 2, 3));
+
+    EnvironmentOptions scene;
+    scene.origin = "scenes/room.json: environment";
+    CHECK(load_error("constant:1", scene) ==
+          "scenes/room.json: environment: constant: expected three numbers R,G,B, got 1 in \"1\"");
+
+    EnvironmentOptions bad;
+    bad.face_size = -1;
+    CHECK(load_error("constant:1,1,1", bad) == "--env: face_size: must be in [1, 4096] (0: automatic), got -1");
+    bad.face_size = 5000;
+    CHECK(load_error("constant:1,1,1", bad) == "--env: face_size: must be in [1, 4096] (0: automatic), got 5000");
+    bad = {};
+    bad.rotation_degrees = NAN;
+    CHECK(load_error("constant:1,1,1", bad) == "--env: rotation_degrees: not a finite number");
+    bad = {};
+    bad.exposure_stops = 100.0f;
+    CHECK(load_error("constant:1,1,1", bad) == "--env: exposure_stops: must be a number in [-64, 64], got 100");
+    bad.exposure_stops = NAN;
+    CHECK(load_error("constant:1,1,1", bad) == "--env: exposure_stops: must be a number in [-64, 64], got nan");
+}
