@@ -12,12 +12,12 @@
 #define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
 #define isfinite_f(x) isfinite(x)
 /* Address spaces of buffer pointers; the host has one flat address space. */
-#define CL_GLOBAL __global
-#define CL_CONSTANT __constant
+#define GLOBAL_MEM __global
+#define CONSTANT_MEM __constant
 #else
 #define BRDF_FN inline
-#define CL_GLOBAL
-#define CL_CONSTANT
+#define GLOBAL_MEM
+#define CONSTANT_MEM
 #endif
 
 #define BRDF_PI 3.14159265358979323846f

@@ -1,4 +1,4 @@
-// dtoadq bench: performance figures. `bench brdf` times bsdf_eval, bsdf_pdf and bsdf_sample in the
+// dtoadq bench: performance figures (`bench preview`: cli/cmd_bench_preview.cpp). `bench brdf` times bsdf_eval, bsdf_pdf and bsdf_sample in the
 // C++ build (one thread and all threads) and in the OpenCL build, and prints how much each preset's
 // own sampler reduces variance against cosine-weighted sampling.
 #include <algorithm>
@@ -237,6 +237,7 @@ void register_bench(CLI::App& app) {
     brdf_cmd->add_option("--repeats", options->repeats, "Timed runs per figure; the best is reported")->capture_default_str();
     brdf_cmd->add_flag("--sorted", options->sorted, "Give the presets consecutive blocks of items instead of alternating them");
     brdf_cmd->callback([options] { run_bench_brdf(*options); });
+    register_bench_preview(*bench);
 }
 
 }  // namespace lab::cli

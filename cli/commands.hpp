@@ -11,5 +11,9 @@ void register_brdf(CLI::App& app);
 void register_validate(CLI::App& app);
 void register_bench(CLI::App& app);
 void register_report(CLI::App& app);
+void register_devices(CLI::App& app);
+void register_preview(CLI::App& app);
+// `bench preview`, registered under the bench group by register_bench
+void register_bench_preview(CLI::App& bench);
 
 }  // namespace lab::cli

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
     lab::cli::register_brdf(app);
     lab::cli::register_validate(app);
     lab::cli::register_bench(app);
+    lab::cli::register_devices(app);
+    lab::cli::register_preview(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -43,7 +43,7 @@ BRDF_FN float3 environment_to_world(const EnvironmentMap* env, float3 e) {
 }
 
 /* Radiance arriving from world direction `direction` (any length but 0): the nearest texel. */
-BRDF_FN float3 environment_radiance(const EnvironmentMap* env, CL_GLOBAL const float4* texels, float3 direction) {
+BRDF_FN float3 environment_radiance(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
     float4 t = texels[cubemap_texel_index(env->face_size, environment_to_local(env, direction))];
     return make_float3(t.x, t.y, t.z) * env->intensity;
 }
@@ -57,8 +57,8 @@ BRDF_FN float environment_texel_density(int face_size, float probability, float 
 }
 
 /* Solid-angle density with which environment_sample() returns world direction `direction`. */
-BRDF_FN float environment_pdf(const EnvironmentMap* env, CL_GLOBAL const float* marginal_cdf,
-                              CL_GLOBAL const float* conditional_cdf, float3 direction) {
+BRDF_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
+                              GLOBAL_MEM const float* conditional_cdf, float3 direction) {
     int n = env->face_size;
     float a, b;
     int face = cubemap_face(environment_to_local(env, direction), &a, &b);
@@ -74,8 +74,8 @@ BRDF_FN float environment_pdf(const EnvironmentMap* env, CL_GLOBAL const float* 
  * is the drawn texel's density except on a texel edge, where rounding in the normalisation and
  * rotation may move the direction into the neighbour: then *pdf is the neighbour's, the texel
  * environment_radiance() reads, so radiance / pdf never mixes two texels. */
-BRDF_FN float3 environment_sample(const EnvironmentMap* env, CL_GLOBAL const float* marginal_cdf,
-                                  CL_GLOBAL const float* conditional_cdf, float u1, float u2, float* pdf) {
+BRDF_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
+                                  GLOBAL_MEM const float* conditional_cdf, float u1, float u2, float* pdf) {
     int n = env->face_size;
     int row, column;
     float row_offset, column_offset;

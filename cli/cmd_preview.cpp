@@ -1,0 +1,137 @@
+// dtoadq preview: the image-based-lighting path-traced preview of a material on the test model (or
+// any scene) under an HDR environment, rendered progressively on OpenCL, written as a linear EXR
+// with its metadata and a tone-mapped sRGB PNG.
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "brdf/host/preset.hpp"
+#include "cli/commands.hpp"
+#include "cli/preview_options.hpp"
+#include "common/input_error.hpp"
+#include "film/image_output.hpp"
+#include "film/progress_bar.hpp"
+#include "film/tone_map.hpp"
+#include "ibl/environment.hpp"
+#include "ibl/preview_renderer.hpp"
+#include "ibl/preview_scene.hpp"
+#include "opencl/runtime.hpp"
+
+namespace lab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+
+struct PreviewCommand {
+    PreviewJobOptions job;
+    int spp = 64;
+    bool spp_given = false;
+    double time_seconds = 0.0;
+    std::string output = "preview.exr";
+    std::string tone_map = "aces";
+    float exposure = 0.0f;
+    bool quiet = false;
+};
+
+// Where the PNG beside an EXR goes: same folder and stem.
+std::string png_beside(const std::string& exr) { return fs::path(exr).replace_extension(".png").string(); }
+
+// The output, or, when it cannot be written, a file in the temporary folder: a finished render is
+// never lost to a bad path. Returns where the EXR went.
+void write_outputs(const PreviewCommand& c, const film::ImageRgb& image, film::ToneMap tone_map, const film::ImageMetadata& metadata) {
+    bool exr = fs::path(c.output).extension() == ".exr" || fs::path(c.output).extension() == ".EXR";
+    try {
+        if (exr) {
+            film::write_exr(c.output, image, metadata);
+            film::write_png(png_beside(c.output), image, tone_map, c.exposure, metadata);
+        } else {
+            film::write_png(c.output, image, tone_map, c.exposure, metadata);
+        }
+    } catch (const InputError& e) {
+        fs::path rescue = fs::temp_directory_path() / ("dtoadq-preview-" + std::to_string(::getpid()) + ".exr");
+        film::write_exr(rescue.string(), image, metadata);
+        throw InputError(c.output, "", std::string("cannot write (") + e.what() + "); the render was saved to " + rescue.string());
+    }
+    std::printf("wrote %s%s\n", c.output.c_str(), exr ? (" and " + png_beside(c.output)).c_str() : "");
+}
+
+void run_preview(const PreviewCommand& c) {
+    // Everything that can be wrong with the input is found before the first sample.
+    film::check_output_path(c.output);
+    if (fs::path(c.output).extension() == ".exr" || fs::path(c.output).extension() == ".EXR") film::check_output_path(png_beside(c.output));
+    film::ToneMap tone_map = film::parse_tone_map(c.tone_map);
+    if (!(c.time_seconds >= 0.0) || c.time_seconds > 1e6) throw InputError("--time", "", "must be in [0, 1e6] seconds");
+    if (c.spp < 1 || c.spp > 1 << 24) throw InputError("--spp", "", "must be in [1, 16777216]");
+    PreviewJob job = prepare_preview_job(c.job);
+    opencl::Runtime runtime(c.job.device);
+    ibl::PreviewRenderer renderer(runtime, job.scene, job.environment, job.settings);
+    if (!c.quiet)
+        std::printf("%s on %s: kernel built in %.2f s\n", job.description.c_str(), runtime.device().description().c_str(),
+                    renderer.build_seconds());
+    for (const std::string& w : job.warnings) std::fprintf(stderr, "dtoadq: note: %s\n", w.c_str());
+
+    bool timed = c.time_seconds > 0.0;
+    int target = timed && !c.spp_given ? (1 << 24) : c.spp;
+    film::ProgressOptions progress_options;
+    progress_options.quiet = c.quiet;
+    film::ProgressBar progress(timed ? film::ProgressMode::Time : film::ProgressMode::Samples, timed ? c.time_seconds : double(target),
+                               double(job.settings.width) * job.settings.height, progress_options);
+    g_interrupted = false;
+    auto previous = std::signal(SIGINT, on_interrupt);
+    // Launch sizes grow while a launch takes under a quarter second: fewer launches, a live bar.
+    int done = 0;
+    while (done < target && !g_interrupted) {
+        if (timed && progress.elapsed_seconds() >= c.time_seconds) break;
+        int n = std::min(renderer.samples_per_launch(), target - done);
+        auto start = std::chrono::steady_clock::now();
+        renderer.add_samples(n);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        done += n;
+        progress.update(done);
+        if (seconds < 0.25 / 2) renderer.set_samples_per_launch(renderer.samples_per_launch() * 2);
+        if (timed) {  // do not start a launch that would end well past the time
+            double per_sample = seconds / n, left = c.time_seconds - progress.elapsed_seconds();
+            int fit = int(left / per_sample);
+            if (fit < renderer.samples_per_launch()) renderer.set_samples_per_launch(std::max(1, fit));
+        }
+    }
+    std::signal(SIGINT, previous);
+    progress.finish();
+
+    ibl::PreviewStatistics stats = renderer.statistics();
+    film::ImageMetadata metadata = preview_metadata(job, stats, runtime.device().description());
+    metadata.set("tonemap", c.tone_map);
+    metadata.set("exposure", c.exposure);
+    write_outputs(c, renderer.image(), tone_map, metadata);
+    print_preview_statistics(stats, c.quiet);
+    if (g_interrupted) std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", done);
+}
+
+}  // namespace
+
+void register_preview(CLI::App& app) {
+    auto c = std::make_shared<PreviewCommand>();
+    auto* cmd = app.add_subcommand("preview", "Path-traced image-based-lighting preview of a material on the test model (or a scene)");
+    add_preview_job_options(*cmd, &c->job);
+    cmd->add_option("--spp", c->spp, "Samples per pixel (with --time: at most this many)")->capture_default_str()
+        ->each([c](const std::string&) { c->spp_given = true; });
+    cmd->add_option("--time", c->time_seconds, "Render until this many seconds have passed, instead of a sample count");
+    cmd->add_option("-o,--output", c->output, "Output .exr (linear, with a tone-mapped .png beside it) or .png")->capture_default_str();
+    cmd->add_option("--tonemap", c->tone_map, "Tone map of the PNG: aces, reinhard or clamp")->capture_default_str();
+    cmd->add_option("--exposure", c->exposure, "Exposure of the PNG in stops")->capture_default_str();
+    cmd->add_flag("--quiet", c->quiet, "No progress bar or statistics");
+    cmd->callback([c] { run_preview(*c); });
+}
+
+}  // namespace lab::cli

@@ -1,0 +1,56 @@
+// What `preview` and `bench preview` share: the options that choose the scene, material,
+// environment and sampling, turned into a ready job; and the metadata and statistics they print.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "film/image_metadata.hpp"
+#include "ibl/environment.hpp"
+#include "ibl/preview_renderer.hpp"
+
+namespace lab::cli {
+
+struct PreviewJobOptions {
+    std::string scene;     // empty: the built-in test model
+    std::string material;  // preset for the "sample" slot; empty: the scene's own
+    std::string env;       // file or constant:R,G,B; empty: the scene's, else constant:1,1,1
+    float env_rotation = 0.0f;
+    float env_exposure = 0.0f;
+    std::string size = "512x512";
+    std::string ground = "on";
+    std::string sampling = "mis";
+    std::string normals = "tetrahedral";
+    int max_depth = 16;
+    int max_steps = 1024;
+    float over_relaxation = 1.0f;
+    unsigned long long seed = 0;
+    std::string device;
+};
+
+void add_preview_job_options(CLI::App& cmd, PreviewJobOptions* options);
+
+struct PreviewJob {
+    ibl::PreviewScene scene;
+    ibl::Environment environment;
+    ibl::PreviewSettings settings;
+    std::string scene_name, material_name, environment_name;
+    std::string description;        // one line: material, scene, environment, size, strategy
+    std::vector<std::string> warnings;  // the scene compiler's: a Lipschitz bound above 1, a broken bound
+};
+
+// Loads and checks everything (scene, preset, environment, sizes, words); throws lab::InputError.
+PreviewJob prepare_preview_job(const PreviewJobOptions& options);
+
+// "WxH" with both in [1, 16384]; `option` names the flag in errors.
+void parse_image_size(const std::string& text, const std::string& option, int* width, int* height);
+
+film::ImageMetadata preview_metadata(const PreviewJob& job, const ibl::PreviewStatistics& stats, const std::string& device);
+
+// Samples, time, paths/s, rays/s and rays that ran out of steps; non-finite samples, if any, on
+// stderr as a warning even when quiet (they are never silently dropped).
+void print_preview_statistics(const ibl::PreviewStatistics& stats, bool quiet);
+
+}  // namespace lab::cli
