@@ -1,0 +1,29 @@
+/* Axis-aligned box centred at the origin, half extents half_size (all > 0). */
+#ifndef SDF_PRIMITIVES_BOX_H
+#define SDF_PRIMITIVES_BOX_H
+
+#include "brdf/common.h"
+
+/* Exact signed distance. With q = |p| - half_size (per axis), a point outside is nearest to the
+ * clamped point, at distance |max(q, 0)|; a point inside is nearest to the face it is closest to,
+ * at distance -max_i q_i. The two terms are never both non-zero. Lipschitz bound 1. */
+BRDF_FN float fBox(float3 p, float3 half_size) {
+    float3 q = fabs(p) - half_size;
+    return length(fmax(q, float3_splat(0.0f))) + fmin(max_component(q), 0.0f);
+}
+
+/* Unit outward normal, the gradient of fBox: outside, the direction from the nearest point of the
+ * box (an axis on a face, a diagonal near an edge or corner); inside or on the surface, the normal
+ * of the nearest face (ties between faces go to x, then y, then z). */
+BRDF_FN float3 nBox(float3 p, float3 half_size) {
+    float3 q = fabs(p) - half_size;
+    float3 s = make_float3(p.x < 0.0f ? -1.0f : 1.0f, p.y < 0.0f ? -1.0f : 1.0f, p.z < 0.0f ? -1.0f : 1.0f);
+    float3 outside = fmax(q, float3_splat(0.0f));
+    float l = length(outside);
+    if (l > 0.0f) return s * (outside / l);
+    if (q.x >= q.y && q.x >= q.z) return make_float3(s.x, 0.0f, 0.0f);
+    if (q.y >= q.z) return make_float3(0.0f, s.y, 0.0f);
+    return make_float3(0.0f, 0.0f, s.z);
+}
+
+#endif

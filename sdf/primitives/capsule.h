@@ -1,0 +1,27 @@
+/* Capsule around the y axis, centred at the origin: the segment from (0, -half_height, 0) to
+ * (0, +half_height, 0) thickened by r. half_height is the half length of the straight part; the
+ * capsule spans y in [-(half_height + r), half_height + r]. */
+#ifndef SDF_PRIMITIVES_CAPSULE_H
+#define SDF_PRIMITIVES_CAPSULE_H
+
+#include "brdf/common.h"
+
+/* p minus its nearest point on the core segment. */
+BRDF_FN float3 capsule_offset(float3 p, float half_height) {
+    return make_float3(p.x, p.y - clamp(p.y, -half_height, half_height), p.z);
+}
+
+/* Exact signed distance: distance to the core segment minus r. Lipschitz bound 1. */
+BRDF_FN float fCapsule(float3 p, float r, float half_height) { return length(capsule_offset(p, half_height)) - r; }
+
+/* Unit outward normal: from the nearest point of the segment towards p (undefined on the segment;
+ * +x is returned there). */
+BRDF_FN float3 nCapsule(float3 p, float r, float half_height) {
+    (void)r;
+    float3 v = capsule_offset(p, half_height);
+    float l = length(v);
+    if (!(l > 0.0f)) return make_float3(1.0f, 0.0f, 0.0f);
+    return v / l;
+}
+
+#endif

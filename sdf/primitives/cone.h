@@ -1,0 +1,69 @@
+/* Capped cone around the y axis: base disk of radius r in the plane y = 0, centred at the origin,
+ * apex at (0, height, 0) (r > 0, height > 0). */
+#ifndef SDF_PRIMITIVES_CONE_H
+#define SDF_PRIMITIVES_CONE_H
+
+#include "brdf/common.h"
+#include "sdf/primitives/radial.h"
+
+/* The cone's meridian section, in the half-plane (rho = |p.xz|, y): the triangle with vertices
+ * (0, 0), (r, 0), (0, height). Its edge on the axis is interior to the solid of revolution, so the
+ * boundary that matters is the base segment (0,0)-(r,0) and the slant segment (r,0)-(0,height).
+ * (For rho >= 0, a point's nearest point on the full section, mirrored about the axis, is always on
+ * this half.) ConeFeatures holds the offsets from the nearest point of each segment to (rho, y). */
+typedef struct ConeFeatures {
+    float2 to_base;   /* (rho, y) minus its nearest point on the base segment */
+    float2 to_slant;  /* (rho, y) minus its nearest point on the slant segment */
+    float slant_t;    /* where that point lies on the slant: 0 at the rim, 1 at the apex */
+    int inside;       /* 1 when (rho, y) is in the closed triangle */
+} ConeFeatures;
+
+BRDF_FN ConeFeatures cone_features(float rho, float y, float r, float height) {
+    ConeFeatures c;
+    c.to_base = make_float2(fmax(rho - r, 0.0f), y);
+    float2 e = make_float2(-r, height);  /* rim -> apex */
+    float2 w = make_float2(rho - r, y);  /* rim -> point */
+    c.slant_t = clamp(dot(w, e) / dot(e, e), 0.0f, 1.0f);
+    c.to_slant = w - e * c.slant_t;
+    /* below the slant line: height rho + r y <= r height */
+    c.inside = (y >= 0.0f && height * rho + r * y <= r * height) ? 1 : 0;
+    return c;
+}
+
+/* Exact signed distance: the distance to the nearer of the two segments, negative inside.
+ * Lipschitz bound 1. */
+BRDF_FN float fCone(float3 p, float r, float height) {
+    ConeFeatures c = cone_features(radius_y(p), p.y, r, height);
+    float d = sqrt(fmin(dot(c.to_base, c.to_base), dot(c.to_slant, c.to_slant)));
+    return c.inside ? -d : d;
+}
+
+/* Unit outward normal, the gradient of fCone. Inside (and on the surface) it is the outward normal
+ * of the nearer face: (0, -1, 0) for the base, (height, r) / |(height, r)| in (rho, y) for the
+ * slant (the slant wins ties, e.g. on the rim). Outside it is the direction from the nearest point:
+ * the face normal again when that point is inside a face, otherwise the direction from the rim or
+ * apex. On the axis the radial direction is +x (radial.h). */
+BRDF_FN float3 nCone(float3 p, float r, float height) {
+    float rho = radius_y(p);
+    ConeFeatures c = cone_features(rho, p.y, r, height);
+    float slant_len = length(make_float2(height, r));
+    float3 slant_normal = meridian_to_world(p, height / slant_len, r / slant_len);
+    float3 base_normal = make_float3(0.0f, -1.0f, 0.0f);
+    float base2 = dot(c.to_base, c.to_base);
+    float slant2 = dot(c.to_slant, c.to_slant);
+    if (!c.inside) {
+        if (base2 < slant2) {
+            float l = sqrt(base2);
+            if (rho > r && l > 0.0f) return meridian_to_world(p, c.to_base.x / l, c.to_base.y / l);
+            return base_normal;
+        }
+        float l = sqrt(slant2);
+        bool at_vertex = c.slant_t <= 0.0f || c.slant_t >= 1.0f;
+        if (at_vertex && l > 0.0f) return meridian_to_world(p, c.to_slant.x / l, c.to_slant.y / l);
+        return slant_normal;
+    }
+    if (base2 < slant2) return base_normal;
+    return slant_normal;
+}
+
+#endif

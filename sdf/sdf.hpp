@@ -1,0 +1,58 @@
+// The single-source SDF library compiled as C++ for the host: namespace sdf.
+//
+// Primitives, domain operators, combinators and Lipschitz bounds are here. The marcher and the
+// normals (sdf/march.h, sdf/normals.h) call the scene's `scene_distance` (and
+// `scene_analytic_normal`), which must be declared before them, so they are NOT included here:
+// a host translation unit that marches declares its scene in a namespace of its own and includes
+// them after it:
+//
+//     #include "sdf/sdf.hpp"
+//     namespace my_scene {            // one namespace per scene (the headers have include guards,
+//     using namespace sdf;            // so one scene per translation unit; a scene that dispatches
+//     inline float scene_distance(float3 p) { return fSphere(p, 1.0f); }   // at run time can
+//     inline int scene_analytic_normal(float3 p, float3* n) {              // serve several)
+//         *n = nSphere(p, 1.0f);
+//         return 1;
+//     }
+//     #include "sdf/march.h"
+//     #include "sdf/normals.h"
+//     }  // namespace my_scene
+//
+// Give that namespace a name no other translation unit uses, since march() and the normals are
+// inline functions and the same qualified name must not mean two scenes (one definition rule).
+#pragma once
+
+#include "brdf/host/glm_builtins.hpp"
+
+// brdf/common.h's vocabulary (sqr, float3_splat, max_component, BRDF_FN) lives in namespace brdf,
+// as in brdf/brdf.hpp; its include guard makes the includes below see it through the using-directive.
+namespace brdf {
+#include "brdf/common.h"
+}  // namespace brdf
+
+namespace sdf {
+using namespace brdf;
+#include "sdf/lipschitz.h"
+#include "sdf/primitives/box.h"
+#include "sdf/primitives/capsule.h"
+#include "sdf/primitives/cone.h"
+#include "sdf/primitives/cylinder.h"
+#include "sdf/primitives/plane.h"
+#include "sdf/primitives/round_box.h"
+#include "sdf/primitives/sphere.h"
+#include "sdf/primitives/torus.h"
+#include "sdf/domain/mirror.h"
+#include "sdf/domain/mod3.h"
+#include "sdf/domain/mod_interval3.h"
+#include "sdf/combinators/displace_sine.h"
+#include "sdf/combinators/intersection.h"
+#include "sdf/combinators/intersection_chamfer.h"
+#include "sdf/combinators/intersection_round.h"
+#include "sdf/combinators/subtraction.h"
+#include "sdf/combinators/subtraction_chamfer.h"
+#include "sdf/combinators/subtraction_round.h"
+#include "sdf/combinators/union.h"
+#include "sdf/combinators/union_chamfer.h"
+#include "sdf/combinators/union_round.h"
+#include "sdf/combinators/union_smooth.h"
+}  // namespace sdf
