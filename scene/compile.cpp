@@ -1,0 +1,311 @@
+#include "scene/compile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "brdf/host/features.hpp"
+#include "common/input_error.hpp"
+#include "scene/json_fields.hpp"
+#include "scene/lipschitz.hpp"
+#include "scene/rotation.hpp"
+
+namespace lab::scene {
+namespace {
+
+std::string vec3_literal(Vec3 v) {
+    return "make_float3(" + float_literal(v.x) + ", " + float_literal(v.y) + ", " + float_literal(v.z) + ")";
+}
+
+// A primitive's sdf/ header, its function name stem (fX / nX) and its arguments after p.
+struct PrimitiveCall {
+    const char* header;
+    const char* stem;
+    std::string arguments;
+};
+
+std::optional<PrimitiveCall> primitive_call(const NodeKind& kind) {
+    auto f = [](float v) { return float_literal(v); };
+    if (auto* s = std::get_if<Sphere>(&kind)) return PrimitiveCall{"sdf/primitives/sphere.h", "Sphere", f(s->radius)};
+    if (auto* p = std::get_if<Plane>(&kind))
+        return PrimitiveCall{"sdf/primitives/plane.h", "Plane", vec3_literal(p->normal) + ", " + f(p->offset)};
+    if (auto* b = std::get_if<Box>(&kind)) return PrimitiveCall{"sdf/primitives/box.h", "Box", vec3_literal(b->half_size)};
+    if (auto* b = std::get_if<RoundBox>(&kind))
+        return PrimitiveCall{"sdf/primitives/round_box.h", "RoundBox", vec3_literal(b->half_size) + ", " + f(b->radius)};
+    if (auto* t = std::get_if<Torus>(&kind))
+        return PrimitiveCall{"sdf/primitives/torus.h", "Torus", f(t->major_radius) + ", " + f(t->minor_radius)};
+    if (auto* c = std::get_if<Cylinder>(&kind))
+        return PrimitiveCall{"sdf/primitives/cylinder.h", "Cylinder", f(c->radius) + ", " + f(c->half_height)};
+    if (auto* c = std::get_if<Capsule>(&kind))
+        return PrimitiveCall{"sdf/primitives/capsule.h", "Capsule", f(c->radius) + ", " + f(c->half_height)};
+    if (auto* c = std::get_if<Cone>(&kind)) return PrimitiveCall{"sdf/primitives/cone.h", "Cone", f(c->radius) + ", " + f(c->height)};
+    return std::nullopt;
+}
+
+struct CombinatorCall {
+    const char* header;
+    const char* function;
+};
+
+CombinatorCall combinator_call(Combinator op) {
+    switch (op) {
+    case Combinator::union_: return {"sdf/combinators/union.h", "fOpUnion"};
+    case Combinator::intersection: return {"sdf/combinators/intersection.h", "fOpIntersection"};
+    case Combinator::subtraction: return {"sdf/combinators/subtraction.h", "fOpSubtraction"};
+    case Combinator::smooth_union: return {"sdf/combinators/union_smooth.h", "fOpUnionSmooth"};
+    case Combinator::round_union: return {"sdf/combinators/union_round.h", "fOpUnionRound"};
+    case Combinator::round_intersection: return {"sdf/combinators/intersection_round.h", "fOpIntersectionRound"};
+    case Combinator::round_subtraction: return {"sdf/combinators/subtraction_round.h", "fOpSubtractionRound"};
+    case Combinator::chamfer_union: return {"sdf/combinators/union_chamfer.h", "fOpUnionChamfer"};
+    case Combinator::chamfer_intersection: return {"sdf/combinators/intersection_chamfer.h", "fOpIntersectionChamfer"};
+    case Combinator::chamfer_subtraction: return {"sdf/combinators/subtraction_chamfer.h", "fOpSubtractionChamfer"};
+    }
+    return {"", ""};
+}
+
+bool blended(Combinator op) { return op != Combinator::union_ && op != Combinator::intersection && op != Combinator::subtraction; }
+
+// The body of one generated function: numbered locals, one statement each, and the headers used.
+class FunctionWriter {
+public:
+    explicit FunctionWriter(std::set<std::string>* headers) : headers_(headers) {}
+
+    std::string point(const std::string& expression) { return local("float3", "p", expression); }
+    std::string distance(const std::string& expression) { return local("float", "d", expression); }
+    std::string normal(const std::string& expression) { return local("float3", "n", expression); }
+    void use(const std::string& header) { headers_->insert(header); }
+    const std::string& body() const { return body_; }
+
+private:
+    std::string local(const char* type, const char* prefix, const std::string& expression) {
+        std::string name = prefix + std::to_string(next_++);
+        body_ += std::string("    ") + type + " " + name + " = " + expression + ";\n";
+        return name;
+    }
+    std::set<std::string>* headers_;
+    std::string body_;
+    int next_ = 1;
+};
+
+// R^T p or R n written out as rotation_terms() says, so the host interpreter rounds alike.
+std::string rotation_expression(const glm::mat3& r, const std::string& v, bool inverse) {
+    const char* component[3] = {".x", ".y", ".z"};
+    std::string out = "make_float3(";
+    for (int i = 0; i < 3; ++i) {
+        auto terms = rotation_terms(r, i, inverse);
+        std::string sum;
+        for (const auto& [c, j] : terms) {
+            // a + (-c) x equals a - c x exactly, and 1 x equals x: the same arithmetic, easier to read
+            std::string operand = v + component[j];
+            std::string magnitude = std::fabs(c) == 1.0f ? operand : float_literal(std::fabs(c)) + " * " + operand;
+            if (sum.empty())
+                sum = (c < 0.0f ? "-" : "") + magnitude;
+            else
+                sum += (c < 0.0f ? " - " : " + ") + magnitude;
+        }
+        out += (i ? ", " : "") + (sum.empty() ? std::string("0.0f") : sum);
+    }
+    return out + ")";
+}
+
+std::string emit_distance(const Node& node, const std::string& p, FunctionWriter* w) {
+    if (auto call = primitive_call(node.kind)) {
+        w->use(call->header);
+        return w->distance(std::string("f") + call->stem + "(" + p + ", " + call->arguments + ")");
+    }
+    if (auto* c = std::get_if<Combine>(&node.kind)) {
+        CombinatorCall call = combinator_call(c->op);
+        w->use(call.header);
+        std::string radius = blended(c->op) ? ", " + float_literal(c->radius) : "";
+        std::string d = emit_distance(node.children[0], p, w);
+        for (size_t k = 1; k < node.children.size(); ++k) {
+            std::string e = emit_distance(node.children[k], p, w);
+            d = w->distance(std::string(call.function) + "(" + d + ", " + e + radius + ")");
+        }
+        return d;
+    }
+    const Node& child = node.children[0];
+    if (auto* t = std::get_if<Translate>(&node.kind)) return emit_distance(child, w->point(p + " - " + vec3_literal(t->offset)), w);
+    if (auto* r = std::get_if<Rotate>(&node.kind)) return emit_distance(child, w->point(rotation_expression(r->rotation, p, true)), w);
+    if (auto* s = std::get_if<Scale>(&node.kind)) {
+        std::string d = emit_distance(child, w->point(p + " / " + float_literal(s->factor)), w);
+        return w->distance(float_literal(s->factor) + " * " + d);
+    }
+    if (auto* r = std::get_if<Repeat>(&node.kind)) {
+        w->use("sdf/domain/mod3.h");
+        return emit_distance(child, w->point("pMod3(" + p + ", " + vec3_literal(r->period) + ")"), w);
+    }
+    if (auto* r = std::get_if<RepeatLimited>(&node.kind)) {
+        w->use("sdf/domain/mod_interval3.h");
+        return emit_distance(child,
+                             w->point("pModInterval3(" + p + ", " + vec3_literal(r->period) + ", " + vec3_literal(r->count_min) + ", " +
+                                      vec3_literal(r->count_max) + ")"),
+                             w);
+    }
+    if (auto* d = std::get_if<Displace>(&node.kind)) {
+        w->use("sdf/combinators/displace_sine.h");
+        std::string inner = emit_distance(child, p, w);
+        return w->distance("fOpDisplaceSine(" + inner + ", " + p + ", " + float_literal(d->amplitude) + ", " +
+                           float_literal(d->frequency) + ")");
+    }
+    return "0.0f";
+}
+
+// A primitive under rigid transforms and uniform scales only: its normal is the primitive's
+// analytic one (nX) turned back by the rotations (translation and uniform scale leave it).
+bool has_analytic_normal(const Node& node) {
+    if (primitive_call(node.kind)) return true;
+    if (std::holds_alternative<Translate>(node.kind) || std::holds_alternative<Rotate>(node.kind) ||
+        std::holds_alternative<Scale>(node.kind))
+        return has_analytic_normal(node.children[0]);
+    return false;
+}
+
+std::string emit_normal(const Node& node, const std::string& p, FunctionWriter* w) {
+    if (auto call = primitive_call(node.kind)) return w->normal(std::string("n") + call->stem + "(" + p + ", " + call->arguments + ")");
+    const Node& child = node.children[0];
+    if (auto* t = std::get_if<Translate>(&node.kind)) return emit_normal(child, w->point(p + " - " + vec3_literal(t->offset)), w);
+    if (auto* r = std::get_if<Rotate>(&node.kind)) {
+        std::string n = emit_normal(child, w->point(rotation_expression(r->rotation, p, true)), w);
+        return w->normal(rotation_expression(r->rotation, n, false));
+    }
+    auto* s = std::get_if<Scale>(&node.kind);
+    return emit_normal(child, w->point(p + " / " + float_literal(s->factor)), w);
+}
+
+std::string list_names(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? "none" : out;
+}
+
+std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, const std::vector<brdf::Material>& materials) {
+    std::set<std::string> headers;
+    std::ostringstream functions;
+    // The nearest surface: objects in file order, then emitters; a tie keeps the earlier one.
+    std::ostringstream nearest, normals, slot_cases, normal_cases;
+    size_t index = 0;
+    for (const Object& object : scene.objects) {
+        FunctionWriter w(&headers);
+        std::string d = emit_distance(object.shape, "p", &w);
+        std::string name = "scene_object_" + std::to_string(index);
+        functions << "/* object \"" << object.name << "\" (" << object.shape.path << "), material slot " << object.material << " */\n"
+                  << "BRDF_FN float " << name << "(float3 p) {\n" << w.body() << "    return " << d << ";\n}\n\n";
+        if (has_analytic_normal(object.shape)) {
+            FunctionWriter wn(&headers);
+            std::string n = emit_normal(object.shape, "p", &wn);
+            functions << "BRDF_FN float3 " << name << "_normal(float3 p) {\n" << wn.body() << "    return " << n << ";\n}\n\n";
+            normal_cases << "    case " << index << ": *n = " << name << "_normal(p); return 1;\n";
+        }
+        nearest << (index == 0 ? "    float d = " : "    e = ") << name << "(p);\n";
+        slot_cases << "    case " << index << ": return " << object.material << ";\n";
+        if (index > 0) nearest << "    if (e < d) { d = e; k = " << index << "; }\n";
+        ++index;
+    }
+    for (size_t i = 0; i < scene.emitters.size(); ++i) {
+        const EmitterSphere& e = scene.emitters[i];
+        headers.insert("sdf/primitives/sphere.h");
+        std::string local = "p - " + vec3_literal(e.center);
+        nearest << (index == 0 ? "    float d = " : "    e = ") << "fSphere(" << local << ", " << float_literal(e.radius) << "); /* emitters["
+                << i << "] */\n";
+        if (index > 0) nearest << "    if (e < d) { d = e; k = " << index << "; }\n";
+        slot_cases << "    case " << index << ": return " << e.material << ";\n";
+        normal_cases << "    case " << index << ": *n = nSphere(" << local << ", " << float_literal(e.radius) << "); return 1;\n";
+        ++index;
+    }
+
+    std::ostringstream out;
+    out << "/* Generated by the dtoadq scene compiler from " << scene.file << "; do not edit.\n"
+        << " * Objects: " << scene.objects.size() << ", emitters: " << scene.emitters.size()
+        << ". Lipschitz bound " << format_number(analysis.lipschitz)
+        << (analysis.is_distance_bound ? "" : "; NOT a distance bound (a repetition breaks it)") << ". */\n"
+        << "#ifndef SCENE_GENERATED_H\n#define SCENE_GENERATED_H\n\n"
+        << "#define SCENE_LIPSCHITZ " << float_literal(analysis.lipschitz) << "\n"
+        << "#define SCENE_MATERIAL_COUNT " << materials.size() << "\n"
+        << "#define SCENE_EMITTER_COUNT " << scene.emitters.size() << "\n\n"
+        << "/* The BRDF features this scene's materials need (brdf/features.h). */\n"
+        << brdf::feature_defines(materials) << "\n"
+        << "#include \"brdf/common.h\"\n";
+    for (const std::string& h : headers) out << "#include \"" << h << "\"\n";
+    out << "\n" << functions.str();
+    out << "/* The nearest object or emitter (index: objects, then emitters) and its distance. */\n"
+        << "BRDF_FN float scene_nearest(float3 p, int* nearest) {\n    int k = 0;\n";
+    if (index > 1) out << "    float e;\n";
+    out << nearest.str() << "    *nearest = k;\n    return d;\n}\n\n"
+        << "BRDF_FN int scene_material_slot(int nearest) {\n    switch (nearest) {\n"
+        << slot_cases.str() << "    default: return 0;\n    }\n}\n\n"
+        << "BRDF_FN float scene_distance(float3 p) {\n    int k;\n    return scene_nearest(p, &k);\n}\n\n"
+        << "/* The distance and the material slot of the nearest object. */\n"
+        << "BRDF_FN float scene_distance_material(float3 p, int* material) {\n    int k;\n"
+        << "    float d = scene_nearest(p, &k);\n    *material = scene_material_slot(k);\n    return d;\n}\n\n"
+        << "/* The nearest object's analytic normal where it is one primitive under rigid transforms and\n"
+        << " * uniform scales; 0 (no normal) elsewhere. */\n"
+        << "BRDF_FN int scene_analytic_normal(float3 p, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
+        << "    switch (k) {\n" << normal_cases.str() << "    default: return 0;\n    }\n}\n\n"
+        << "#endif\n";
+    return out.str();
+}
+
+}  // namespace
+
+std::string float_literal(float value) {
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.9g", double(value));
+    std::string s = text;
+    if (s.find_first_of(".ein") == std::string::npos) {
+        s += ".0";
+    } else if (s.find('.') == std::string::npos && s.find('e') != std::string::npos) {
+        s.insert(s.find('e'), ".0");
+    }
+    return s + "f";
+}
+
+Scene apply_options(const Scene& scene, const CompileOptions& options) {
+    Scene out = scene;
+    std::vector<std::string> declared, objects;
+    for (const MaterialSlot& slot : scene.materials)
+        if (slot.source != "emitter") declared.push_back(slot.name);
+    for (const Object& o : scene.objects) objects.push_back(o.name);
+    for (const auto& [name, material] : options.material_overrides) {
+        auto it = std::find_if(out.materials.begin(), out.materials.end(),
+                               [&](const MaterialSlot& s) { return s.name == name && s.source != "emitter"; });
+        if (it == out.materials.end())
+            throw InputError(scene.file, "materials", "no material named \"" + name + "\" to replace (declared: " + list_names(declared) + ")");
+        it->material = material;
+        it->source = "override";
+    }
+    for (const std::string& name : options.disabled_objects) {
+        auto it = std::find_if(out.objects.begin(), out.objects.end(), [&](const Object& o) { return o.name == name; });
+        if (it == out.objects.end())
+            throw InputError(scene.file, "objects", "no object named \"" + name + "\" to disable (objects: " + list_names(objects) + ")");
+        out.objects.erase(it);
+    }
+    if (out.objects.empty() && out.emitters.empty())
+        throw InputError(scene.file, "objects", "nothing is left to render once the disabled objects are left out");
+    return out;
+}
+
+CompiledScene compile_scene(const Scene& input, const CompileOptions& options) {
+    Scene scene = apply_options(input, options);
+    SceneAnalysis analysis = analyse_scene(scene);
+    CompiledScene out;
+    out.file = scene.file;
+    for (const MaterialSlot& slot : scene.materials) {
+        out.materials.push_back(slot.material);
+        out.material_names.push_back(slot.name);
+        out.emission.push_back(slot.emission);
+    }
+    out.emitters = scene.emitters;
+    out.lipschitz = analysis.lipschitz;
+    out.is_distance_bound = analysis.is_distance_bound;
+    out.warnings = analysis.warnings;
+    out.camera = scene.camera;
+    out.environment = scene.environment;
+    out.source = generate_source(scene, analysis, out.materials);
+    return out;
+}
+
+}  // namespace lab::scene

@@ -1,0 +1,49 @@
+// The scene compiler: a Scene becomes OpenCL C source (the virtual file "scene/generated.h") that
+// defines the scene's distance field with only the sdf/ headers it uses, plus what the renderer
+// needs beside it (material slots, emitters, camera, environment, the Lipschitz bound).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "brdf/brdf.hpp"
+#include "scene/scene.hpp"
+
+namespace lab::scene {
+
+// What a viewer changes without editing the file.
+struct CompileOptions {
+    std::map<std::string, brdf::Material> material_overrides;  // declared material name -> its replacement
+    std::vector<std::string> disabled_objects;                 // object names to leave out
+};
+
+// The scene with the options applied. Throws lab::InputError naming the scene file for a name the
+// scene does not declare, or when nothing would be left to render.
+Scene apply_options(const Scene& scene, const CompileOptions& options);
+
+struct CompiledScene {
+    std::string file;                            // the scene file, for messages
+    // Defines SCENE_LIPSCHITZ, SCENE_MATERIAL_COUNT, SCENE_EMITTER_COUNT, the BRDF_FEATURE_ switches
+    // of its materials, and scene_distance / scene_distance_material / scene_analytic_normal.
+    // Include it before any brdf/ header (the feature switches must come first).
+    std::string source;
+    std::vector<brdf::Material> materials;       // per slot: declared materials, then one per emitter
+    std::vector<std::string> material_names;     // per slot
+    std::vector<Vec3> emission;                  // per slot: an emitter's radiance, else 0
+    std::vector<EmitterSphere> emitters;
+    float lipschitz = 1.0f;                      // SCENE_LIPSCHITZ
+    bool is_distance_bound = true;               // false when a repetition breaks the bound
+    std::vector<std::string> warnings;           // for the command line to print
+    Camera camera;
+    std::optional<EnvironmentSpec> environment;
+};
+
+CompiledScene compile_scene(const Scene& scene, const CompileOptions& options = {});
+
+// A float as an OpenCL C literal that reads back as exactly the same float: "%.9g", a decimal
+// point, and the f suffix ("1.0f", "-0.25f", "1.5e-07f").
+std::string float_literal(float value);
+
+}  // namespace lab::scene

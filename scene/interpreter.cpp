@@ -1,0 +1,127 @@
+#include "scene/interpreter.hpp"
+
+#include "scene/rotation.hpp"
+#include "sdf/sdf.hpp"
+
+namespace lab::scene {
+namespace {
+
+float primitive_distance(const NodeKind& kind, Vec3 p) {
+    if (auto* s = std::get_if<Sphere>(&kind)) return sdf::fSphere(p, s->radius);
+    if (auto* q = std::get_if<Plane>(&kind)) return sdf::fPlane(p, q->normal, q->offset);
+    if (auto* b = std::get_if<Box>(&kind)) return sdf::fBox(p, b->half_size);
+    if (auto* b = std::get_if<RoundBox>(&kind)) return sdf::fRoundBox(p, b->half_size, b->radius);
+    if (auto* t = std::get_if<Torus>(&kind)) return sdf::fTorus(p, t->major_radius, t->minor_radius);
+    if (auto* c = std::get_if<Cylinder>(&kind)) return sdf::fCylinder(p, c->radius, c->half_height);
+    if (auto* c = std::get_if<Capsule>(&kind)) return sdf::fCapsule(p, c->radius, c->half_height);
+    if (auto* c = std::get_if<Cone>(&kind)) return sdf::fCone(p, c->radius, c->height);
+    return 0.0f;
+}
+
+bool primitive_normal(const NodeKind& kind, Vec3 p, Vec3* n) {
+    if (auto* s = std::get_if<Sphere>(&kind)) *n = sdf::nSphere(p, s->radius);
+    else if (auto* q = std::get_if<Plane>(&kind)) *n = sdf::nPlane(p, q->normal, q->offset);
+    else if (auto* b = std::get_if<Box>(&kind)) *n = sdf::nBox(p, b->half_size);
+    else if (auto* b = std::get_if<RoundBox>(&kind)) *n = sdf::nRoundBox(p, b->half_size, b->radius);
+    else if (auto* t = std::get_if<Torus>(&kind)) *n = sdf::nTorus(p, t->major_radius, t->minor_radius);
+    else if (auto* c = std::get_if<Cylinder>(&kind)) *n = sdf::nCylinder(p, c->radius, c->half_height);
+    else if (auto* c = std::get_if<Capsule>(&kind)) *n = sdf::nCapsule(p, c->radius, c->half_height);
+    else if (auto* c = std::get_if<Cone>(&kind)) *n = sdf::nCone(p, c->radius, c->height);
+    else return false;
+    return true;
+}
+
+float combine(Combinator op, float a, float b, float r) {
+    switch (op) {
+    case Combinator::union_: return sdf::fOpUnion(a, b);
+    case Combinator::intersection: return sdf::fOpIntersection(a, b);
+    case Combinator::subtraction: return sdf::fOpSubtraction(a, b);
+    case Combinator::smooth_union: return sdf::fOpUnionSmooth(a, b, r);
+    case Combinator::round_union: return sdf::fOpUnionRound(a, b, r);
+    case Combinator::round_intersection: return sdf::fOpIntersectionRound(a, b, r);
+    case Combinator::round_subtraction: return sdf::fOpSubtractionRound(a, b, r);
+    case Combinator::chamfer_union: return sdf::fOpUnionChamfer(a, b, r);
+    case Combinator::chamfer_intersection: return sdf::fOpIntersectionChamfer(a, b, r);
+    case Combinator::chamfer_subtraction: return sdf::fOpSubtractionChamfer(a, b, r);
+    }
+    return a;
+}
+
+// As the compiled normal functions: transforms down to the primitive, rotations back up.
+bool shape_normal(const Node& node, Vec3 p, Vec3* n) {
+    if (node.children.empty()) return primitive_normal(node.kind, p, n);
+    const Node& child = node.children[0];
+    if (auto* t = std::get_if<Translate>(&node.kind)) return shape_normal(child, p - t->offset, n);
+    if (auto* s = std::get_if<Scale>(&node.kind)) return shape_normal(child, p / s->factor, n);
+    if (auto* r = std::get_if<Rotate>(&node.kind)) {
+        Vec3 local;
+        if (!shape_normal(child, apply_rotation(r->rotation, p, true), &local)) return false;
+        *n = apply_rotation(r->rotation, local, false);
+        return true;
+    }
+    return false;
+}
+
+// Objects in file order, then emitters; a tie keeps the earlier (as the generated scene_nearest).
+float nearest_surface(const Scene& scene, Vec3 p, int* nearest) {
+    float d = 0.0f;
+    int k = 0, index = 0;
+    auto consider = [&](float e) {
+        if (index == 0 || e < d) {
+            d = e;
+            k = index;
+        }
+        ++index;
+    };
+    for (const Object& o : scene.objects) consider(shape_distance(o.shape, p));
+    for (const EmitterSphere& e : scene.emitters) consider(sdf::fSphere(p - e.center, e.radius));
+    *nearest = k;
+    return d;
+}
+
+}  // namespace
+
+float shape_distance(const Node& node, Vec3 p) {
+    if (node.children.empty()) return primitive_distance(node.kind, p);
+    if (auto* c = std::get_if<Combine>(&node.kind)) {
+        float d = shape_distance(node.children[0], p);
+        for (size_t k = 1; k < node.children.size(); ++k) d = combine(c->op, d, shape_distance(node.children[k], p), c->radius);
+        return d;
+    }
+    const Node& child = node.children[0];
+    if (auto* t = std::get_if<Translate>(&node.kind)) return shape_distance(child, p - t->offset);
+    if (auto* r = std::get_if<Rotate>(&node.kind)) return shape_distance(child, apply_rotation(r->rotation, p, true));
+    if (auto* s = std::get_if<Scale>(&node.kind)) return s->factor * shape_distance(child, p / s->factor);
+    if (auto* r = std::get_if<Repeat>(&node.kind)) return shape_distance(child, sdf::pMod3(p, r->period));
+    if (auto* r = std::get_if<RepeatLimited>(&node.kind))
+        return shape_distance(child, sdf::pModInterval3(p, r->period, r->count_min, r->count_max));
+    if (auto* d = std::get_if<Displace>(&node.kind)) return sdf::fOpDisplaceSine(shape_distance(child, p), p, d->amplitude, d->frequency);
+    return 0.0f;
+}
+
+float scene_distance(const Scene& scene, Vec3 p) {
+    int k;
+    return nearest_surface(scene, p, &k);
+}
+
+float scene_distance_material(const Scene& scene, Vec3 p, int* material) {
+    int k;
+    float d = nearest_surface(scene, p, &k);
+    int objects = int(scene.objects.size());
+    *material = k < objects ? scene.objects[size_t(k)].material : scene.emitters[size_t(k - objects)].material;
+    return d;
+}
+
+int scene_analytic_normal(const Scene& scene, Vec3 p, Vec3* n) {
+    int k;
+    nearest_surface(scene, p, &k);
+    int objects = int(scene.objects.size());
+    if (k >= objects) {
+        const EmitterSphere& e = scene.emitters[size_t(k - objects)];
+        *n = sdf::nSphere(p - e.center, e.radius);
+        return 1;
+    }
+    return shape_normal(scene.objects[size_t(k)].shape, p, n) ? 1 : 0;
+}
+
+}  // namespace lab::scene

@@ -1,0 +1,192 @@
+#include "scene/load_scene.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "brdf/host/parameters.hpp"
+#include "brdf/host/preset.hpp"
+#include "common/input_error.hpp"
+#include "scene/json_fields.hpp"
+#include "scene/parse_node.hpp"
+
+namespace lab::scene {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A path from the scene file, taken relative to the scene file's folder unless absolute.
+std::string resolve(const std::string& scene_file, const std::string& relative) {
+    fs::path p(relative);
+    if (p.is_absolute()) return p.lexically_normal().string();
+    return (fs::path(scene_file).parent_path() / p).lexically_normal().string();
+}
+
+Camera parse_camera(const Json& value, const std::string& file) {
+    const std::string path = "camera";
+    if (!value.is_object()) throw InputError(file, path, std::string("expected an object, got ") + value.type_name());
+    // The type decides which keys are allowed, so it is checked first.
+    if (!value.contains("type")) throw InputError(file, "camera.type", "missing required key");
+    const Json& type = value.at("type");
+    if (!type.is_string()) throw InputError(file, "camera.type", std::string("expected a string, got ") + type.type_name());
+    Camera camera;
+    std::vector<std::string> keys = {"type", "position", "look_at", "up", "fov_degrees"};
+    if (type == "thin_lens") {
+        camera.type = CameraType::thin_lens;
+        keys.insert(keys.end(), {"aperture_radius", "focus_distance"});
+    } else if (type != "pinhole") {
+        throw InputError(file, "camera.type", "unknown camera type \"" + type.get<std::string>() + "\" (expected one of: pinhole, thin_lens)");
+    }
+    Fields f(value, path, file, keys);
+    camera.position = f.vec3("position");
+    camera.look_at = f.vec3("look_at");
+    if (camera.look_at == camera.position) f.fail("look_at", "equals camera.position: there is no view direction");
+    if (f.has("up")) camera.up = f.nonzero_vec3("up");
+    glm::dvec3 forward = glm::normalize(glm::dvec3(camera.look_at) - glm::dvec3(camera.position));
+    if (glm::length(glm::cross(forward, glm::normalize(glm::dvec3(camera.up)))) < 1e-6)
+        f.fail("up", "is parallel to the view direction (look_at - position)");
+    if (f.has("fov_degrees")) camera.fov_degrees = f.in_open_range("fov_degrees", 0.0f, 180.0f);
+    if (camera.type == CameraType::thin_lens) {
+        camera.aperture_radius = f.positive("aperture_radius");
+        camera.focus_distance = f.positive("focus_distance");
+    }
+    return camera;
+}
+
+// An inline preset goes through the preset parser; its messages "SOURCE: FIELD: problem" become
+// "SCENE: materials.NAME.FIELD: problem".
+brdf::Material parse_inline_preset(const Json& value, const std::string& file, const std::string& path) {
+    const std::string source = file + ": " + path;
+    try {
+        return brdf::parse_preset(nlohmann::json(value), source).material;
+    } catch (const InputError& e) {
+        std::string message = e.what();
+        const std::string prefix = source + ": ";
+        if (message.rfind(prefix, 0) != 0) throw;
+        throw InputError(file, "", path + "." + message.substr(prefix.size()));
+    }
+}
+
+MaterialSlot parse_material(const std::string& name, const Json& value, const std::string& file, const std::string& path) {
+    if (name.empty()) throw InputError(file, path, "a material name must not be empty");
+    MaterialSlot slot;
+    slot.name = name;
+    if (value.is_string()) {
+        std::string relative = value.get<std::string>();
+        std::string resolved = resolve(file, relative);
+        std::error_code ec;
+        if (relative.empty() || !fs::is_regular_file(resolved, ec))
+            throw InputError(file, path, "preset file \"" + relative + "\" not found (looked for " + resolved + ")");
+        slot.source = resolved;
+        slot.material = brdf::load_preset(resolved).material;
+    } else if (value.is_object()) {
+        slot.source = "inline";
+        slot.material = parse_inline_preset(value, file, path);
+    } else {
+        throw InputError(file, path,
+                         std::string("expected a preset file path (string) or an inline preset (object), got ") + value.type_name());
+    }
+    return slot;
+}
+
+std::vector<MaterialSlot> parse_materials(const Json& value, const std::string& file) {
+    if (!value.is_object()) throw InputError(file, "materials", std::string("expected an object, got ") + value.type_name());
+    std::vector<MaterialSlot> slots;
+    for (auto it = value.begin(); it != value.end(); ++it)
+        slots.push_back(parse_material(it.key(), it.value(), file, field_path("materials", it.key())));
+    return slots;
+}
+
+std::vector<Object> parse_objects(const Json& value, const std::string& file, const std::vector<MaterialSlot>& materials) {
+    if (!value.is_array()) throw InputError(file, "objects", std::string("expected an array, got ") + value.type_name());
+    std::vector<Object> objects;
+    std::map<std::string, size_t> first_index;
+    for (size_t i = 0; i < value.size(); ++i) {
+        std::string path = element_path("objects", i);
+        Fields f(value[i], path, file, {"name", "material", "shape"});
+        Object object;
+        object.name = f.string("name");
+        if (object.name.empty()) f.fail("name", "an object name must not be empty");
+        auto [previous, fresh] = first_index.emplace(object.name, i);
+        if (!fresh)
+            f.fail("name", "duplicate object name \"" + object.name + "\" (also objects[" + std::to_string(previous->second) + "])");
+        std::string material = f.string("material");
+        object.material = -1;
+        for (size_t m = 0; m < materials.size(); ++m)
+            if (materials[m].name == material) object.material = int(m);
+        if (object.material < 0) f.fail("material", "material \"" + material + "\" is not declared in \"materials\"");
+        object.shape = parse_node(f.at("shape"), f.path_of("shape"), file);
+        objects.push_back(std::move(object));
+    }
+    return objects;
+}
+
+// An emitter's slot: a black material (every lobe weight 0, docs/materials.md) with its radiance.
+MaterialSlot emitter_slot(size_t index, Vec3 radiance) {
+    MaterialSlot slot;
+    slot.name = element_path("emitters", index);
+    slot.source = "emitter";
+    slot.material = brdf::default_material();
+    for (float& a : slot.material.albedo) a = 0.0f;
+    slot.material.weight_diffuse = slot.material.weight_glossy = slot.material.weight_specular = slot.material.weight_transmission = 0.0f;
+    slot.emission = radiance;
+    return slot;
+}
+
+std::vector<EmitterSphere> parse_emitters(const Json& value, const std::string& file, std::vector<MaterialSlot>* slots) {
+    if (!value.is_array()) throw InputError(file, "emitters", std::string("expected an array, got ") + value.type_name());
+    std::vector<EmitterSphere> emitters;
+    for (size_t i = 0; i < value.size(); ++i) {
+        Fields f(value[i], element_path("emitters", i), file, {"center", "radius", "radiance"});
+        EmitterSphere e{f.vec3("center"), f.positive("radius"), f.non_negative_vec3("radiance"), int(slots->size())};
+        slots->push_back(emitter_slot(i, e.radiance));
+        emitters.push_back(e);
+    }
+    return emitters;
+}
+
+EnvironmentSpec parse_environment(const Json& value, const std::string& file) {
+    Fields f(value, "environment", file, {"file", "constant", "rotation_degrees", "exposure"});
+    EnvironmentSpec env;
+    if (f.has("file") == f.has("constant"))
+        throw InputError(file, "environment", "give exactly one of \"file\" (an image) and \"constant\" (a radiance)");
+    if (f.has("file")) {
+        std::string relative = f.string("file");
+        if (relative.empty()) f.fail("file", "must not be empty");
+        env.file = resolve(file, relative);
+    } else {
+        env.constant = f.non_negative_vec3("constant");
+    }
+    if (f.has("rotation_degrees")) env.rotation_degrees = f.in_range("rotation_degrees", -360.0f, 360.0f);
+    if (f.has("exposure")) env.exposure = f.in_range("exposure", -20.0f, 20.0f);
+    return env;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& file) {
+    Json doc = parse_json_document(text, file);
+    Fields top(doc, "", file, {"$schema", "description", "camera", "materials", "objects", "emitters", "environment"});
+    Scene scene;
+    scene.file = file;
+    if (top.has("$schema")) top.string("$schema");
+    if (top.has("description")) scene.description = top.string("description");
+    scene.camera = parse_camera(top.at("camera"), file);
+    if (top.has("materials")) scene.materials = parse_materials(top.at("materials"), file);
+    if (top.has("objects")) scene.objects = parse_objects(top.at("objects"), file, scene.materials);
+    if (top.has("emitters")) scene.emitters = parse_emitters(top.at("emitters"), file, &scene.materials);
+    if (top.has("environment")) scene.environment = parse_environment(top.at("environment"), file);
+    if (scene.objects.empty() && scene.emitters.empty()) throw InputError(file, "", "the scene has no objects and no emitters");
+    return scene;
+}
+
+Scene load_scene(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path, "", "cannot open scene file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_scene(text.str(), path);
+}
+
+}  // namespace lab::scene

@@ -1,0 +1,116 @@
+// A parsed scene file (format: docs/scenes.md): camera, materials, objects built from SDF nodes,
+// emissive spheres and an optional environment. Everything here has been validated; the compiler
+// (scene/compile.hpp) and the host interpreter (scene/interpreter.hpp) take it as it is.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "brdf/brdf.hpp"
+
+namespace lab::scene {
+
+using Vec3 = brdf::float3;
+
+// Primitives (sdf/primitives/); each sits at the origin of its local frame, axis y where it has one.
+struct Sphere { float radius; };
+struct Plane { Vec3 normal; float offset; };  // normal unit (normalised by the parser)
+struct Box { Vec3 half_size; };
+struct RoundBox { Vec3 half_size; float radius; };  // half_size is the outer extent
+struct Torus { float major_radius; float minor_radius; };
+struct Cylinder { float radius; float half_height; };
+struct Capsule { float radius; float half_height; };
+struct Cone { float radius; float height; };  // base disk at y = 0, apex at y = height
+
+// Transforms of one child. A rotation is stored as its matrix (world from local): the child is
+// evaluated at rotation^T p.
+struct Translate { Vec3 offset; };
+struct Rotate { glm::mat3 rotation; };
+struct Scale { float factor; };
+
+// Combinators of two or more children, folded from the left: op(op(c0, c1), c2)...
+// `radius` is the blend radius of the smooth / round / chamfer variants (unused by the plain ones).
+enum class Combinator {
+    union_,
+    intersection,
+    subtraction,  // the first child minus each of the others
+    smooth_union,
+    round_union,
+    round_intersection,
+    round_subtraction,
+    chamfer_union,
+    chamfer_intersection,
+    chamfer_subtraction,
+};
+struct Combine { Combinator op; float radius; };
+
+// Domain repetition of one child: cells centred on multiples of the period.
+struct Repeat { Vec3 period; };
+struct RepeatLimited { Vec3 period; Vec3 count_min; Vec3 count_max; };  // integer cell indices
+
+// The child's distance plus amplitude sin(f x) sin(f y) sin(f z).
+struct Displace { float amplitude; float frequency; };
+
+using NodeKind = std::variant<Sphere, Plane, Box, RoundBox, Torus, Cylinder, Capsule, Cone, Translate, Rotate, Scale, Combine,
+                              Repeat, RepeatLimited, Displace>;
+
+struct Node {
+    NodeKind kind;
+    std::string path;            // JSON path in the scene file, e.g. "objects[2].shape.children[0]"
+    std::vector<Node> children;  // one for transforms, repetition and displacement; >= 2 for combinators
+};
+
+struct Object {
+    std::string name;
+    int material = 0;  // material slot
+    Node shape;
+};
+
+// An emissive sphere: part of the distance field with a material slot of its own.
+struct EmitterSphere {
+    Vec3 center;
+    float radius;
+    Vec3 radiance;      // linear RGB, W / (m^2 sr)
+    int material = 0;   // its slot, after the declared materials
+};
+
+enum class CameraType { pinhole, thin_lens };
+
+struct Camera {
+    CameraType type = CameraType::pinhole;
+    Vec3 position{0.0f};
+    Vec3 look_at{0.0f, 0.0f, -1.0f};
+    Vec3 up{0.0f, 1.0f, 0.0f};
+    float fov_degrees = 40.0f;    // vertical field of view
+    float aperture_radius = 0.0f; // thin lens only
+    float focus_distance = 0.0f;  // thin lens only
+};
+
+struct EnvironmentSpec {
+    std::string file;                 // resolved against the scene file's folder; empty for a constant
+    Vec3 constant{0.0f};              // radiance when `file` is empty
+    float rotation_degrees = 0.0f;    // about +y
+    float exposure = 0.0f;            // stops
+};
+
+// A material slot: declared materials first (in file order), then one per emitter.
+struct MaterialSlot {
+    std::string name;        // the declared name, or "emitters[k]"
+    std::string source;      // the preset file it came from, or "inline" / "emitter"
+    brdf::Material material;
+    Vec3 emission{0.0f};     // radiance of an emitter's slot, 0 otherwise
+};
+
+struct Scene {
+    std::string file;    // the scene file as given, for messages
+    std::string description;
+    Camera camera;
+    std::vector<MaterialSlot> materials;
+    std::vector<Object> objects;
+    std::vector<EmitterSphere> emitters;
+    std::optional<EnvironmentSpec> environment;
+};
+
+}  // namespace lab::scene

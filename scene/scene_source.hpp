@@ -1,0 +1,24 @@
+// Kernel sources that include a compiled scene: the virtual file "scene/generated.h" is served from
+// the CompiledScene, every other file from the ones embedded in the binary. Used by the scene probe
+// (kernels/scene_probe.cl, the agreement test) and the preview kernel.
+#pragma once
+
+#include <string>
+
+#include "opencl/kernel_source.hpp"
+#include "scene/compile.hpp"
+
+namespace lab::scene {
+
+// The path kernels include the compiled scene by.
+inline constexpr const char* kGeneratedScenePath = "scene/generated.h";
+
+// OpenCL build options for scene kernels: correctly rounded division and square root, as on the
+// host, so the compiled field agrees with the host interpreter.
+inline constexpr const char* kSceneBuildOptions = "-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt";
+
+// Assembles `entry` (e.g. "kernels/scene_probe.cl") with the scene's source behind
+// "scene/generated.h". Throws lab::opencl::OpenClError for an include that resolves to nothing.
+opencl::AssembledSource assemble_scene_kernel(const std::string& entry, const CompiledScene& scene);
+
+}  // namespace lab::scene
