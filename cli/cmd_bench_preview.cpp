@@ -50,7 +50,7 @@ void render_for(ibl::PreviewRenderer& renderer, double seconds, Checkpoint check
 }
 
 void run_bench_preview(const BenchPreviewCommand& c) {
-    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be in (0, 3600]");
+    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
     if (!(c.reference_seconds >= c.seconds && c.reference_seconds <= 36000.0))
         throw InputError("--reference-seconds", "", "must be at least --seconds and at most 36000");
     if (!c.chart.empty()) film::check_output_path(c.chart);

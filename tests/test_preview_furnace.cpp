@@ -72,7 +72,9 @@ Render furnace(const lab::opencl::Runtime& runtime, const brdf::Material& materi
     lab::ibl::Environment env = lab::ibl::load_environment("constant:1,1,1");
     lab::ibl::PreviewSettings settings;
     settings.width = settings.height = 48;
-    settings.max_depth = 128;  // a white furnace never ends a path by roulette: only depth does
+    // A white furnace never ends a path by roulette, only by depth; between the core and the shell a
+    // path of albedo 1 can bounce hundreds of times before it finds the window.
+    settings.max_depth = 512;
     settings.sampling = sampling;
     settings.seed = seed;
     lab::ibl::PreviewRenderer renderer(runtime, scene, env, settings);

@@ -186,3 +186,58 @@ cli_bad_input(NAME report.no_preset_folder EXPECT "${E}tests/cli/nope: --presets
               ARGS report --presets tests/cli/nope -o ${CLI_SCRATCH}/report_none)
 cli_bad_input(NAME report.bad_preset_in_folder EXPECT "${E}${D}/malformed\\.json: roughness: malformed JSON: "
               ARGS report --presets ${D} -o ${CLI_SCRATCH}/report_bad)
+
+# --- preview: every kind of bad input stops before the first sample, and no image is written ----
+set(PREVIEW preview --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME preview.malformed_scene ABSENT ${PNG} EXPECT "${E}${D}/scene_malformed\\.json: objects\\[0\\]\\.shape: malformed JSON at line 6, column 3"
+              ARGS ${PREVIEW} --scene ${D}/scene_malformed.json)
+cli_bad_input(NAME preview.unknown_primitive ABSENT ${PNG} EXPECT "${E}${D}/scene_unknown_primitive\\.json: objects\\[0\\]\\.shape\\.type: unknown node type \"teapot\""
+              ARGS ${PREVIEW} --scene ${D}/scene_unknown_primitive.json)
+cli_bad_input(NAME preview.missing_scene_preset ABSENT ${PNG} EXPECT "${E}${D}/scene_missing_preset\\.json: materials\\.sample: preset file \"absent_preset\\.json\" not found"
+              ARGS ${PREVIEW} --scene ${D}/scene_missing_preset.json)
+cli_bad_input(NAME preview.negative_radius ABSENT ${PNG} EXPECT "${E}${D}/scene_negative_radius\\.json: objects\\[0\\]\\.shape\\.radius: value -1 must be > 0$"
+              ARGS ${PREVIEW} --scene ${D}/scene_negative_radius.json)
+cli_bad_input(NAME preview.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_scene\\.json: "
+              ARGS ${PREVIEW} --scene ${D}/absent_scene.json)
+cli_bad_input(NAME preview.missing_material ABSENT ${PNG} EXPECT "${E}${D}/absent\\.json: cannot open preset file$"
+              ARGS ${PREVIEW} --material ${D}/absent.json)
+cli_bad_input(NAME preview.bad_material ABSENT ${PNG} EXPECT "${E}${D}/out_of_range\\.json: ior: value 4 is out of range \\[1, 3\\]$"
+              ARGS ${PREVIEW} --material ${D}/out_of_range.json)
+cli_bad_input(NAME preview.missing_env ABSENT ${PNG} EXPECT "${E}${D}/absent\\.exr: no such file$"
+              ARGS ${PREVIEW} --env ${D}/absent.exr)
+cli_bad_input(NAME preview.corrupt_env ABSENT ${PNG} EXPECT "${E}${D}/corrupt\\.exr: cannot be read as an OpenEXR or Radiance HDR image"
+              ARGS ${PREVIEW} --env ${D}/corrupt.exr)
+cli_bad_input(NAME preview.bad_constant_env ABSENT ${PNG} EXPECT "${E}--env: "
+              ARGS ${PREVIEW} --env constant:1,nan,1)
+cli_bad_input(NAME preview.zero_size ABSENT ${PNG} EXPECT "${E}--size: 0x16 is outside 1 \\.\\. 16384 pixels a side$"
+              ARGS preview --spp 1 -o ${PNG} --size 0x16)
+cli_bad_input(NAME preview.absurd_size ABSENT ${PNG} EXPECT "${E}--size: 100000x100000 is outside 1 \\.\\. 16384 pixels a side$"
+              ARGS preview --spp 1 -o ${PNG} --size 100000x100000)
+cli_bad_input(NAME preview.size_text ABSENT ${PNG} EXPECT "${E}--size: expected WIDTHxHEIGHT, e\\.g\\. 512x512, got \"big\"$"
+              ARGS preview --spp 1 -o ${PNG} --size big)
+cli_bad_input(NAME preview.zero_spp ABSENT ${PNG} EXPECT "${E}--spp: must be in \\[1, 16777216\\]$"
+              ARGS preview --size 16x16 -o ${PNG} --spp 0)
+cli_bad_input(NAME preview.nan_exposure ABSENT ${PNG} EXPECT "${E}--env-exposure: value nan is outside"
+              ARGS ${PREVIEW} --env-exposure nan)
+cli_bad_input(NAME preview.unknown_sampling ABSENT ${PNG} EXPECT "${E}--ibl-sampling: unknown value \"light\" \\(brdf, env, mis\\)$"
+              ARGS ${PREVIEW} --ibl-sampling light)
+cli_bad_input(NAME preview.unknown_normals ABSENT ${PNG} EXPECT "${E}--normals: unknown value \"sobel\" \\(tetrahedral, central, analytic\\)$"
+              ARGS ${PREVIEW} --normals sobel)
+cli_bad_input(NAME preview.ground_word ABSENT ${PNG} EXPECT "${E}--ground: expected on or off, got \"maybe\"$"
+              ARGS ${PREVIEW} --ground maybe)
+cli_bad_input(NAME preview.unknown_tonemap ABSENT ${PNG} EXPECT "${E}--tonemap: unknown tone map \"filmic\""
+              ARGS ${PREVIEW} --tonemap filmic)
+cli_bad_input(NAME preview.output_extension EXPECT "${E}${CLI_SCRATCH}/preview\\.jpg: "
+              ARGS preview --size 16x16 --spp 1 -o ${CLI_SCRATCH}/preview.jpg)
+cli_bad_input(NAME preview.output_folder EXPECT "${E}${CLI_SCRATCH}/absent_folder/preview\\.exr: "
+              ARGS preview --size 16x16 --spp 1 -o ${CLI_SCRATCH}/absent_folder/preview.exr)
+cli_bad_input(NAME preview.no_device ABSENT ${PNG} EXPECT "${E}no OpenCL device matches \"no-such-device\""
+              ARGS ${PREVIEW} --device no-such-device)
+cli_bad_input(NAME bench_preview.bad_seconds EXPECT "${E}--seconds: must be more than 0 and at most 3600$"
+              ARGS bench preview --seconds 0)
+
+# --- preview writes a linear EXR with its metadata and an sRGB PNG beside it --------------------
+add_test(NAME cli.preview.writes_exr_and_png
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/preview_output -DSOURCE=${PROJECT_SOURCE_DIR}
+                 -P ${CLI_TEST_DIR}/expect_preview_output.cmake)
+set_tests_properties(cli.preview.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT 120)

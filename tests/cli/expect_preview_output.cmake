@@ -1,0 +1,40 @@
+# cmake -P driver: `dtoadq preview` run in an empty folder WORK (the test model is built in, the
+# preset and environment come from SOURCE) writes a linear OpenEXR whose header carries the render's
+# metadata and an sRGB PNG beside it; `--time` renders until the time is up, then writes as well.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+function(run)
+  execute_process(COMMAND ${EXE} ${ARGN} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${EXE} ${ARGN}\nstatus ${status}\n${out}\n${err}")
+  endif()
+endfunction()
+
+function(expect_magic file hex)
+  if(NOT EXISTS ${WORK}/${file})
+    message(FATAL_ERROR "${file} was not written")
+  endif()
+  string(LENGTH ${hex} digits)
+  math(EXPR bytes "${digits} / 2")
+  file(READ ${WORK}/${file} magic LIMIT ${bytes} HEX)
+  if(NOT magic STREQUAL hex)
+    message(FATAL_ERROR "${file} does not start with ${hex} (got ${magic})")
+  endif()
+endfunction()
+
+run(preview --material ${SOURCE}/presets/gold.json --env ${SOURCE}/envmaps/studio.exr --spp 4 --size 48x32 --seed 3 --quiet -o out.exr)
+expect_magic(out.exr 762f3101)
+expect_magic(out.png 89504e470d0a1a0a)
+find_program(OIIOTOOL oiiotool REQUIRED)
+execute_process(COMMAND ${OIIOTOOL} --info -v out.exr WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE info)
+foreach(expected "48 x   32, 3 channel, float" "dtoadq:spp: 4" "dtoadq:material: \"gold\"" "dtoadq:environment: \".*studio.exr\""
+                 "dtoadq:ibl_sampling: \"mis\"" "dtoadq:seed: \"3\"" "dtoadq:nonfinite_samples: \"0\"" "dtoadq:seconds: ")
+  if(NOT info MATCHES "${expected}")
+    message(FATAL_ERROR "out.exr's header lacks '${expected}':\n${info}")
+  endif()
+endforeach()
+
+run(preview --env constant:0.5,0.5,0.5 --time 1 --size 32x32 --quiet -o timed.png)
+expect_magic(timed.png 89504e470d0a1a0a)
+message(STATUS "ok")
