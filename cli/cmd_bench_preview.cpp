@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "cli/preview_options.hpp"
+#include "cli/preview_job.hpp"
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "film/image_stats.hpp"

@@ -4,9 +4,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -15,10 +12,9 @@
 
 #include "brdf/host/preset.hpp"
 #include "cli/commands.hpp"
-#include "cli/preview_options.hpp"
+#include "cli/preview_job.hpp"
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
-#include "film/progress_bar.hpp"
 #include "film/tone_map.hpp"
 #include "ibl/environment.hpp"
 #include "ibl/preview_renderer.hpp"
@@ -29,9 +25,6 @@ namespace lab::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) { g_interrupted = true; }
 
 struct PreviewCommand {
     PreviewJobOptions job;
@@ -81,41 +74,20 @@ void run_preview(const PreviewCommand& c) {
                     renderer.build_seconds());
     for (const std::string& w : job.warnings) std::fprintf(stderr, "dtoadq: note: %s\n", w.c_str());
 
-    bool timed = c.time_seconds > 0.0;
-    int target = timed && !c.spp_given ? (1 << 24) : c.spp;
-    film::ProgressOptions progress_options;
-    progress_options.quiet = c.quiet;
-    film::ProgressBar progress(timed ? film::ProgressMode::Time : film::ProgressMode::Samples, timed ? c.time_seconds : double(target),
-                               double(job.settings.width) * job.settings.height, progress_options);
-    g_interrupted = false;
-    auto previous = std::signal(SIGINT, on_interrupt);
-    // Launch sizes grow while a launch takes under a quarter second: fewer launches, a live bar.
-    int done = 0;
-    while (done < target && !g_interrupted) {
-        if (timed && progress.elapsed_seconds() >= c.time_seconds) break;
-        int n = std::min(renderer.samples_per_launch(), target - done);
-        auto start = std::chrono::steady_clock::now();
-        renderer.add_samples(n);
-        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        done += n;
-        progress.update(done);
-        if (seconds < 0.25 / 2) renderer.set_samples_per_launch(renderer.samples_per_launch() * 2);
-        if (timed) {  // do not start a launch that would end well past the time
-            double per_sample = seconds / n, left = c.time_seconds - progress.elapsed_seconds();
-            int fit = int(left / per_sample);
-            if (fit < renderer.samples_per_launch()) renderer.set_samples_per_launch(std::max(1, fit));
-        }
-    }
-    std::signal(SIGINT, previous);
-    progress.finish();
-
+    RenderLimits limits;
+    limits.samples = c.spp;
+    limits.samples_given = c.spp_given;
+    limits.seconds = c.time_seconds;
+    limits.quiet = c.quiet;
+    bool interrupted = render_progressively(renderer, limits);
     ibl::PreviewStatistics stats = renderer.statistics();
     film::ImageMetadata metadata = preview_metadata(job, stats, runtime.device().description());
     metadata.set("tonemap", c.tone_map);
     metadata.set("exposure", c.exposure);
     write_outputs(c, renderer.image(), tone_map, metadata);
     print_preview_statistics(stats, c.quiet);
-    if (g_interrupted) std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", done);
+    if (interrupted)
+        std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);
 }
 
 }  // namespace

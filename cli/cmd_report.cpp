@@ -1,5 +1,6 @@
 // dtoadq report: the lab's main job on a folder of presets — overlaid lobe plots per group of
-// materials, the albedo chart of all of them, and the validation table — written to one folder.
+// materials, the albedo chart of all of them, the validation table, and a path-traced preview of
+// each on the test model under an HDR environment — written to one folder.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -11,8 +12,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "cli/preview_job.hpp"
 #include "cli/report_groups.hpp"
 #include "common/input_error.hpp"
+#include "film/image_output.hpp"
+#include "opencl/runtime.hpp"
 #include "plots/albedo_chart.hpp"
 #include "plots/lobe_plot.hpp"
 #include "plots/output_file.hpp"
@@ -28,10 +32,50 @@ struct ReportOptions {
     std::string presets = "presets";
     std::vector<float> thetas{30.0f, 60.0f};
     long chi_square_samples = 1000000;
+    bool preview = true;
+    std::string env = "envmaps/courtyard.exr";
+    std::string preview_size = "256x256";
+    int preview_spp = 64;
+    std::string device;
 };
+
+// One preview per preset, each its own kernel (a preset's kernel holds only the lobes it uses).
+std::vector<std::string> write_previews(const ReportOptions& o, const std::vector<brdf::Preset>& presets, const fs::path& out) {
+    std::vector<std::string> written;
+    opencl::Runtime runtime(o.device);
+    for (const brdf::Preset& p : presets) {
+        PreviewJobOptions job_options;
+        job_options.material = p.source;
+        job_options.env = o.env;
+        job_options.size = o.preview_size;
+        job_options.device = o.device;
+        PreviewJob job = prepare_preview_job(job_options);
+        std::string name = "preview_" + fs::path(p.source).stem().string();
+        std::printf("report: preview of %s -> %s.png\n", p.name.c_str(), (out / name).c_str());
+        std::fflush(stdout);
+        ibl::PreviewRenderer renderer(runtime, job.scene, job.environment, job.settings);
+        RenderLimits limits;
+        limits.samples = o.preview_spp;
+        limits.quiet = true;
+        render_progressively(renderer, limits);
+        ibl::PreviewStatistics stats = renderer.statistics();
+        film::ImageMetadata metadata = preview_metadata(job, stats, runtime.device().description());
+        film::ImageRgb image = renderer.image();
+        film::write_exr((out / (name + ".exr")).string(), image, metadata);
+        film::write_png((out / (name + ".png")).string(), image, film::ToneMap::Aces, 0.0f, metadata);
+        print_preview_statistics(stats, true);  // only the warnings
+        written.push_back(name + ".png");
+    }
+    return written;
+}
 
 void run_report(const ReportOptions& o) {
     std::vector<brdf::Preset> presets = load_preset_folder(o.presets, "--presets");
+    int width = 0, height = 0;
+    parse_image_size(o.preview_size, "--preview-size", &width, &height);
+    if (o.preview_spp < 1 || o.preview_spp > 1 << 20) throw InputError("--preview-spp", "", "must be in [1, 1048576]");
+    if (o.preview && !fs::exists(o.env) && o.env.rfind("constant:", 0) != 0)
+        throw InputError(o.env, "", "no such file (--env; run from the repository root, or pass --env)");
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");
@@ -52,6 +96,11 @@ void run_report(const ReportOptions& o) {
     plots::write_albedo_chart(presets, (out / "albedo.png").string(), (out / "albedo.csv").string());
     written.push_back("albedo.png");
     written.push_back("albedo.csv");
+
+    if (o.preview) {
+        std::vector<std::string> previews = write_previews(o, presets, out);
+        written.insert(written.end(), previews.begin(), previews.end());
+    }
 
     validation::ValidationOptions options;
     options.chi_square_samples = o.chi_square_samples;
@@ -92,6 +141,11 @@ void register_report(CLI::App& app) {
     cmd->add_option("--presets", options->presets, "Folder of material presets (JSON)")->capture_default_str();
     cmd->add_option("--theta-in", options->thetas, "Incident angles of the lobe plots, degrees")->capture_default_str();
     cmd->add_option("--samples", options->chi_square_samples, "Samples per chi-square test")->capture_default_str();
+    cmd->add_option("--env", options->env, "Environment of the previews: .exr/.hdr or constant:R,G,B")->capture_default_str();
+    cmd->add_option("--preview-size", options->preview_size, "Preview image size WxH")->capture_default_str();
+    cmd->add_option("--preview-spp", options->preview_spp, "Preview samples per pixel")->capture_default_str();
+    cmd->add_flag("!--no-preview", options->preview, "Skip the path-traced previews");
+    cmd->add_option("--device", options->device, "OpenCL device of the previews (dtoadq devices lists them)");
     cmd->callback([options] { run_report(*options); });
 }
 

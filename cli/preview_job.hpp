@@ -1,4 +1,4 @@
-// What `preview` and `bench preview` share: the options that choose the scene, material,
+// What `preview`, `report` and `bench preview` share: the options that choose the scene, material,
 // environment and sampling, turned into a ready job; and the metadata and statistics they print.
 #pragma once
 
@@ -48,6 +48,19 @@ PreviewJob prepare_preview_job(const PreviewJobOptions& options);
 void parse_image_size(const std::string& text, const std::string& option, int* width, int* height);
 
 film::ImageMetadata preview_metadata(const PreviewJob& job, const ibl::PreviewStatistics& stats, const std::string& device);
+
+// When a progressive render stops: after `samples` per pixel, or when `seconds` (> 0) have passed
+// (then `samples` caps it only when given).
+struct RenderLimits {
+    int samples = 64;
+    bool samples_given = false;
+    double seconds = 0.0;
+    bool quiet = false;  // no progress bar
+};
+
+// Adds samples until a limit is reached or the user interrupts (Ctrl-C ends the current launch and
+// returns true, so the caller writes the image so far), with a progress bar on stderr.
+bool render_progressively(ibl::PreviewRenderer& renderer, const RenderLimits& limits);
 
 // Samples, time, paths/s, rays/s and rays that ran out of steps; non-finite samples, if any, on
 // stderr as a warning even when quiet (they are never silently dropped).

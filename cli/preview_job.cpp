@@ -1,12 +1,17 @@
-#include "cli/preview_options.hpp"
+#include "cli/preview_job.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
 
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
+#include "film/progress_bar.hpp"
 #include "ibl/preview_scene.hpp"
 
 namespace lab::cli {
@@ -129,6 +134,43 @@ film::ImageMetadata preview_metadata(const PreviewJob& job, const ibl::PreviewSt
     m.set("nonfinite_samples", std::to_string(stats.nonfinite_samples));
     m.set("lost_rays", std::to_string(stats.lost_rays));
     return m;
+}
+
+namespace {
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+}  // namespace
+
+bool render_progressively(ibl::PreviewRenderer& renderer, const RenderLimits& limits) {
+    bool timed = limits.seconds > 0.0;
+    int target = timed && !limits.samples_given ? (1 << 24) : limits.samples;
+    film::ProgressOptions progress_options;
+    progress_options.quiet = limits.quiet;
+    const ibl::PreviewSettings& settings = renderer.settings();
+    film::ProgressBar progress(timed ? film::ProgressMode::Time : film::ProgressMode::Samples, timed ? limits.seconds : double(target),
+                               double(settings.width) * settings.height, progress_options);
+    g_interrupted = false;
+    auto previous = std::signal(SIGINT, on_interrupt);
+    int done = 0;
+    while (done < target && !g_interrupted) {
+        if (timed && progress.elapsed_seconds() >= limits.seconds) break;
+        int n = std::min(renderer.samples_per_launch(), target - done);
+        auto start = std::chrono::steady_clock::now();
+        renderer.add_samples(n);
+        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        done += n;
+        progress.update(done);
+        // Launches grow while they take under an eighth of a second: fewer launches, a live bar.
+        if (seconds < 0.125) renderer.set_samples_per_launch(renderer.samples_per_launch() * 2);
+        if (timed) {  // do not start a launch that would end well past the time
+            double per_sample = seconds / n, left = limits.seconds - progress.elapsed_seconds();
+            int fit = int(left / per_sample);
+            if (fit < renderer.samples_per_launch()) renderer.set_samples_per_launch(std::max(1, fit));
+        }
+    }
+    std::signal(SIGINT, previous);
+    progress.finish();
+    return g_interrupted;
 }
 
 void print_preview_statistics(const ibl::PreviewStatistics& s, bool quiet) {
