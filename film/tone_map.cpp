@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/input_error.hpp"
+#include "common/luminance.hpp"
 
 namespace lab::film {
 
@@ -34,7 +35,7 @@ const char* tone_map_name(ToneMap tone_map) {
     return "?";
 }
 
-float luminance(float r, float g, float b) { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
+float luminance(float r, float g, float b) { return lab::luminance(r, g, b); }
 
 float aces_narkowicz(float x) {
     const float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;

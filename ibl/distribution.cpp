@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/luminance.hpp"
 #include "ibl/ibl.hpp"
 
 namespace lab::ibl {
@@ -33,7 +34,7 @@ double texel_solid_angle(int face_size, int i, int j) {
     return face_rectangle_solid_angle(-1.0 + i * step, -1.0 + (i + 1) * step, -1.0 + j * step, -1.0 + (j + 1) * step);
 }
 
-double luminance(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
+double luminance(double r, double g, double b) { return lab::luminance(r, g, b); }
 
 CubemapDistribution build_cubemap_distribution(const std::vector<brdf::float4>& texels, int face_size) {
     const int n = face_size;

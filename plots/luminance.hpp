@@ -2,9 +2,10 @@
 #pragma once
 
 #include "brdf/brdf.hpp"
+#include "common/luminance.hpp"
 
 namespace lab::plots {
 
-inline float luminance(brdf::float3 rgb) { return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z; }
+inline float luminance(brdf::float3 rgb) { return lab::luminance(rgb.x, rgb.y, rgb.z); }
 
 }  // namespace lab::plots
