@@ -241,3 +241,17 @@ add_test(NAME cli.preview.writes_exr_and_png
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/preview_output -DSOURCE=${PROJECT_SOURCE_DIR}
                  -P ${CLI_TEST_DIR}/expect_preview_output.cmake)
 set_tests_properties(cli.preview.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT 120)
+
+# --- no OpenCL platform at all: the ICD loader is pointed at an empty vendor folder ---------------
+file(MAKE_DIRECTORY ${CLI_SCRATCH}/no_icd_vendors)
+set(NO_PLATFORM_ARGS_devices "devices")
+set(NO_PLATFORM_ARGS_preview "preview|--size|8x8|--spp|1|-o|${CLI_SCRATCH}/no_platform.exr")
+foreach(command devices preview)
+  add_test(NAME cli.${command}.no_opencl_platform
+           COMMAND ${CMAKE_COMMAND} -E env OCL_ICD_VENDORS=${CLI_SCRATCH}/no_icd_vendors
+                   ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${NO_PLATFORM_ARGS_${command}}" -DABSENT=${CLI_SCRATCH}/no_platform.exr
+                   "-DEXPECT=${E}no OpenCL device found: no platform reports a device \\(is an OpenCL driver such as pocl-opencl-icd installed\\?\\)$"
+                   -P ${CLI_TEST_DIR}/expect_error.cmake
+           WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.${command}.no_opencl_platform PROPERTIES LABELS cli TIMEOUT 60)
+endforeach()
