@@ -66,6 +66,7 @@ void run_preview(const PreviewCommand& c) {
     film::ToneMap tone_map = film::parse_tone_map(c.tone_map);
     if (!(c.time_seconds >= 0.0) || c.time_seconds > 1e6) throw InputError("--time", "", "must be in [0, 1e6] seconds");
     if (c.spp < 1 || c.spp > 1 << 24) throw InputError("--spp", "", "must be in [1, 16777216]");
+    if (!(c.exposure >= -64.0f && c.exposure <= 64.0f)) throw InputError("--exposure", "", "must be a number of stops in [-64, 64]");
     PreviewJob job = prepare_preview_job(c.job);
     opencl::Runtime runtime(c.job.device);
     ibl::PreviewRenderer renderer(runtime, job.scene, job.environment, job.settings);

@@ -40,7 +40,7 @@ TEST_CASE("Philox4x32-10 matches Random123's known-answer vectors", "[rng]") {
     CHECK(pi.v[3] == 0x24126ea1u);
 }
 
-TEST_CASE("Random floats are uniform in [0, 1) and streams are independent", "[rng]") {
+TEST_CASE("Random floats are uniform below 1 and streams are independent", "[rng]") {
     // 64 bins over [0, 1) from 256 pixels x 64 samples x 4 draws x 4 numbers: chi-square with 63
     // degrees of freedom; 130 is beyond its 1e-6 quantile.
     const int bins = 64;

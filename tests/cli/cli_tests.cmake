@@ -219,6 +219,8 @@ cli_bad_input(NAME preview.zero_spp ABSENT ${PNG} EXPECT "${E}--spp: must be in 
               ARGS preview --size 16x16 -o ${PNG} --spp 0)
 cli_bad_input(NAME preview.nan_exposure ABSENT ${PNG} EXPECT "${E}--env-exposure: value nan is outside"
               ARGS ${PREVIEW} --env-exposure nan)
+cli_bad_input(NAME preview.nan_tonemap_exposure ABSENT ${PNG} EXPECT "${E}--exposure: must be a number of stops in \\[-64, 64\\]$"
+              ARGS ${PREVIEW} --exposure nan)
 cli_bad_input(NAME preview.unknown_sampling ABSENT ${PNG} EXPECT "${E}--ibl-sampling: unknown value \"light\" \\(brdf, env, mis\\)$"
               ARGS ${PREVIEW} --ibl-sampling light)
 cli_bad_input(NAME preview.unknown_normals ABSENT ${PNG} EXPECT "${E}--normals: unknown value \"sobel\" \\(tetrahedral, central, analytic\\)$"
