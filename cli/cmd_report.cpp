@@ -20,6 +20,7 @@
 #include "plots/albedo_chart.hpp"
 #include "plots/lobe_plot.hpp"
 #include "plots/output_file.hpp"
+#include "plots/preview_sheet.hpp"
 #include "validation/report.hpp"
 
 namespace fs = std::filesystem;
@@ -42,6 +43,7 @@ struct ReportOptions {
 // One preview per preset, each its own kernel (a preset's kernel holds only the lobes it uses).
 std::vector<std::string> write_previews(const ReportOptions& o, const std::vector<brdf::Preset>& presets, const fs::path& out) {
     std::vector<std::string> written;
+    std::vector<plots::SheetImage> sheet;
     opencl::Runtime runtime(o.device);
     for (const brdf::Preset& p : presets) {
         PreviewJobOptions job_options;
@@ -65,7 +67,12 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
         film::write_png((out / (name + ".png")).string(), image, film::ToneMap::Aces, 0.0f, metadata);
         print_preview_statistics(stats, true);  // only the warnings
         written.push_back(name + ".png");
+        sheet.push_back({p.name, (out / (name + ".png")).string()});
     }
+    std::printf("report: preview sheet -> %s\n", (out / "previews.png").c_str());
+    plots::write_preview_sheet(sheet, "Presets on the test model under " + fs::path(o.env).filename().string() + ", " +
+                                          std::to_string(o.preview_spp) + " spp", (out / "previews.png").string());
+    written.insert(written.begin(), "previews.png");
     return written;
 }
 

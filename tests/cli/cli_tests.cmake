@@ -178,6 +178,10 @@ cli_output_test(albedo.writes_png_and_csv 46 albedo.png albedo.csv
                 albedo --material ${PROJECT_SOURCE_DIR}/presets/gold.json --strata 16 -o albedo.png --csv albedo.csv)
 
 # --- validate and report ---------------------------------------------------------------------------
+# the main job, small: every preset's lobes, albedo, validation and preview, and the preview sheet
+cli_output_test(report.writes_everything 40 report/previews.png|report/albedo.png|report/preview_gold.png report/albedo.csv
+                report --presets ${PROJECT_SOURCE_DIR}/presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
+                --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96)
 cli_bad_input(NAME validate.missing_preset EXPECT "${E}${D}/absent\\.json: cannot open preset file$"
               ARGS validate --material ${D}/absent.json)
 cli_bad_input(NAME validate.too_few_samples EXPECT "${E}command line: --samples: "
