@@ -111,7 +111,7 @@ TEST_CASE("EXR round trip: every float exactly, NaN and infinity kept, metadata 
     CHECK(scratch.files() == std::vector<std::string>{"out.exr"});  // no temporary left
 }
 
-TEST_CASE("PNG round trip: the same 8-bit values, sRGB decoded; metadata as text", "[film]") {
+TEST_CASE("PNG round trip: the same 8-bit values, sRGB decoded - metadata as text", "[film]") {
     Scratch scratch;
     ImageRgb image = noise(9, 4, 2);
     for (float& v : image.rgb) v *= 0.25f;  // [0, 1]: Clamp is then the identity

@@ -103,7 +103,7 @@ TEST_CASE("in a log a time-limited render also prints its final state", "[film]"
     CHECK(lines[9] == "[###################-]  9.8/10.0 s  13 spp  133 paths/s");
 }
 
-TEST_CASE("on a terminal the line is redrawn in place, at most every interval; quiet prints nothing", "[film]") {
+TEST_CASE("on a terminal the line is redrawn in place, at most every interval - quiet prints nothing", "[film]") {
     double now = 0.0;
     std::ostringstream screen;
     lab::film::ProgressOptions options;

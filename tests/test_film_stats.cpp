@@ -9,7 +9,7 @@
 
 using lab::film::ImageRgb;
 
-TEST_CASE("means are per channel over finite pixels; non-finite pixels are counted", "[film]") {
+TEST_CASE("means are per channel over finite pixels - non-finite pixels are counted", "[film]") {
     ImageRgb image(2, 2);
     image.set(0, 0, 1.0f, 2.0f, 3.0f);
     image.set(1, 0, 3.0f, 0.0f, 1.0f);
@@ -51,7 +51,7 @@ TEST_CASE("RMSE per channel, its mean, and relative to the reference's mean", "[
     CHECK(std::isinf(lab::film::image_error(grey, ImageRgb(1, 1)).relative_rmse[0]));
 }
 
-TEST_CASE("a NaN shows in the error; images of different sizes are refused", "[film]") {
+TEST_CASE("a NaN shows in the error - images of different sizes are refused", "[film]") {
     ImageRgb reference(3, 2), image(3, 2);
     image.set(2, 1, 0.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f);
     lab::film::ImageError e = lab::film::image_error(image, reference);

@@ -85,7 +85,7 @@ TEST_CASE("Reinhard: L / (1 + L) on the luminance, as a scale of the colour", "[
     CHECK(black[0] == 0.0f);
 }
 
-TEST_CASE("exposure: +1 stop doubles, -1 halves, before the curve; negatives are black", "[film]") {
+TEST_CASE("exposure: +1 stop doubles, -1 halves, before the curve - negatives are black", "[film]") {
     auto clamp_up = mapped(0.2f, 0.1f, 0.3f, ToneMap::Clamp, 1.0f);
     CHECK(clamp_up[0] == 0.4f);
     CHECK(clamp_up[1] == 0.2f);
@@ -103,7 +103,7 @@ TEST_CASE("exposure: +1 stop doubles, -1 halves, before the curve; negatives are
     CHECK(huge[2] == 1.0f);
 }
 
-TEST_CASE("to_srgb8: tone map then sRGB then 8 bits; non-finite pixels are magenta", "[film]") {
+TEST_CASE("to_srgb8: tone map then sRGB then 8 bits - non-finite pixels are magenta", "[film]") {
     lab::film::ImageRgb image(3, 2);
     image.set(0, 0, 0.0f, 0.5f, 1.0f);
     image.set(1, 0, std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f);

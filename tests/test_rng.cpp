@@ -77,7 +77,7 @@ TEST_CASE("Random floats are uniform below 1 and streams are independent", "[rng
     CHECK(std::fabs(corr) < 5.0 / std::sqrt(double(pairs)));  // 5 standard errors of a zero correlation
 }
 
-TEST_CASE("The same pixel, sample and seed give the same numbers; another seed does not", "[rng]") {
+TEST_CASE("The same pixel, sample and seed give the same numbers - another seed does not", "[rng]") {
     rng::Rng a = rng::rng_make(17, 3, 99u, 0u), b = rng::rng_make(17, 3, 99u, 0u), c = rng::rng_make(17, 3, 100u, 0u);
     rng::float4 x = rng::rng_next4(&a), y = rng::rng_next4(&b), z = rng::rng_next4(&c);
     CHECK(x == y);

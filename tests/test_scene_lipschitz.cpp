@@ -60,7 +60,7 @@ TEST_CASE("scene lipschitz: the numerical estimate stays within every scene's de
     }
 }
 
-TEST_CASE("scene lipschitz: the shader ball is 1-Lipschitz; a displaced scene declares more and says so", "[scene]") {
+TEST_CASE("scene lipschitz: the shader ball is 1-Lipschitz - a displaced scene declares more and says so", "[scene]") {
     lab::scene::CompiledScene ball = lab::scene::compile_scene(lab::scene::load_scene("scenes/shader_ball.json"));
     CHECK(ball.lipschitz == 1.0f);
     CHECK(ball.is_distance_bound);
