@@ -129,6 +129,10 @@ brdf::float3 Environment::radiance(brdf::float3 direction) const {
     return ::ibl::environment_radiance(&map_, texels_.data(), direction);
 }
 
+brdf::float3 Environment::radiance_filtered(brdf::float3 direction) const {
+    return ::ibl::environment_radiance_filtered(&map_, texels_.data(), direction);
+}
+
 brdf::float3 Environment::sample(float u1, float u2, float* pdf) const {
     return ::ibl::environment_sample(&map_, marginal_cdf_.data(), conditional_cdf_.data(), u1, u2, pdf);
 }

@@ -48,6 +48,28 @@ BRDF_FN float3 environment_radiance(const EnvironmentMap* env, GLOBAL_MEM const 
     return make_float3(t.x, t.y, t.z) * env->intensity;
 }
 
+/* The same, filtered: bilinear between the four texel centres nearest to the direction on its
+ * face (clamped at the face's edges). For what the eye sees directly or through mirrors, where a
+ * face of a few hundred texels would show blocks. Nothing but the path itself estimates those
+ * rays, so the filter changes no MIS weight; the lighting of rough surfaces keeps
+ * environment_radiance, the piecewise-constant function whose pdf the sampler matches. */
+BRDF_FN float3 environment_radiance_filtered(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
+    int n = env->face_size;
+    float a, b;
+    int face = cubemap_face(environment_to_local(env, direction), &a, &b);
+    /* texel centres sit at integer x, y */
+    float x = fmin(fmax((a + 1.0f) * 0.5f * (float)n - 0.5f, 0.0f), (float)(n - 1));
+    float y = fmin(fmax((b + 1.0f) * 0.5f * (float)n - 0.5f, 0.0f), (float)(n - 1));
+    int i0 = (int)floor(x), j0 = (int)floor(y);
+    int i1 = min(i0 + 1, n - 1), j1 = min(j0 + 1, n - 1);
+    float fx = x - (float)i0, fy = y - (float)j0;
+    int row0 = (face * n + j0) * n, row1 = (face * n + j1) * n;
+    float4 top = mix(texels[row0 + i0], texels[row0 + i1], fx);
+    float4 bottom = mix(texels[row1 + i0], texels[row1 + i1], fx);
+    float4 t = mix(top, bottom, fy);
+    return make_float3(t.x, t.y, t.z) * env->intensity;
+}
+
 /* Solid-angle density of a point (a, b) of a texel drawn with probability `probability`, the point
  * uniform in the texel's square of area (2/N)^2 in face coordinates: the area density
  * probability / (2/N)^2 times dA/d(omega) = (1 + a^2 + b^2)^(3/2) (ibl/cubemap.h). */

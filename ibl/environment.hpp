@@ -42,6 +42,7 @@ public:
 
     // The single-source functions of ibl/environment.h on this environment (world directions).
     brdf::float3 radiance(brdf::float3 direction) const;
+    brdf::float3 radiance_filtered(brdf::float3 direction) const;
     brdf::float3 sample(float u1, float u2, float* pdf) const;
     float pdf(brdf::float3 direction) const;
 

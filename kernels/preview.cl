@@ -72,6 +72,11 @@ static float3 environment_from(const EnvironmentMap* env, EnvironmentBuffers buf
     return environment_radiance(env, buffers.texels, direction);
 }
 
+/* What the camera sees directly or through mirrors only: filtered, so the backdrop shows no texels. */
+static float3 environment_seen(const EnvironmentMap* env, EnvironmentBuffers buffers, float3 direction) {
+    return environment_radiance_filtered(env, buffers.texels, direction);
+}
+
 /* Next-event estimation of the environment at a surface point: one environment sample, its shadow
  * ray, and the BSDF there. Returns the contribution before the path throughput. */
 static float3 sample_environment_light(const PreviewSettings* s, const EnvironmentMap* env, EnvironmentBuffers buffers,
@@ -98,6 +103,7 @@ static float3 trace_path(const PreviewSettings* s, const EnvironmentMap* env, En
     float3 throughput = float3_splat(1.0f);
     float previous_pdf = 0.0f;
     bool previous_delta = true; /* the camera ray: nothing else could have found what it sees */
+    bool seen_directly = true;  /* the camera ray, or only delta events since */
     bool inside = scene_distance(origin) < 0.0f; /* in a solid: only transmission gets a ray there */
     for (int depth = 0;; ++depth) {
         MarchResult hit = march(origin, direction, 0.0f, s->march);
@@ -108,7 +114,9 @@ static float3 trace_path(const PreviewSettings* s, const EnvironmentMap* env, En
             if (!previous_delta && s->k.strategy == IBL_SAMPLING_ENV) weight = 0.0f;
             if (!previous_delta && s->k.strategy == IBL_SAMPLING_MIS)
                 weight = mis_power_heuristic(previous_pdf, environment_pdf(env, buffers.marginal_cdf, buffers.conditional_cdf, direction));
-            if (weight > 0.0f) radiance += throughput * environment_from(env, buffers, direction) * weight;
+            if (weight > 0.0f)
+                radiance += throughput * weight *
+                            (seen_directly ? environment_seen(env, buffers, direction) : environment_from(env, buffers, direction));
             break;
         }
         float3 p = origin + direction * hit.t;
@@ -139,6 +147,7 @@ static float3 trace_path(const PreviewSettings* s, const EnvironmentMap* env, En
         throughput *= b.f * (fabs(b.wi.z) / b.pdf);
         previous_pdf = b.pdf;
         previous_delta = (b.flags & BSDF_DELTA) != 0;
+        seen_directly = seen_directly && previous_delta;
         if ((b.flags & BSDF_TRANSMISSION) != 0) inside = !inside;
         origin = offset_origin(p, frame.n, epsilon, b.wi.z);
         direction = frame_to_world(frame, b.wi);

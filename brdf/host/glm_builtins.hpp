@@ -64,6 +64,7 @@ inline uint max(uint a, uint b) { return a > b ? a : b; }
 // differently, so the host would not match the kernels.
 inline float mix(float x, float y, float a) { return x + (y - x) * a; }
 inline float3 mix(float3 x, float3 y, float a) { return x + (y - x) * a; }
+inline float4 mix(float4 x, float4 y, float a) { return x + (y - x) * a; }
 inline bool isfinite_f(float x) { return std::isfinite(x); }
 
 }  // namespace brdf
