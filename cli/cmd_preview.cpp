@@ -1,11 +1,8 @@
 // dtoadq preview: the image-based-lighting path-traced preview of a material on the test model (or
 // any scene) under an HDR environment, rendered progressively on OpenCL, written as a linear EXR
 // with its metadata and a tone-mapped sRGB PNG.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,7 +21,6 @@
 namespace lab::cli {
 namespace {
 
-namespace fs = std::filesystem;
 
 struct PreviewCommand {
     PreviewJobOptions job;
@@ -37,32 +33,10 @@ struct PreviewCommand {
     bool quiet = false;
 };
 
-// Where the PNG beside an EXR goes: same folder and stem.
-std::string png_beside(const std::string& exr) { return fs::path(exr).replace_extension(".png").string(); }
-
-// The output, or, when it cannot be written, a file in the temporary folder: a finished render is
-// never lost to a bad path. Returns where the EXR went.
-void write_outputs(const PreviewCommand& c, const film::ImageRgb& image, film::ToneMap tone_map, const film::ImageMetadata& metadata) {
-    bool exr = fs::path(c.output).extension() == ".exr" || fs::path(c.output).extension() == ".EXR";
-    try {
-        if (exr) {
-            film::write_exr(c.output, image, metadata);
-            film::write_png(png_beside(c.output), image, tone_map, c.exposure, metadata);
-        } else {
-            film::write_png(c.output, image, tone_map, c.exposure, metadata);
-        }
-    } catch (const InputError& e) {
-        fs::path rescue = fs::temp_directory_path() / ("dtoadq-preview-" + std::to_string(::getpid()) + ".exr");
-        film::write_exr(rescue.string(), image, metadata);
-        throw InputError(c.output, "", std::string("cannot write (") + e.what() + "); the render was saved to " + rescue.string());
-    }
-    std::printf("wrote %s%s\n", c.output.c_str(), exr ? (" and " + png_beside(c.output)).c_str() : "");
-}
-
 void run_preview(const PreviewCommand& c) {
     // Everything that can be wrong with the input is found before the first sample.
     film::check_output_path(c.output);
-    if (fs::path(c.output).extension() == ".exr" || fs::path(c.output).extension() == ".EXR") film::check_output_path(png_beside(c.output));
+    if (is_exr_path(c.output)) film::check_output_path(png_beside(c.output));
     film::ToneMap tone_map = film::parse_tone_map(c.tone_map);
     if (!(c.time_seconds >= 0.0) || c.time_seconds > 1e6) throw InputError("--time", "", "must be in [0, 1e6] seconds");
     if (c.spp < 1 || c.spp > 1 << 24) throw InputError("--spp", "", "must be in [1, 16777216]");
@@ -85,7 +59,8 @@ void run_preview(const PreviewCommand& c) {
     film::ImageMetadata metadata = preview_metadata(job, stats, runtime.device().description());
     metadata.set("tonemap", c.tone_map);
     metadata.set("exposure", c.exposure);
-    write_outputs(c, renderer.image(), tone_map, metadata);
+    write_preview_images(c.output, renderer.image(), tone_map, c.exposure, metadata);
+    std::printf("wrote %s%s\n", c.output.c_str(), is_exr_path(c.output) ? (" and " + png_beside(c.output)).c_str() : "");
     print_preview_statistics(stats, c.quiet);
     if (interrupted)
         std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);

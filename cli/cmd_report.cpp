@@ -15,7 +15,6 @@
 #include "cli/preview_job.hpp"
 #include "cli/report_groups.hpp"
 #include "common/input_error.hpp"
-#include "film/image_output.hpp"
 #include "opencl/runtime.hpp"
 #include "plots/albedo_chart.hpp"
 #include "plots/lobe_plot.hpp"
@@ -63,8 +62,7 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
         ibl::PreviewStatistics stats = renderer.statistics();
         film::ImageMetadata metadata = preview_metadata(job, stats, runtime.device().description());
         film::ImageRgb image = renderer.image();
-        film::write_exr((out / (name + ".exr")).string(), image, metadata);
-        film::write_png((out / (name + ".png")).string(), image, film::ToneMap::Aces, 0.0f, metadata);
+        write_preview_images((out / (name + ".exr")).string(), image, film::ToneMap::Aces, 0.0f, metadata);
         print_preview_statistics(stats, true);  // only the warnings
         written.push_back(name + ".png");
         sheet.push_back({p.name, (out / (name + ".png")).string()});

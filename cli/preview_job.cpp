@@ -1,5 +1,7 @@
 #include "cli/preview_job.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -11,6 +13,7 @@
 
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
+#include "film/image_output.hpp"
 #include "film/progress_bar.hpp"
 #include "ibl/preview_scene.hpp"
 
@@ -41,8 +44,8 @@ void parse_image_size(const std::string& text, const std::string& option, int* w
     if (!std::regex_match(text, m, pattern)) throw InputError(option, "", "expected WIDTHxHEIGHT, e.g. 512x512, got \"" + text + "\"");
     *width = std::stoi(m[1].str());
     *height = std::stoi(m[2].str());
-    if (*width < 1 || *height < 1 || *width > 16384 || *height > 16384)
-        throw InputError(option, "", text + " is outside 1 .. 16384 pixels a side");
+    if (*width < 1 || *height < 1 || *width > ibl::kMaxImageSide || *height > ibl::kMaxImageSide)
+        throw InputError(option, "", text + " is outside 1 .. " + std::to_string(ibl::kMaxImageSide) + " pixels a side");
 }
 
 namespace {
@@ -89,12 +92,10 @@ PreviewJob prepare_preview_job(const PreviewJobOptions& o) {
     parse_image_size(o.size, "--size", &settings.width, &settings.height);
     settings.sampling = ibl::parse_ibl_sampling(o.sampling);
     settings.normals = ibl::parse_normal_method(o.normals);
-    if (o.max_depth < 0 || o.max_depth > 1024) throw InputError("--max-depth", "", "must be in [0, 1024], got " + std::to_string(o.max_depth));
     settings.max_depth = o.max_depth;
-    if (o.max_steps < 1 || o.max_steps > 1 << 20) throw InputError("--max-steps", "", "must be in [1, 1048576], got " + std::to_string(o.max_steps));
     settings.max_steps = o.max_steps;
-    require_finite(o.over_relaxation, "--over-relaxation", 1.0f, 2.0f);
     settings.over_relaxation = o.over_relaxation;
+    ibl::check_preview_settings(settings);  // before anything is loaded
     require_finite(o.env_rotation, "--env-rotation", -36000.0f, 36000.0f);
     require_finite(o.env_exposure, "--env-exposure", -64.0f, 64.0f);
     settings.seed = o.seed;
@@ -134,6 +135,29 @@ film::ImageMetadata preview_metadata(const PreviewJob& job, const ibl::PreviewSt
     m.set("nonfinite_samples", std::to_string(stats.nonfinite_samples));
     m.set("lost_rays", std::to_string(stats.lost_rays));
     return m;
+}
+
+bool is_exr_path(const std::string& path) {
+    std::string extension = fs::path(path).extension().string();
+    return extension == ".exr" || extension == ".EXR";
+}
+
+std::string png_beside(const std::string& exr_path) { return fs::path(exr_path).replace_extension(".png").string(); }
+
+void write_preview_images(const std::string& output, const film::ImageRgb& image, film::ToneMap tone_map, float exposure_stops,
+                          const film::ImageMetadata& metadata) {
+    try {
+        if (is_exr_path(output)) {
+            film::write_exr(output, image, metadata);
+            film::write_png(png_beside(output), image, tone_map, exposure_stops, metadata);
+        } else {
+            film::write_png(output, image, tone_map, exposure_stops, metadata);
+        }
+    } catch (const InputError& e) {
+        fs::path rescue = fs::temp_directory_path() / ("dtoadq-preview-" + std::to_string(::getpid()) + ".exr");
+        film::write_exr(rescue.string(), image, metadata);
+        throw InputError(output, "", std::string("cannot write (") + e.what() + "); the render was saved to " + rescue.string());
+    }
 }
 
 namespace {

@@ -7,7 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "film/image.hpp"
 #include "film/image_metadata.hpp"
+#include "film/tone_map.hpp"
 #include "ibl/environment.hpp"
 #include "ibl/preview_renderer.hpp"
 
@@ -57,6 +59,16 @@ struct RenderLimits {
     double seconds = 0.0;
     bool quiet = false;  // no progress bar
 };
+
+// Whether `path` names an OpenEXR file (.exr, any case), and the PNG that goes beside it.
+bool is_exr_path(const std::string& path);
+std::string png_beside(const std::string& exr_path);
+
+// An .exr output gets the linear EXR and the tone-mapped PNG beside it; a .png only the PNG. When
+// they cannot be written the EXR goes to the temporary folder instead, and the InputError thrown
+// says where: a finished render is never lost to a bad path.
+void write_preview_images(const std::string& output, const film::ImageRgb& image, film::ToneMap tone_map, float exposure_stops,
+                          const film::ImageMetadata& metadata);
 
 // Adds samples until a limit is reached or the user interrupts (Ctrl-C ends the current launch and
 // returns true, so the caller writes the image so far), with a progress bar on stderr.

@@ -25,8 +25,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // Without -cl-fast-relaxed-math: the kernel shares its BRDF with the host, and NaN guards matter.
 constexpr const char* kBuildOptions = "-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt";
 
-// Images beyond 16384 on a side or 2^26 pixels are refused up front: the kernel counts pixels in an int.
-constexpr int kMaxSide = 16384;
+// Images beyond 2^26 pixels are refused up front: the kernel counts pixels in an int.
 constexpr long kMaxPixels = 1L << 26;
 
 template <typename Enum, size_t N>
@@ -104,16 +103,23 @@ const char* normal_method_name(NormalMethod method) {
     return "?";
 }
 
+void check_preview_settings(const PreviewSettings& settings) {
+    if (settings.width < 1 || settings.height < 1 || settings.width > kMaxImageSide || settings.height > kMaxImageSide ||
+        long(settings.width) * settings.height > kMaxPixels)
+        throw InputError("--size", "", std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                                           " is outside 1x1 .. " + std::to_string(kMaxImageSide) + " a side and 2^26 pixels");
+    if (settings.max_depth < 0 || settings.max_depth > 1024)
+        throw InputError("--max-depth", "", "must be in [0, 1024], got " + std::to_string(settings.max_depth));
+    if (settings.max_steps < 1 || settings.max_steps > 1 << 20)
+        throw InputError("--max-steps", "", "must be in [1, 1048576], got " + std::to_string(settings.max_steps));
+    if (!(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f))
+        throw InputError("--over-relaxation", "", "must be in [1, 2]");
+}
+
 namespace {
 
 const PreviewSettings& checked(const PreviewSettings& settings) {
-    if (settings.width < 1 || settings.height < 1 || settings.width > kMaxSide || settings.height > kMaxSide ||
-        long(settings.width) * settings.height > kMaxPixels)
-        throw InputError("--size", "", std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                                           " is outside 1x1 .. " + std::to_string(kMaxSide) + " a side and 2^26 pixels");
-    if (settings.max_depth < 0 || settings.max_depth > 1024) throw InputError("--max-depth", "", "must be in [0, 1024]");
-    if (!(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f))
-        throw InputError("--over-relaxation", "", "must be in [1, 2]");
+    check_preview_settings(settings);
     return settings;
 }
 
@@ -154,8 +160,6 @@ PreviewRenderer::PreviewRenderer(const opencl::Runtime& runtime, const PreviewSc
     k.normal_step = settings.normal_step;
     k.seed_lo = unsigned(settings.seed & 0xffffffffu);
     k.seed_hi = unsigned(settings.seed >> 32);
-    k.epsilon_relative = 1e-4f;
-    k.epsilon_min = 1e-5f;
     k.max_steps = settings.max_steps;
     k.max_distance = settings.max_distance;
     k.over_relaxation = settings.over_relaxation;

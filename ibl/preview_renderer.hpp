@@ -28,6 +28,9 @@ NormalMethod parse_normal_method(const std::string& text, const std::string& opt
 const char* ibl_sampling_name(IblSampling sampling);
 const char* normal_method_name(NormalMethod method);
 
+// The largest image side the preview renders (and the command line accepts).
+constexpr int kMaxImageSide = 16384;
+
 struct PreviewSettings {
     int width = 512, height = 512;
     int max_depth = 16;      // scattering events per path
@@ -41,6 +44,10 @@ struct PreviewSettings {
     uint64_t seed = 0;
     std::string extra_build_options;  // appended to the OpenCL build options (e.g. a -D forcing a cold build)
 };
+
+// Throws lab::InputError naming the option for a size, depth, step count or over-relaxation out
+// of range. The renderer calls it too; callers call it first to fail before any loading.
+void check_preview_settings(const PreviewSettings& settings);
 
 // What the preview needs of a compiled scene (scene/): its kernel source assembled around
 // kernels/preview.cl, its material slots in kernel order, and its camera and Lipschitz bound.

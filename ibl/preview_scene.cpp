@@ -1,9 +1,7 @@
 #include "ibl/preview_scene.hpp"
 
-#include <algorithm>
 #include <string_view>
 
-#include "common/input_error.hpp"
 #include "scene/compile.hpp"
 #include "scene/load_scene.hpp"
 #include "scene/scene_source.hpp"
@@ -23,20 +21,10 @@ scene::Scene load_preview_scene(const std::string& path) {
 }
 
 PreviewScene compile_preview_scene(const scene::Scene& scene, const PreviewSceneOptions& options) {
+    // compile_scene rejects, naming the scene file, a slot or object the scene does not declare
     scene::CompileOptions compile;
-    if (options.sample_material) {
-        bool has_slot = std::any_of(scene.materials.begin(), scene.materials.end(),
-                                    [](const scene::MaterialSlot& s) { return s.name == kSampleMaterialSlot; });
-        if (!has_slot)
-            throw InputError(scene.file, "materials", std::string("no material named \"") + kSampleMaterialSlot +
-                                                          "\" for --material to replace");
-        compile.material_overrides[kSampleMaterialSlot] = options.sample_material->material;
-    }
-    if (!options.ground) {
-        bool has_ground = std::any_of(scene.objects.begin(), scene.objects.end(), [](const scene::Object& o) { return o.name == kGroundObject; });
-        if (!has_ground) throw InputError(scene.file, "objects", std::string("no object named \"") + kGroundObject + "\" for --ground off");
-        compile.disabled_objects.push_back(kGroundObject);
-    }
+    if (options.sample_material) compile.material_overrides[kSampleMaterialSlot] = options.sample_material->material;
+    if (!options.ground) compile.disabled_objects.push_back(kGroundObject);
     scene::CompiledScene compiled = scene::compile_scene(scene, compile);
     PreviewScene out;
     out.file = compiled.file;

@@ -26,7 +26,7 @@ struct PreviewSceneOptions {
 };
 
 // Compiles the scene into kernels/preview.cl's source. Throws lab::InputError naming the scene file
-// when a material is given but the scene has no "sample" slot, or --ground off names no object.
+// when a material is given but the scene has no "sample" slot, or it has no "ground" to leave out.
 PreviewScene compile_preview_scene(const scene::Scene& scene, const PreviewSceneOptions& options);
 
 }  // namespace lab::ibl

@@ -29,12 +29,10 @@ typedef struct PreviewSettings {
 static PreviewSettings preview_settings(PreviewKernelSettings k) {
     PreviewSettings s;
     s.k = k;
-    s.march.epsilon_relative = k.epsilon_relative;
-    s.march.epsilon_min = k.epsilon_min;
+    s.march = march_settings_default(k.lipschitz);
     s.march.max_steps = k.max_steps;
     s.march.max_distance = k.max_distance;
     s.march.over_relaxation = k.over_relaxation;
-    s.march.lipschitz = k.lipschitz;
     return s;
 }
 

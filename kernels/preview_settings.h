@@ -18,8 +18,7 @@ typedef struct PreviewKernelSettings {
     int normal_method;  /* NORMAL_* of sdf/normals.h */
     float normal_step;  /* finite-difference step of the numerical normals, scene units */
     uint seed_lo, seed_hi;
-    /* sdf/march.h's MarchSettings, field by field */
-    float epsilon_relative, epsilon_min;
+    /* what changes of sdf/march.h's MarchSettings; the epsilons are march_settings_default()'s */
     int max_steps;
     float max_distance, over_relaxation, lipschitz;
 } PreviewKernelSettings;
