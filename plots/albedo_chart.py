@@ -1,6 +1,5 @@
 """dtoadq albedo chart: directional albedo against incident angle, r, g, b per material.
 Reads the table written by plots/albedo_chart.cpp (material,theta,a_r,a_g,a_b,se_r,se_g,se_b)."""
-import argparse
 import math
 
 import numpy as np
@@ -24,9 +23,7 @@ def load(path):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--out", required=True)
+    parser = plot_common.argument_parser()
     parser.add_argument("--phi-in", type=float, default=0.0)
     parser.add_argument("--samples", type=int, required=True)
     args = parser.parse_args()

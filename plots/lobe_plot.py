@@ -1,6 +1,5 @@
 """dtoadq lobe plot: a polar slice through the plane of incidence and a 3D lobe, side by side.
 Reads materials.csv, plane.csv, surface.csv and deltas.csv written by plots/lobe_plot.cpp."""
-import argparse
 import math
 import os
 
@@ -180,9 +179,7 @@ def legend_handles(names, deltas, colours):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--out", required=True)
+    parser = plot_common.argument_parser()
     parser.add_argument("--theta-in", type=float, required=True)
     parser.add_argument("--phi-in", type=float, required=True)
     parser.add_argument("--scale", choices=("auto", "linear", "log"), default="auto")

@@ -1,11 +1,20 @@
 """Shared by the dtoadq plot scripts: reading the CSV files the C++ side writes, colours, saving.
 The scripts only draw; every number comes from dtoadq."""
+import argparse
 import csv
 
 import matplotlib
 
 matplotlib.use("Agg")  # headless: never open a window
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def argument_parser():
+    """The arguments every script takes: the data table the C++ side wrote, and the PNG to write."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--data", required=True)
+    parser.add_argument("--out", required=True)
+    return parser
 
 
 def read_rows(path):

@@ -1,6 +1,5 @@
 """dtoadq preview sheet: preview renders side by side, each titled with its material.
 Reads the list written by plots/preview_sheet.cpp (title,path)."""
-import argparse
 import math
 
 import matplotlib.image as mpimg
@@ -10,9 +9,7 @@ from plot_common import plt
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--out", required=True)
+    parser = plot_common.argument_parser()
     parser.add_argument("--title", default="")
     args = parser.parse_args()
 

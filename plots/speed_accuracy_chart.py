@@ -1,7 +1,6 @@
 """dtoadq speed-accuracy chart: error of a render against a reference as a function of render time,
 log-log, one line per sampling strategy, with a slope -1/2 line (the Monte Carlo rate).
 Reads the table written by plots/speed_accuracy_chart.cpp (series,seconds,rmse)."""
-import argparse
 import math
 
 import plot_common
@@ -20,9 +19,7 @@ def load(path):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--data", required=True)
-    parser.add_argument("--out", required=True)
+    parser = plot_common.argument_parser()
     parser.add_argument("--title", default="")
     args = parser.parse_args()
 
