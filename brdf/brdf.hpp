@@ -1,8 +1,10 @@
-// The single-source BRDF module, compiled as C++ for the host: namespace brdf.
+// The single-source BRDF module, compiled as C++ for the host: namespace brdf, on the vocabulary of
+// namespace single_source.
 #pragma once
 
-#include "host/glm_builtins.hpp"
+#include "single_source/host_vocabulary.hpp"
 
 namespace brdf {
+using namespace single_source;
 #include "bsdf.h"
 }  // namespace brdf

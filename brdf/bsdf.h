@@ -5,7 +5,7 @@
 #ifndef BRDF_BSDF_H
 #define BRDF_BSDF_H
 #include "bsdf_sample.h"
-#include "common.h"
+#include "single_source/vocabulary.h"
 #include "features.h"
 #include "frame.h"
 #include "material.h"
@@ -16,7 +16,7 @@
 #include "dtoadq2017_model.h"
 #endif
 
-BRDF_FN float3 bsdf_eval(const Material* material, float3 wo, float3 wi) {
+SS_FN float3 bsdf_eval(const Material* material, float3 wo, float3 wi) {
     Material m = material_clamped(material);
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     wi = rotate_about_normal(wi, -m.tangent_rotation);
@@ -29,7 +29,7 @@ BRDF_FN float3 bsdf_eval(const Material* material, float3 wo, float3 wi) {
     return float3_splat(0.0f);
 }
 
-BRDF_FN float bsdf_pdf(const Material* material, float3 wo, float3 wi) {
+SS_FN float bsdf_pdf(const Material* material, float3 wo, float3 wi) {
     Material m = material_clamped(material);
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     wi = rotate_about_normal(wi, -m.tangent_rotation);
@@ -43,7 +43,7 @@ BRDF_FN float bsdf_pdf(const Material* material, float3 wo, float3 wi) {
 }
 
 /* u: three uniform numbers in [0, 1). */
-BRDF_FN BsdfSample bsdf_sample(const Material* material, float3 wo, float3 u) {
+SS_FN BsdfSample bsdf_sample(const Material* material, float3 wo, float3 u) {
     Material m = material_clamped(material);
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     BsdfSample s = bsdf_sample_failed();

@@ -2,7 +2,7 @@
  * flagged, their pdf is the discrete probability of having picked them. */
 #ifndef BRDF_BSDF_SAMPLE_H
 #define BRDF_BSDF_SAMPLE_H
-#include "common.h"
+#include "single_source/vocabulary.h"
 
 #define BSDF_REFLECTION 1
 #define BSDF_TRANSMISSION 2
@@ -15,7 +15,7 @@ typedef struct BsdfSample {
     int flags;  /* BSDF_* bits; 0 when sampling failed */
 } BsdfSample;
 
-BRDF_FN BsdfSample bsdf_sample_failed(void) {
+SS_FN BsdfSample bsdf_sample_failed(void) {
     BsdfSample s;
     s.wi = make_float3(0.0f, 0.0f, 1.0f);
     s.f = float3_splat(0.0f);

@@ -7,14 +7,14 @@
 #ifndef BRDF_DIELECTRIC_H
 #define BRDF_DIELECTRIC_H
 #include "bsdf_sample.h"
-#include "common.h"
+#include "single_source/vocabulary.h"
 #include "frame.h"
 #include "fresnel.h"
 #include "microfacet.h"
 
 /* Generalised half vector of (wo, wi) on the upper side, and the relative index seen from wo.
  * Returns false where the pair has no valid microfacet (grazing, degenerate or back-facing). */
-BRDF_FN bool dielectric_half_vector(float3 wo, float3 wi, float eta, float3* wm, float* etap) {
+SS_FN bool dielectric_half_vector(float3 wo, float3 wi, float eta, float3* wm, float* etap) {
     float cos_o = wo.z, cos_i = wi.z;
     if (cos_o == 0.0f || cos_i == 0.0f) return false;
     bool reflect = cos_o * cos_i > 0.0f;
@@ -29,7 +29,7 @@ BRDF_FN bool dielectric_half_vector(float3 wo, float3 wi, float eta, float3* wm,
     return true;
 }
 
-BRDF_FN float rough_dielectric_eval(Microfacet mf, float eta, float3 wo, float3 wi) {
+SS_FN float rough_dielectric_eval(Microfacet mf, float eta, float3 wo, float3 wi) {
     float3 wm;
     float etap;
     if (!dielectric_half_vector(wo, wi, eta, &wm, &etap)) return 0.0f;
@@ -40,7 +40,7 @@ BRDF_FN float rough_dielectric_eval(Microfacet mf, float eta, float3 wo, float3 
     return d * g * (1.0f - fr) * fabs(dot(wi, wm) * dot(wo, wm) / (wi.z * wo.z * denom));
 }
 
-BRDF_FN float rough_dielectric_pdf(Microfacet mf, float eta, float3 wo, float3 wi) {
+SS_FN float rough_dielectric_pdf(Microfacet mf, float eta, float3 wo, float3 wi) {
     float3 wm;
     float etap;
     if (!dielectric_half_vector(wo, wi, eta, &wm, &etap)) return 0.0f;
@@ -53,7 +53,7 @@ BRDF_FN float rough_dielectric_pdf(Microfacet mf, float eta, float3 wo, float3 w
 
 /* Samples a direction of the rough interface; the caller evaluates f and pdf of its whole mixture
  * for it. uc picks reflection or refraction by the Fresnel reflectance of the sampled facet. */
-BRDF_FN bool rough_dielectric_sample_direction(Microfacet mf, float eta, float3 wo, float uc, float u1, float u2, float3* wi) {
+SS_FN bool rough_dielectric_sample_direction(Microfacet mf, float eta, float3 wo, float uc, float u1, float u2, float3* wi) {
     if (wo.z == 0.0f) return false;
     float3 wm = microfacet_sample_normal(mf, wo, u1, u2);
     float cos_om = dot(wo, wm);
@@ -77,7 +77,7 @@ BRDF_FN bool rough_dielectric_sample_direction(Microfacet mf, float eta, float3 
 }
 
 /* The smooth limit: mirror reflection with probability F, refraction otherwise. */
-BRDF_FN BsdfSample smooth_dielectric_sample(float eta, float3 wo, float uc) {
+SS_FN BsdfSample smooth_dielectric_sample(float eta, float3 wo, float uc) {
     BsdfSample s = bsdf_sample_failed();
     if (wo.z == 0.0f) return s;
     float fr = fresnel_dielectric(wo.z, eta);

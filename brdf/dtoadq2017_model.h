@@ -7,24 +7,24 @@
 #ifndef BRDF_DTOADQ2017_MODEL_H
 #define BRDF_DTOADQ2017_MODEL_H
 #include "bsdf_sample.h"
-#include "common.h"
+#include "single_source/vocabulary.h"
 #include "fresnel.h"
 #include "material.h"
 #include "warp.h"
 
 /* Heitz's height-correlated term as the 2017 kernel wrote it: alpha where alpha^2 belongs. */
-BRDF_FN float dtoadq2017_smith(float cos_a, float cos_b, float alpha) {
+SS_FN float dtoadq2017_smith(float cos_a, float cos_b, float alpha) {
     return cos_a * sqrt(cos_b * cos_b * (1.0f - alpha) + alpha);
 }
 
 /* Butler's Hyper-Cauchy, width s and shape g, evaluated at the angle it was handed. */
-BRDF_FN float dtoadq2017_hyper_cauchy(float cos_angle, float s, float g) {
+SS_FN float dtoadq2017_hyper_cauchy(float cos_angle, float s, float g) {
     float c2 = cos_angle * cos_angle;
     float tan2 = (1.0f - c2) / c2;
-    return (g - 1.0f) * pow(2.0f, g - 1.0f) / (BRDF_PI * s * s * c2 * c2 * pow(2.0f + tan2 / (s * s), g));
+    return (g - 1.0f) * pow(2.0f, g - 1.0f) / (SS_PI * s * s * c2 * c2 * pow(2.0f + tan2 / (s * s), g));
 }
 
-BRDF_FN float3 dtoadq2017_eval(const Material* m, float3 wo, float3 wi) {
+SS_FN float3 dtoadq2017_eval(const Material* m, float3 wo, float3 wi) {
     if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return float3_splat(0.0f);
     float3 albedo = material_albedo(m);
     float3 h = normalize(wo + wi);
@@ -46,10 +46,10 @@ BRDF_FN float3 dtoadq2017_eval(const Material* m, float3 wo, float3 wi) {
     float distribution = dtoadq2017_hyper_cauchy(cos_hl, fmax(m->roughness, 1e-3f), m->hc_shape);
     float3 microfacet = fresnel * (geometry * distribution / (4.0f * cos_hv * fmax(cos_nl, cos_nv)));
     /* diffuse: sqrt(albedo)/pi, blended towards the half-vector Henyey-Greenstein retro term */
-    float3 diffuse = make_float3(sqrt(albedo.x), sqrt(albedo.y), sqrt(albedo.z)) * BRDF_INV_PI;
+    float3 diffuse = make_float3(sqrt(albedo.x), sqrt(albedo.y), sqrt(albedo.z)) * SS_INV_PI;
     float r = (-0.3f + 1.3f * m->roughness) * cos_hv;
     float scale = (1.0f - m->metallic) * 5.0f;
-    float rr = scale * (1.0f - r * r) * BRDF_INV_PI / pow(1.0f + r * r - 2.0f * r * cos_hl, 1.5f);
+    float rr = scale * (1.0f - r * r) * SS_INV_PI / pow(1.0f + r * r - 2.0f * r * cos_hl, 1.5f);
     float3 retro = diffuse * (rr * (fresnel_l + fresnel_v + fresnel_l * fresnel_v * rr));
     diffuse = mix(diffuse, retro, m->subsurface);
     float3 f = diffuse + microfacet;
@@ -60,11 +60,11 @@ BRDF_FN float3 dtoadq2017_eval(const Material* m, float3 wo, float3 wi) {
     return f;
 }
 
-BRDF_FN float dtoadq2017_pdf(float3 wo, float3 wi) {
+SS_FN float dtoadq2017_pdf(float3 wo, float3 wi) {
     return wo.z > 0.0f ? cosine_hemisphere_pdf(wi.z) : 0.0f;
 }
 
-BRDF_FN BsdfSample dtoadq2017_sample(const Material* m, float3 wo, float3 u) {
+SS_FN BsdfSample dtoadq2017_sample(const Material* m, float3 wo, float3 u) {
     BsdfSample s = bsdf_sample_failed();
     if (!(wo.z > 0.0f)) return s;
     s.wi = square_to_cosine_hemisphere(u.y, u.z);

@@ -1,24 +1,24 @@
 /* Directions in the local shading frame: z is the normal, x the (unrotated) tangent. */
 #ifndef BRDF_FRAME_H
 #define BRDF_FRAME_H
-#include "common.h"
+#include "single_source/vocabulary.h"
 
-BRDF_FN float cos_theta(float3 w) { return w.z; }
-BRDF_FN float cos2_theta(float3 w) { return w.z * w.z; }
-BRDF_FN float sin2_theta(float3 w) { return fmax(0.0f, 1.0f - w.z * w.z); }
-BRDF_FN bool same_hemisphere(float3 a, float3 b) { return a.z * b.z > 0.0f; }
+SS_FN float cos_theta(float3 w) { return w.z; }
+SS_FN float cos2_theta(float3 w) { return w.z * w.z; }
+SS_FN float sin2_theta(float3 w) { return fmax(0.0f, 1.0f - w.z * w.z); }
+SS_FN bool same_hemisphere(float3 a, float3 b) { return a.z * b.z > 0.0f; }
 
 /* Rotation about the normal, used to turn the anisotropy tangent. */
-BRDF_FN float3 rotate_about_normal(float3 w, float angle) {
+SS_FN float3 rotate_about_normal(float3 w, float angle) {
     float c = cos(angle), s = sin(angle);
     return make_float3(c * w.x - s * w.y, s * w.x + c * w.y, w.z);
 }
 
-BRDF_FN float3 reflect_about(float3 w, float3 n) { return 2.0f * dot(w, n) * n - w; }
+SS_FN float3 reflect_about(float3 w, float3 n) { return 2.0f * dot(w, n) * n - w; }
 
 /* Refracts w (pointing away from the surface, on the side n faces) through the interface with
  * relative index eta = eta_transmitted / eta_incident. Returns false on total internal reflection. */
-BRDF_FN bool refract_through(float3 w, float3 n, float eta, float3* wt) {
+SS_FN bool refract_through(float3 w, float3 n, float eta, float3* wt) {
     float cos_i = dot(n, w);
     float sin2_t = fmax(0.0f, 1.0f - cos_i * cos_i) / (eta * eta);
     if (sin2_t >= 1.0f) return false;
@@ -30,7 +30,7 @@ BRDF_FN bool refract_through(float3 w, float3 n, float eta, float3* wt) {
 /* Orthonormal basis around a unit normal (Duff et al. 2017), for consumers in world space. */
 typedef struct ShadingFrame { float3 t, b, n; } ShadingFrame;
 
-BRDF_FN ShadingFrame frame_from_normal(float3 n) {
+SS_FN ShadingFrame frame_from_normal(float3 n) {
     float sign = n.z >= 0.0f ? 1.0f : -1.0f;
     float a = -1.0f / (sign + n.z);
     float b = n.x * n.y * a;
@@ -42,7 +42,7 @@ BRDF_FN ShadingFrame frame_from_normal(float3 n) {
 }
 
 /* A frame whose x axis follows a given tangent (Gram-Schmidt against n). */
-BRDF_FN ShadingFrame frame_from_normal_tangent(float3 n, float3 tangent) {
+SS_FN ShadingFrame frame_from_normal_tangent(float3 n, float3 tangent) {
     float3 t = tangent - n * dot(n, tangent);
     float len = length(t);
     if (!(len > 1e-6f)) return frame_from_normal(n);
@@ -53,7 +53,7 @@ BRDF_FN ShadingFrame frame_from_normal_tangent(float3 n, float3 tangent) {
     return f;
 }
 
-BRDF_FN float3 frame_to_local(ShadingFrame f, float3 w) { return make_float3(dot(w, f.t), dot(w, f.b), dot(w, f.n)); }
-BRDF_FN float3 frame_to_world(ShadingFrame f, float3 w) { return w.x * f.t + w.y * f.b + w.z * f.n; }
+SS_FN float3 frame_to_local(ShadingFrame f, float3 w) { return make_float3(dot(w, f.t), dot(w, f.b), dot(w, f.n)); }
+SS_FN float3 frame_to_world(ShadingFrame f, float3 w) { return w.x * f.t + w.y * f.b + w.z * f.n; }
 
 #endif

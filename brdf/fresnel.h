@@ -1,25 +1,25 @@
 /* Fresnel terms. */
 #ifndef BRDF_FRESNEL_H
 #define BRDF_FRESNEL_H
-#include "common.h"
+#include "single_source/vocabulary.h"
 
 /* Schlick's weight (1 - cos)^5: how far a reflectance moves from its normal value towards 1. */
-BRDF_FN float schlick_weight(float cos_angle) { return pow5(clamp(1.0f - cos_angle, 0.0f, 1.0f)); }
+SS_FN float schlick_weight(float cos_angle) { return pow5(clamp(1.0f - cos_angle, 0.0f, 1.0f)); }
 
 /* Schlick 1994: F = F0 + (1 - F0) (1 - cos)^5, per channel. */
-BRDF_FN float3 fresnel_schlick(float3 f0, float cos_angle) {
+SS_FN float3 fresnel_schlick(float3 f0, float cos_angle) {
     return f0 + (float3_splat(1.0f) - f0) * schlick_weight(cos_angle);
 }
 
 /* Normal-incidence reflectance with metallic (Burley 2012): dielectrics reflect `fresnel` grey,
  * conductors reflect their albedo. */
-BRDF_FN float3 specular_f0(float3 albedo, float fresnel, float metallic) {
+SS_FN float3 specular_f0(float3 albedo, float fresnel, float metallic) {
     return mix(float3_splat(fresnel), albedo, metallic);
 }
 
 /* Exact unpolarised Fresnel reflectance of a dielectric interface. cos_i is measured on the side
  * of the normal (negative: from inside); eta = eta_inside / eta_outside. */
-BRDF_FN float fresnel_dielectric(float cos_i, float eta) {
+SS_FN float fresnel_dielectric(float cos_i, float eta) {
     if (eta == 1.0f) return 0.0f; /* index matched; below, 1 - cos^2 would round to 1 at grazing */
     cos_i = clamp(cos_i, -1.0f, 1.0f);
     if (cos_i < 0.0f) {

@@ -5,14 +5,14 @@
  * width s > 0, shape g > 1. For g = 2 it is GGX with alpha = sqrt(2) s. */
 #ifndef BRDF_HYPER_CAUCHY_H
 #define BRDF_HYPER_CAUCHY_H
-#include "common.h"
+#include "single_source/vocabulary.h"
 #include "special_functions.h"
 
 /* D(m) written in m: cos^4 (2 + tan^2-term)^g = m_z^(4 - 2g) (2 m_z^2 + q)^g, q = (mx/sx)^2 + (my/sy)^2. */
-BRDF_FN float hyper_cauchy_d(float3 m, float sx, float sy, float g) {
+SS_FN float hyper_cauchy_d(float3 m, float sx, float sy, float g) {
     if (m.z <= 0.0f) return 0.0f;
     float q = sqr(m.x / sx) + sqr(m.y / sy);
-    float norm = (g - 1.0f) * pow(2.0f, g - 1.0f) / (BRDF_PI * sx * sy);
+    float norm = (g - 1.0f) * pow(2.0f, g - 1.0f) / (SS_PI * sx * sy);
     return norm * pow(m.z, 2.0f * g - 4.0f) * pow(2.0f * m.z * m.z + q, -g);
 }
 
@@ -22,7 +22,7 @@ BRDF_FN float hyper_cauchy_d(float3 m, float sx, float sy, float g) {
  *          = C (2 + mu^2)^(3/2 - g) / (2 mu (g - 3/2)) - I_{2/(2+mu^2)}(g - 1, 1/2) / 2.
  * The tail of P2 is a Student-t tail, hence the incomplete beta. Finite for g > 3/2 only: heavier
  * tails have infinite mean slope and mask everything but normal incidence. */
-BRDF_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g) {
+SS_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g) {
     float tangential = sqrt(sqr(sx * w.x) + sqr(sy * w.y));
     float cz = fabs(w.z);
     if (!(tangential > 0.0f)) return 0.0f;
@@ -30,7 +30,7 @@ BRDF_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g) {
     if (mu < 1e-12f) return 1e30f;
     if (mu > 1e15f) return 0.0f;
     float mu2 = mu * mu;
-    float log_c = log(g - 1.0f) + (g - 1.0f) * log(2.0f) + lgamma(g - 0.5f) - 0.5f * log(BRDF_PI) - lgamma(g);
+    float log_c = log(g - 1.0f) + (g - 1.0f) * log(2.0f) + lgamma(g - 0.5f) - 0.5f * log(SS_PI) - lgamma(g);
     float first = exp(log_c + (1.5f - g) * log(2.0f + mu2)) / (2.0f * mu * (g - 1.5f));
     float tail = 0.5f * incomplete_beta(g - 1.0f, 0.5f, 2.0f / (2.0f + mu2));
     return fmax(first - tail, 0.0f);
@@ -38,11 +38,11 @@ BRDF_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g) {
 
 /* Exact inversion of the distribution of normals D(m) cos theta_m: the unit radial slope w = r^2
  * has CDF 1 - (2 / (2 + w))^(g - 1), so w = 2 ((1 - u)^(-1/(g - 1)) - 1). pdf(m) = D(m) cos theta_m. */
-BRDF_FN float3 hyper_cauchy_sample_normal(float sx, float sy, float g, float u1, float u2) {
+SS_FN float3 hyper_cauchy_sample_normal(float sx, float sy, float g, float u1, float u2) {
     float one_minus_u = fmax(1.0f - u1, 1e-7f);
     float w = 2.0f * (pow(one_minus_u, -1.0f / (g - 1.0f)) - 1.0f);
     float r = safe_sqrt(w);
-    float phi = 2.0f * BRDF_PI * u2;
+    float phi = 2.0f * SS_PI * u2;
     float slope_x = sx * r * cos(phi), slope_y = sy * r * sin(phi);
     return normalize(make_float3(-slope_x, -slope_y, 1.0f));
 }

@@ -11,7 +11,7 @@
 #ifndef BRDF_LAB_MODEL_H
 #define BRDF_LAB_MODEL_H
 #include "bsdf_sample.h"
-#include "common.h"
+#include "single_source/vocabulary.h"
 #include "features.h"
 #include "frame.h"
 #include "fresnel.h"
@@ -35,7 +35,7 @@ typedef struct LobeWeights {
     float diffuse, glossy, specular, transmission;
 } LobeWeights;
 
-BRDF_FN LobeWeights lab_lobe_weights(const Material* m) {
+SS_FN LobeWeights lab_lobe_weights(const Material* m) {
     LobeWeights w;
     w.diffuse = m->weight_diffuse * (1.0f - m->metallic);
     w.glossy = m->weight_glossy + m->weight_diffuse * m->metallic;
@@ -54,14 +54,14 @@ BRDF_FN LobeWeights lab_lobe_weights(const Material* m) {
  * wi = -wo, which only the smooth path represents. */
 #define BRDF_INDEX_MATCHED_EPSILON 1e-3f
 
-BRDF_FN bool lab_transmission_is_smooth(const Material* m, Microfacet mf) {
+SS_FN bool lab_transmission_is_smooth(const Material* m, Microfacet mf) {
     return microfacet_is_smooth(mf) || fabs(m->ior - 1.0f) < BRDF_INDEX_MATCHED_EPSILON;
 }
 
-BRDF_FN float3 lab_specular_f0(const Material* m) { return specular_f0(material_albedo(m), m->fresnel, m->metallic); }
+SS_FN float3 lab_specular_f0(const Material* m) { return specular_f0(material_albedo(m), m->fresnel, m->metallic); }
 
 #if BRDF_FEATURE_DIFFUSE
-BRDF_FN float lab_diffuse_brdf(const Material* m, float3 wo, float3 wi) {
+SS_FN float lab_diffuse_brdf(const Material* m, float3 wo, float3 wi) {
     float base = lambert_brdf();
 #if BRDF_FEATURE_RETROREFLECTION
     base = mix(base, disney_diffuse_brdf(m->roughness, wo, wi), m->retroreflection);
@@ -73,7 +73,7 @@ BRDF_FN float lab_diffuse_brdf(const Material* m, float3 wo, float3 wi) {
 }
 #endif
 
-BRDF_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
+SS_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
     LobeWeights w = lab_lobe_weights(m);
     Microfacet mf = microfacet_from_material(m);
     bool smooth = microfacet_is_smooth(mf);
@@ -93,7 +93,7 @@ BRDF_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
     return f;
 }
 
-BRDF_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
+SS_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
     LobeWeights w = lab_lobe_weights(m);
     Microfacet mf = microfacet_from_material(m);
     bool smooth = microfacet_is_smooth(mf);
@@ -114,7 +114,7 @@ BRDF_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
 }
 
 /* Mirror reflection with Schlick's Fresnel, as a delta sample picked with probability `weight`. */
-BRDF_FN BsdfSample lab_mirror_sample(const Material* m, float weight, float3 wo) {
+SS_FN BsdfSample lab_mirror_sample(const Material* m, float weight, float3 wo) {
     BsdfSample s = bsdf_sample_failed();
     if (!(wo.z > 0.0f)) return s;
     s.wi = make_float3(-wo.x, -wo.y, wo.z);
@@ -124,7 +124,7 @@ BRDF_FN BsdfSample lab_mirror_sample(const Material* m, float weight, float3 wo)
     return s;
 }
 
-BRDF_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
+SS_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
     LobeWeights w = lab_lobe_weights(m);
     Microfacet mf = microfacet_from_material(m);
     bool smooth = microfacet_is_smooth(mf);

@@ -4,7 +4,7 @@
  * brdf/host/parameters.cpp and the loader enforces it. */
 #ifndef BRDF_MATERIAL_H
 #define BRDF_MATERIAL_H
-#include "common.h"
+#include "single_source/vocabulary.h"
 
 #define BRDF_MODEL_LAB 0        /* the physically plausible default model */
 #define BRDF_MODEL_DTOADQ2017 1 /* the 2017 write-up's formulas, kept for comparison */
@@ -32,7 +32,7 @@ typedef struct Material {
     int distribution;           /* BRDF_DISTRIBUTION_*, used by glossy and rough transmission */
 } Material;
 
-BRDF_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }
+SS_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }
 
 /* Parameter ranges: the single source for the loader, the docs table, the sweeps and the clamp
  * below (which keeps a kernel defined even when handed an unchecked struct). */
@@ -43,9 +43,9 @@ BRDF_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo
 #define BRDF_IOR_MAX 3.0f
 
 /* fmin(fmax()) rather than clamp(): it maps NaN to the lower bound instead of leaving it. */
-BRDF_FN float clamp_param(float x, float lo, float hi) { return fmin(fmax(x, lo), hi); }
+SS_FN float clamp_param(float x, float lo, float hi) { return fmin(fmax(x, lo), hi); }
 
-BRDF_FN Material material_clamped(const Material* in) {
+SS_FN Material material_clamped(const Material* in) {
     Material m = *in;
     for (int c = 0; c < 3; ++c) m.albedo[c] = clamp_param(m.albedo[c], 0.0f, 1.0f);
     m.roughness = clamp_param(m.roughness, 0.0f, 1.0f);
@@ -55,7 +55,7 @@ BRDF_FN Material material_clamped(const Material* in) {
     m.subsurface_asymmetry = clamp_param(m.subsurface_asymmetry, -BRDF_ASYMMETRY_MAX, BRDF_ASYMMETRY_MAX);
     m.retroreflection = clamp_param(m.retroreflection, 0.0f, 1.0f);
     m.anisotropic = clamp_param(m.anisotropic, 0.0f, 1.0f);
-    m.tangent_rotation = clamp_param(m.tangent_rotation, -2.0f * BRDF_PI, 2.0f * BRDF_PI);
+    m.tangent_rotation = clamp_param(m.tangent_rotation, -2.0f * SS_PI, 2.0f * SS_PI);
     m.hc_shape = clamp_param(m.hc_shape, BRDF_HC_SHAPE_MIN, BRDF_HC_SHAPE_MAX);
     m.weight_diffuse = clamp_param(m.weight_diffuse, 0.0f, 1.0f);
     m.weight_glossy = clamp_param(m.weight_glossy, 0.0f, 1.0f);

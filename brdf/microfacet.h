@@ -2,7 +2,7 @@
  * (uncorrelated G1 and height-correlated G2, Heitz 2014 eq. 99) and the sampled normal's density. */
 #ifndef BRDF_MICROFACET_H
 #define BRDF_MICROFACET_H
-#include "common.h"
+#include "single_source/vocabulary.h"
 #include "features.h"
 #include "material.h"
 #if BRDF_FEATURE_GGX
@@ -24,7 +24,7 @@ typedef struct Microfacet {
 } Microfacet;
 
 /* Disney's anisotropy mapping (Burley 2012): aspect = sqrt(1 - 0.9 anisotropic). */
-BRDF_FN Microfacet microfacet_from_material(const Material* m) {
+SS_FN Microfacet microfacet_from_material(const Material* m) {
     float alpha = fmax(sqr(m->roughness), BRDF_MIN_ALPHA);
     float aspect = sqrt(1.0f - 0.9f * m->anisotropic);
     Microfacet mf;
@@ -35,13 +35,13 @@ BRDF_FN Microfacet microfacet_from_material(const Material* m) {
     return mf;
 }
 
-BRDF_FN bool microfacet_is_smooth(Microfacet mf) { return fmax(mf.ax, mf.ay) < BRDF_SMOOTH_ALPHA; }
+SS_FN bool microfacet_is_smooth(Microfacet mf) { return fmax(mf.ax, mf.ay) < BRDF_SMOOTH_ALPHA; }
 
 #define BRDF_INV_SQRT2 0.70710678118654752440f
 
 /* With a distribution switched off (brdf/features.h) its branch compiles to nothing; the host never
  * hands such a kernel a material that uses it. */
-BRDF_FN float microfacet_d(Microfacet mf, float3 m) {
+SS_FN float microfacet_d(Microfacet mf, float3 m) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
         return hyper_cauchy_d(m, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape);
@@ -53,7 +53,7 @@ BRDF_FN float microfacet_d(Microfacet mf, float3 m) {
 #endif
 }
 
-BRDF_FN float microfacet_lambda(Microfacet mf, float3 w) {
+SS_FN float microfacet_lambda(Microfacet mf, float3 w) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
         return hyper_cauchy_lambda(w, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape);
@@ -65,15 +65,15 @@ BRDF_FN float microfacet_lambda(Microfacet mf, float3 w) {
 #endif
 }
 
-BRDF_FN float microfacet_g1(Microfacet mf, float3 w) { return 1.0f / (1.0f + microfacet_lambda(mf, w)); }
+SS_FN float microfacet_g1(Microfacet mf, float3 w) { return 1.0f / (1.0f + microfacet_lambda(mf, w)); }
 
-BRDF_FN float microfacet_g2(Microfacet mf, float3 wo, float3 wi) {
+SS_FN float microfacet_g2(Microfacet mf, float3 wo, float3 wi) {
     return 1.0f / (1.0f + microfacet_lambda(mf, wo) + microfacet_lambda(mf, wi));
 }
 
 /* Samples a microfacet normal on the upper side: visible normals of wo for GGX, the distribution
  * of normals (exact inversion) for Hyper-Cauchy. */
-BRDF_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, float u2) {
+SS_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, float u2) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
         return hyper_cauchy_sample_normal(mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, u1, u2);
@@ -88,7 +88,7 @@ BRDF_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, floa
 /* Density of microfacet_sample_normal() over solid angle of m. The caller passes wo_m = |wo . m|:
  * where m is a half vector it knows this more accurately than a dot product of nearly
  * perpendicular vectors would give it. */
-BRDF_FN float microfacet_normal_pdf(Microfacet mf, float3 wo, float3 m, float wo_m) {
+SS_FN float microfacet_normal_pdf(Microfacet mf, float3 wo, float3 m, float wo_m) {
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) return microfacet_d(mf, m) * fmax(m.z, 0.0f);
     float cos_o = fabs(wo.z);
     if (!(wo_m > 0.0f) || !(cos_o > 0.0f)) return 0.0f;

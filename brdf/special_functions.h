@@ -1,11 +1,11 @@
 /* Special functions the Hyper-Cauchy masking term needs. */
 #ifndef BRDF_SPECIAL_FUNCTIONS_H
 #define BRDF_SPECIAL_FUNCTIONS_H
-#include "common.h"
+#include "single_source/vocabulary.h"
 
 /* Continued fraction of the incomplete beta function, evaluated with the modified Lentz method
  * (DLMF 8.17.22); converges fast for x < (a + 1) / (a + b + 2). */
-BRDF_FN float incomplete_beta_fraction(float a, float b, float x) {
+SS_FN float incomplete_beta_fraction(float a, float b, float x) {
     const float tiny = 1e-30f;
     float c = 1.0f;
     float d = 1.0f - (a + b) * x / (a + 1.0f);
@@ -34,7 +34,7 @@ BRDF_FN float incomplete_beta_fraction(float a, float b, float x) {
 }
 
 /* Regularised incomplete beta function I_x(a, b), a, b > 0, x in [0, 1]. */
-BRDF_FN float incomplete_beta(float a, float b, float x) {
+SS_FN float incomplete_beta(float a, float b, float x) {
     if (x <= 0.0f) return 0.0f;
     if (x >= 1.0f) return 1.0f;
     float log_front = lgamma(a + b) - lgamma(a) - lgamma(b) + a * log(x) + b * log(1.0f - x);

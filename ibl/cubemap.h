@@ -25,12 +25,12 @@
 #ifndef IBL_CUBEMAP_H
 #define IBL_CUBEMAP_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 #define CUBEMAP_FACES 6
 
 /* Face of direction d (any length but 0) and its face coordinates a, b in [-1, 1]. */
-BRDF_FN int cubemap_face(float3 d, float* a, float* b) {
+SS_FN int cubemap_face(float3 d, float* a, float* b) {
     float ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
     if (ax >= ay && ax >= az) {
         float inv = 1.0f / ax;
@@ -63,7 +63,7 @@ BRDF_FN int cubemap_face(float3 d, float* a, float* b) {
 }
 
 /* The point (a, b) of a face as a direction (not normalised: its length is sqrt(1 + a^2 + b^2)). */
-BRDF_FN float3 cubemap_face_point(int face, float a, float b) {
+SS_FN float3 cubemap_face_point(int face, float a, float b) {
     if (face == 0) return make_float3(1.0f, -b, -a);
     if (face == 1) return make_float3(-1.0f, -b, a);
     if (face == 2) return make_float3(a, 1.0f, b);
@@ -74,13 +74,13 @@ BRDF_FN float3 cubemap_face_point(int face, float a, float b) {
 
 /* Column (or row) of the texel holding face coordinate a. Clamped, so a = 1 lands in the last
  * texel and a NaN (from a zero direction) in the first: every direction reads a valid texel. */
-BRDF_FN int cubemap_texel_coordinate(int face_size, float a) {
+SS_FN int cubemap_texel_coordinate(int face_size, float a) {
     float x = (a + 1.0f) * 0.5f * (float)face_size;
     return (int)floor(fmin(fmax(x, 0.0f), (float)(face_size - 1)));
 }
 
 /* Index of the texel direction d falls into. */
-BRDF_FN int cubemap_texel_index(int face_size, float3 d) {
+SS_FN int cubemap_texel_index(int face_size, float3 d) {
     float a, b;
     int face = cubemap_face(d, &a, &b);
     int i = cubemap_texel_coordinate(face_size, a);
@@ -89,7 +89,7 @@ BRDF_FN int cubemap_texel_index(int face_size, float3 d) {
 }
 
 /* dA / d(solid angle) at face point (a, b): (1 + a^2 + b^2)^(3/2) (see the top of this file). */
-BRDF_FN float cubemap_area_per_solid_angle(float a, float b) {
+SS_FN float cubemap_area_per_solid_angle(float a, float b) {
     float r2 = 1.0f + a * a + b * b;
     return r2 * sqrt(r2);
 }

@@ -13,7 +13,7 @@
 #ifndef IBL_DISTRIBUTION2D_H
 #define IBL_DISTRIBUTION2D_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* The largest float below 1: keeps a uniform number and a remapped offset inside [0, 1). */
 #define DISTRIBUTION_ONE_MINUS_EPSILON 0x1.fffffep-1f
@@ -21,7 +21,7 @@
 /* Index k in [0, n) with cdf[k] <= u < cdf[k + 1] (binary search over the n + 1 entries), and the
  * position of u inside that interval, (u - cdf[k]) / (cdf[k + 1] - cdf[k]) in [0, 1), which is
  * uniform and independent of k: it is reused as a fresh uniform number (pbrt's continuous sample). */
-BRDF_FN int distribution1d_sample(GLOBAL_MEM const float* cdf, int n, float u, float* offset) {
+SS_FN int distribution1d_sample(GLOBAL_MEM const float* cdf, int n, float u, float* offset) {
     u = fmin(fmax(u, 0.0f), DISTRIBUTION_ONE_MINUS_EPSILON);
     int lo = 0, hi = n; /* invariant: cdf[lo] <= u < cdf[hi] (cdf[n] = 1 > u) */
     while (hi - lo > 1) {
@@ -36,17 +36,17 @@ BRDF_FN int distribution1d_sample(GLOBAL_MEM const float* cdf, int n, float u, f
     return lo;
 }
 
-BRDF_FN float distribution1d_probability(GLOBAL_MEM const float* cdf, int k) { return cdf[k + 1] - cdf[k]; }
+SS_FN float distribution1d_probability(GLOBAL_MEM const float* cdf, int k) { return cdf[k + 1] - cdf[k]; }
 
 /* A cell of the 2D distribution from two uniform numbers, and the uniform offsets inside it. */
-BRDF_FN void distribution2d_sample(GLOBAL_MEM const float* marginal, GLOBAL_MEM const float* conditional, int rows,
+SS_FN void distribution2d_sample(GLOBAL_MEM const float* marginal, GLOBAL_MEM const float* conditional, int rows,
                                    int columns, float u_row, float u_column, int* row, int* column, float* row_offset,
                                    float* column_offset) {
     *row = distribution1d_sample(marginal, rows, u_row, row_offset);
     *column = distribution1d_sample(conditional + *row * (columns + 1), columns, u_column, column_offset);
 }
 
-BRDF_FN float distribution2d_probability(GLOBAL_MEM const float* marginal, GLOBAL_MEM const float* conditional,
+SS_FN float distribution2d_probability(GLOBAL_MEM const float* marginal, GLOBAL_MEM const float* conditional,
                                          int columns, int row, int column) {
     return distribution1d_probability(marginal, row) *
            distribution1d_probability(conditional + row * (columns + 1), column);

@@ -18,7 +18,7 @@
 #ifndef IBL_ENVIRONMENT_H
 #define IBL_ENVIRONMENT_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "ibl/cubemap.h"
 #include "ibl/distribution2d.h"
 
@@ -31,19 +31,19 @@ typedef struct EnvironmentMap {
 } EnvironmentMap;
 
 /* World direction -> direction in the image's frame: R^-1 w. */
-BRDF_FN float3 environment_to_local(const EnvironmentMap* env, float3 w) {
+SS_FN float3 environment_to_local(const EnvironmentMap* env, float3 w) {
     float c = env->rotation_cos, s = env->rotation_sin;
     return make_float3(c * w.x - s * w.z, w.y, s * w.x + c * w.z);
 }
 
 /* Direction in the image's frame -> world direction: R e. */
-BRDF_FN float3 environment_to_world(const EnvironmentMap* env, float3 e) {
+SS_FN float3 environment_to_world(const EnvironmentMap* env, float3 e) {
     float c = env->rotation_cos, s = env->rotation_sin;
     return make_float3(c * e.x + s * e.z, e.y, -s * e.x + c * e.z);
 }
 
 /* Radiance arriving from world direction `direction` (any length but 0): the nearest texel. */
-BRDF_FN float3 environment_radiance(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
+SS_FN float3 environment_radiance(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
     float4 t = texels[cubemap_texel_index(env->face_size, environment_to_local(env, direction))];
     return make_float3(t.x, t.y, t.z) * env->intensity;
 }
@@ -53,7 +53,7 @@ BRDF_FN float3 environment_radiance(const EnvironmentMap* env, GLOBAL_MEM const 
  * face of a few hundred texels would show blocks. Nothing but the path itself estimates those
  * rays, so the filter changes no MIS weight; the lighting of rough surfaces keeps
  * environment_radiance, the piecewise-constant function whose pdf the sampler matches. */
-BRDF_FN float3 environment_radiance_filtered(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
+SS_FN float3 environment_radiance_filtered(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
     int n = env->face_size;
     float a, b;
     int face = cubemap_face(environment_to_local(env, direction), &a, &b);
@@ -73,13 +73,13 @@ BRDF_FN float3 environment_radiance_filtered(const EnvironmentMap* env, GLOBAL_M
 /* Solid-angle density of a point (a, b) of a texel drawn with probability `probability`, the point
  * uniform in the texel's square of area (2/N)^2 in face coordinates: the area density
  * probability / (2/N)^2 times dA/d(omega) = (1 + a^2 + b^2)^(3/2) (ibl/cubemap.h). */
-BRDF_FN float environment_texel_density(int face_size, float probability, float a, float b) {
+SS_FN float environment_texel_density(int face_size, float probability, float a, float b) {
     float texel_area = sqr(2.0f / (float)face_size);
     return probability / texel_area * cubemap_area_per_solid_angle(a, b);
 }
 
 /* Solid-angle density with which environment_sample() returns world direction `direction`. */
-BRDF_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
+SS_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
                               GLOBAL_MEM const float* conditional_cdf, float3 direction) {
     int n = env->face_size;
     float a, b;
@@ -96,7 +96,7 @@ BRDF_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float*
  * is the drawn texel's density except on a texel edge, where rounding in the normalisation and
  * rotation may move the direction into the neighbour: then *pdf is the neighbour's, the texel
  * environment_radiance() reads, so radiance / pdf never mixes two texels. */
-BRDF_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
+SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
                                   GLOBAL_MEM const float* conditional_cdf, float u1, float u2, float* pdf) {
     int n = env->face_size;
     int row, column;

@@ -1,14 +1,14 @@
 // The single-source environment code (ibl/environment.h and the cube-map and distribution headers
-// it includes), compiled as C++ for the host: namespace ibl, on the vocabulary of namespace brdf.
+// it includes), compiled as C++ for the host: namespace ibl, on the vocabulary of namespace
+// single_source.
 #pragma once
 
-// First: brdf/common.h belongs to namespace brdf, and its include guard keeps it there.
-#include "brdf/brdf.hpp"
+#include "single_source/host_vocabulary.hpp"
 
 namespace ibl {
-using namespace ::brdf;
+using namespace ::single_source;
 #include "ibl/environment.h"
 }  // namespace ibl
 
 static_assert(sizeof(ibl::EnvironmentMap) == 16, "EnvironmentMap must match its OpenCL layout");
-static_assert(sizeof(brdf::float4) == 16, "a texel is four packed floats, like an OpenCL float4");
+static_assert(sizeof(single_source::float4) == 16, "a texel is four packed floats, like an OpenCL float4");

@@ -3,7 +3,7 @@
  * kernel argument by value. */
 #ifndef KERNELS_PINHOLE_CAMERA_H
 #define KERNELS_PINHOLE_CAMERA_H
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 typedef struct PinholeCamera {
     float position[3];
@@ -13,10 +13,10 @@ typedef struct PinholeCamera {
     int width, height;
 } PinholeCamera;
 
-BRDF_FN float3 camera_vector(const float v[3]) { return make_float3(v[0], v[1], v[2]); }
+SS_FN float3 camera_vector(const float v[3]) { return make_float3(v[0], v[1], v[2]); }
 
 /* (x, y) in pixels from the top-left image corner; the image centre looks down `forward`. */
-BRDF_FN float3 pinhole_ray_direction(const PinholeCamera* c, float x, float y) {
+SS_FN float3 pinhole_ray_direction(const PinholeCamera* c, float x, float y) {
     float sx = 2.0f * x / (float)c->width - 1.0f;
     float sy = 1.0f - 2.0f * y / (float)c->height;
     return normalize(camera_vector(c->forward) + sx * camera_vector(c->right) + sy * camera_vector(c->up));

@@ -3,7 +3,7 @@
  * argument by value. */
 #ifndef KERNELS_PREVIEW_SETTINGS_H
 #define KERNELS_PREVIEW_SETTINGS_H
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 #define IBL_SAMPLING_BRDF 0
 #define IBL_SAMPLING_ENV 1

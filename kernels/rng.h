@@ -4,7 +4,7 @@
  * seed gives the same image on every device and in any launch order. */
 #ifndef KERNELS_RNG_H
 #define KERNELS_RNG_H
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 #define PHILOX_M0 0xD2511F53u
 #define PHILOX_M1 0xCD9E8D57u
@@ -15,7 +15,7 @@ typedef struct Philox4 {
     uint v[4];
 } Philox4;
 
-BRDF_FN uint philox_mul_hi(uint a, uint b) {
+SS_FN uint philox_mul_hi(uint a, uint b) {
 #ifdef __OPENCL_C_VERSION__
     return mul_hi(a, b);
 #else
@@ -23,7 +23,7 @@ BRDF_FN uint philox_mul_hi(uint a, uint b) {
 #endif
 }
 
-BRDF_FN Philox4 philox4x32_round(Philox4 c, uint k0, uint k1) {
+SS_FN Philox4 philox4x32_round(Philox4 c, uint k0, uint k1) {
     uint hi0 = philox_mul_hi(PHILOX_M0, c.v[0]), lo0 = PHILOX_M0 * c.v[0];
     uint hi1 = philox_mul_hi(PHILOX_M1, c.v[2]), lo1 = PHILOX_M1 * c.v[2];
     Philox4 out;
@@ -35,7 +35,7 @@ BRDF_FN Philox4 philox4x32_round(Philox4 c, uint k0, uint k1) {
 }
 
 /* Ten rounds, the key bumped by the Weyl constants between rounds. */
-BRDF_FN Philox4 philox4x32_10(Philox4 counter, uint k0, uint k1) {
+SS_FN Philox4 philox4x32_10(Philox4 counter, uint k0, uint k1) {
     for (int round = 0; round < 10; ++round) {
         if (round > 0) {
             k0 += PHILOX_W0;
@@ -47,14 +47,14 @@ BRDF_FN Philox4 philox4x32_10(Philox4 counter, uint k0, uint k1) {
 }
 
 /* The top 24 bits fill a float's mantissa exactly: uniform in [0, 1), never 1. */
-BRDF_FN float uint_to_unit_float(uint x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }
+SS_FN float uint_to_unit_float(uint x) { return (float)(x >> 8) * (1.0f / 16777216.0f); }
 
 /* One stream per (pixel, sample); each draw advances a block counter and yields four numbers. */
 typedef struct Rng {
     uint pixel, sample, block, key0, key1;
 } Rng;
 
-BRDF_FN Rng rng_make(uint pixel, uint sample, uint seed_lo, uint seed_hi) {
+SS_FN Rng rng_make(uint pixel, uint sample, uint seed_lo, uint seed_hi) {
     Rng r;
     r.pixel = pixel;
     r.sample = sample;
@@ -64,7 +64,7 @@ BRDF_FN Rng rng_make(uint pixel, uint sample, uint seed_lo, uint seed_hi) {
     return r;
 }
 
-BRDF_FN float4 rng_next4(Rng* r) {
+SS_FN float4 rng_next4(Rng* r) {
     Philox4 c;
     c.v[0] = r->pixel;
     c.v[1] = r->sample;

@@ -193,11 +193,11 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
         std::string d = emit_distance(object.shape, "p", &w);
         std::string name = "scene_object_" + std::to_string(index);
         functions << "/* object \"" << object.name << "\" (" << object.shape.path << "), material slot " << object.material << " */\n"
-                  << "BRDF_FN float " << name << "(float3 p) {\n" << w.body() << "    return " << d << ";\n}\n\n";
+                  << "SS_FN float " << name << "(float3 p) {\n" << w.body() << "    return " << d << ";\n}\n\n";
         if (has_analytic_normal(object.shape)) {
             FunctionWriter wn(&headers);
             std::string n = emit_normal(object.shape, "p", &wn);
-            functions << "BRDF_FN float3 " << name << "_normal(float3 p) {\n" << wn.body() << "    return " << n << ";\n}\n\n";
+            functions << "SS_FN float3 " << name << "_normal(float3 p) {\n" << wn.body() << "    return " << n << ";\n}\n\n";
             normal_cases << "    case " << index << ": *n = " << name << "_normal(p); return 1;\n";
         }
         nearest << (index == 0 ? "    float d = " : "    e = ") << name << "(p);\n";
@@ -228,22 +228,22 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
         << "#define SCENE_EMITTER_COUNT " << scene.emitters.size() << "\n\n"
         << "/* The BRDF features this scene's materials need (brdf/features.h). */\n"
         << brdf::feature_defines(materials) << "\n"
-        << "#include \"brdf/common.h\"\n";
+        << "#include \"single_source/vocabulary.h\"\n";
     for (const std::string& h : headers) out << "#include \"" << h << "\"\n";
     out << "\n" << functions.str();
     out << "/* The nearest object or emitter (index: objects, then emitters) and its distance. */\n"
-        << "BRDF_FN float scene_nearest(float3 p, int* nearest) {\n    int k = 0;\n";
+        << "SS_FN float scene_nearest(float3 p, int* nearest) {\n    int k = 0;\n";
     if (index > 1) out << "    float e;\n";
     out << nearest.str() << "    *nearest = k;\n    return d;\n}\n\n"
-        << "BRDF_FN int scene_material_slot(int nearest) {\n    switch (nearest) {\n"
+        << "SS_FN int scene_material_slot(int nearest) {\n    switch (nearest) {\n"
         << slot_cases.str() << "    default: return 0;\n    }\n}\n\n"
-        << "BRDF_FN float scene_distance(float3 p) {\n    int k;\n    return scene_nearest(p, &k);\n}\n\n"
+        << "SS_FN float scene_distance(float3 p) {\n    int k;\n    return scene_nearest(p, &k);\n}\n\n"
         << "/* The distance and the material slot of the nearest object. */\n"
-        << "BRDF_FN float scene_distance_material(float3 p, int* material) {\n    int k;\n"
+        << "SS_FN float scene_distance_material(float3 p, int* material) {\n    int k;\n"
         << "    float d = scene_nearest(p, &k);\n    *material = scene_material_slot(k);\n    return d;\n}\n\n"
         << "/* The nearest object's analytic normal where it is one primitive under rigid transforms and\n"
         << " * uniform scales; 0 (no normal) elsewhere. */\n"
-        << "BRDF_FN int scene_analytic_normal(float3 p, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
+        << "SS_FN int scene_analytic_normal(float3 p, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
         << "    switch (k) {\n" << normal_cases.str() << "    default: return 0;\n    }\n}\n\n"
         << "#endif\n";
     return out.str();

@@ -6,21 +6,21 @@
 #ifndef SDF_LIPSCHITZ_H
 #define SDF_LIPSCHITZ_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* fOpUnion, fOpIntersection, fOpSubtraction, fOpUnionSmooth: max(la, lb). */
-BRDF_FN float lipschitz_union(float la, float lb) { return fmax(la, lb); }
+SS_FN float lipschitz_union(float la, float lb) { return fmax(la, lb); }
 
 /* fOpUnionRound, fOpIntersectionRound, fOpSubtractionRound: sqrt(la^2 + lb^2) (sqrt 2 for exact
  * operands); see combinators/union_round.h. */
-BRDF_FN float lipschitz_round(float la, float lb) { return sqrt(la * la + lb * lb); }
+SS_FN float lipschitz_round(float la, float lb) { return sqrt(la * la + lb * lb); }
 
 /* fOpUnionChamfer, fOpIntersectionChamfer, fOpSubtractionChamfer: max(la, lb, (la + lb) / sqrt 2)
  * (sqrt 2 for exact operands); see combinators/union_chamfer.h. */
-BRDF_FN float lipschitz_chamfer(float la, float lb) { return fmax(fmax(la, lb), (la + lb) * 0.70710678118654752f); }
+SS_FN float lipschitz_chamfer(float la, float lb) { return fmax(fmax(la, lb), (la + lb) * 0.70710678118654752f); }
 
 /* fOpDisplaceSine: ld + |amplitude frequency|; see combinators/displace_sine.h. */
-BRDF_FN float lipschitz_displace_sine(float ld, float amplitude, float frequency) {
+SS_FN float lipschitz_displace_sine(float ld, float amplitude, float frequency) {
     return ld + fabs(amplitude * frequency);
 }
 

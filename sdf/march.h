@@ -6,7 +6,7 @@
 #ifndef SDF_MARCH_H
 #define SDF_MARCH_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 #define MARCH_HIT 0
 #define MARCH_MISS 1         /* the ray left max_distance */
@@ -36,7 +36,7 @@ typedef struct MarchResult {
  *  - max_distance 100: rays that leave it see the environment;
  *  - over_relaxation 1 (plain): safe for any bound; 1.2..1.6 saves steps on grazing rays, at the
  *    price of a step back when a step overshoots (see march()). */
-BRDF_FN MarchSettings march_settings_default(float lipschitz) {
+SS_FN MarchSettings march_settings_default(float lipschitz) {
     MarchSettings s;
     s.epsilon_relative = 1e-4f;
     s.epsilon_min = 1e-5f;
@@ -49,7 +49,7 @@ BRDF_FN MarchSettings march_settings_default(float lipschitz) {
 
 /* The hit threshold at distance t along the ray: max(epsilon_min, epsilon_relative t), the scale of
  * the error in a hit point (callers offset secondary rays by a multiple of it). */
-BRDF_FN float march_epsilon(MarchSettings s, float t) { return fmax(s.epsilon_min, s.epsilon_relative * t); }
+SS_FN float march_epsilon(MarchSettings s, float t) { return fmax(s.epsilon_min, s.epsilon_relative * t); }
 
 /* Marches from origin + t_start direction (direction unit) to the first surface, where
  * |scene_distance| / lipschitz < max(epsilon_min, epsilon_relative t).
@@ -64,7 +64,7 @@ BRDF_FN float march_epsilon(MarchSettings s, float t) { return fmax(s.epsilon_mi
  * when they do not (or the sign changed: the ray crossed a surface, the spheres touching just at
  * that surface), a surface may lie in the gap, so the march steps back to t_prev + r_prev -- the
  * plain step -- and goes on with omega = 1. A failed step is not tested for a hit. */
-BRDF_FN MarchResult march(float3 origin, float3 direction, float t_start, MarchSettings s) {
+SS_FN MarchResult march(float3 origin, float3 direction, float t_start, MarchSettings s) {
     MarchResult result;
     result.t = t_start;
     result.status = MARCH_OUT_OF_STEPS;

@@ -22,16 +22,12 @@
 // inline functions and the same qualified name must not mean two scenes (one definition rule).
 #pragma once
 
-#include "brdf/host/glm_builtins.hpp"
-
-// brdf/common.h's vocabulary (sqr, float3_splat, max_component, BRDF_FN) lives in namespace brdf,
-// as in brdf/brdf.hpp; its include guard makes the includes below see it through the using-directive.
-namespace brdf {
-#include "brdf/common.h"
-}  // namespace brdf
+// The vocabulary (float3, sqr, float3_splat, max_component, SS_FN) lives in namespace
+// single_source; its include guard makes the includes below see it through the using-directive.
+#include "single_source/host_vocabulary.hpp"
 
 namespace sdf {
-using namespace brdf;
+using namespace single_source;
 #include "sdf/lipschitz.h"
 #include "sdf/primitives/box.h"
 #include "sdf/primitives/capsule.h"

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <vector>
 
-#include "brdf/host/glm_builtins.hpp"
+#include "single_source/host_vocabulary.hpp"
 
 namespace rng {
-using namespace brdf;
+using namespace single_source;
 #include "kernels/rng.h"
 }  // namespace rng
 

@@ -48,7 +48,7 @@ std::string error_of(const Scene& scene, const lab::scene::CompileOptions& optio
 TEST_CASE("scene compiler: a sphere-only scene's kernel holds no other sdf code", "[scene]") {
     CompiledScene c = lab::scene::compile_scene(lab::scene::parse_scene(kSphereOnly, "sphere.json"));
     lab::opencl::AssembledSource source = lab::scene::assemble_scene_kernel("kernels/scene_probe.cl", c);
-    CHECK(origin_files(source) == std::set<std::string>{"kernels/scene_probe.cl", "scene/generated.h", "brdf/common.h", "sdf/primitives/sphere.h"});
+    CHECK(origin_files(source) == std::set<std::string>{"kernels/scene_probe.cl", "scene/generated.h", "single_source/vocabulary.h", "sdf/primitives/sphere.h"});
     CHECK(source.text.find("fSphere(p, 1.0f)") != std::string::npos);
     for (const char* absent : {"fTorus", "fBox", "fRoundBox", "fCylinder", "fCapsule", "fCone", "fPlane", "pMod3", "pModInterval3", "fOpUnion",
                                "fOpIntersection", "fOpSubtraction", "fOpDisplaceSine", "lipschitz_"}) {
@@ -58,8 +58,8 @@ TEST_CASE("scene compiler: a sphere-only scene's kernel holds no other sdf code"
     // The contract's defines, and the BRDF features of a white Lambert material only.
     for (const char* line : {"#define SCENE_LIPSCHITZ 1.0f\n", "#define SCENE_MATERIAL_COUNT 1\n", "#define SCENE_EMITTER_COUNT 0\n",
                              "#define BRDF_FEATURE_DIFFUSE 1\n", "#define BRDF_FEATURE_GLOSSY 0\n", "#define BRDF_FEATURE_TRANSMISSION 0\n",
-                             "BRDF_FN float scene_distance(float3 p)", "BRDF_FN float scene_distance_material(float3 p, int* material)",
-                             "BRDF_FN int scene_analytic_normal(float3 p, float3* n)", "BRDF_FN float3 scene_object_0_normal(float3 p)"}) {
+                             "SS_FN float scene_distance(float3 p)", "SS_FN float scene_distance_material(float3 p, int* material)",
+                             "SS_FN int scene_analytic_normal(float3 p, float3* n)", "SS_FN float3 scene_object_0_normal(float3 p)"}) {
         INFO(line);
         CHECK(c.source.find(line) != std::string::npos);
     }
@@ -85,8 +85,8 @@ TEST_CASE("scene compiler: the shader ball includes exactly the headers it uses"
     }
     // The body is a combination (tetrahedral normals); the core and the ground have analytic ones.
     CHECK(c.source.find("scene_object_0_normal") == std::string::npos);
-    CHECK(c.source.find("BRDF_FN float3 scene_object_1_normal") != std::string::npos);
-    CHECK(c.source.find("BRDF_FN float3 scene_object_2_normal") != std::string::npos);
+    CHECK(c.source.find("SS_FN float3 scene_object_1_normal") != std::string::npos);
+    CHECK(c.source.find("SS_FN float3 scene_object_2_normal") != std::string::npos);
     CHECK(c.material_names == std::vector<std::string>{"sample", "ground"});
     CHECK(c.camera.fov_degrees == 36.0f);
     CHECK_FALSE(c.environment.has_value());

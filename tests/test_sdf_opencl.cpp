@@ -24,7 +24,7 @@ using namespace sdf;
 
 // clang-format off
 SINGLE_SOURCE(kSceneSource,
-BRDF_FN float scene_distance(float3 p) {
+SS_FN float scene_distance(float3 p) {
     float d = fPlane(p, make_float3(0.0f, 1.0f, 0.0f), 1.0f);
     d = fOpUnionSmooth(d, fSphere(p - make_float3(0.0f, 0.2f, 0.0f), 0.9f), 0.3f);
     d = fOpUnion(d, fOpSubtractionRound(fBox(p - make_float3(2.2f, -0.4f, 0.8f), make_float3(0.6f, 0.6f, 0.6f)),
@@ -33,7 +33,7 @@ BRDF_FN float scene_distance(float3 p) {
                                          make_float3(0.0f, 0.0f, -1.0f), make_float3(0.0f, 0.0f, 1.0f)), 0.5f, 0.2f));
     return d;
 }
-BRDF_FN int scene_analytic_normal(float3 p, float3* n) {
+SS_FN int scene_analytic_normal(float3 p, float3* n) {
     if (p.x > 1.5f) return 0;
     *n = nSphere(p - make_float3(0.0f, 0.2f, 0.0f), 0.9f);
     return 1;
@@ -45,17 +45,17 @@ BRDF_FN int scene_analytic_normal(float3 p, float3* n) {
 
 // clang-format off
 SINGLE_SOURCE(kProbeSource,
-BRDF_FN void put3(float* out, int* k, float3 v) {
+SS_FN void put3(float* out, int* k, float3 v) {
     out[*k] = v.x;
     out[*k + 1] = v.y;
     out[*k + 2] = v.z;
     *k += 3;
 }
-BRDF_FN void put(float* out, int* k, float v) {
+SS_FN void put(float* out, int* k, float v) {
     out[*k] = v;
     *k += 1;
 }
-BRDF_FN int probe_point(float3 p, float* out) {
+SS_FN int probe_point(float3 p, float* out) {
     int k = 0;
     float3 hs = make_float3(0.8f, 0.5f, 1.1f);
     put(out, &k, fSphere(p, 1.1f));             put3(out, &k, nSphere(p, 1.1f));
@@ -87,7 +87,7 @@ BRDF_FN int probe_point(float3 p, float* out) {
     put3(out, &k, scene_normal(p, 1e-3f, NORMAL_ANALYTIC));
     return k;
 }
-BRDF_FN int probe_ray(float3 o, float3 d, float* out) {
+SS_FN int probe_ray(float3 o, float3 d, float* out) {
     int k = 0;
     MarchSettings s = march_settings_default(1.0f);
     for (int pass = 0; pass < 2; ++pass) {
@@ -112,7 +112,7 @@ const int kRayValues = 12;
 
 const char* const kKernel = R"(
 #pragma OPENCL FP_CONTRACT OFF
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/lipschitz.h"
 #include "sdf/primitives/sphere.h"
 #include "sdf/primitives/plane.h"

@@ -2,7 +2,7 @@
 #ifndef SDF_COMBINATORS_DISPLACE_SINE_H
 #define SDF_COMBINATORS_DISPLACE_SINE_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* d + A sin(w x) sin(w y) sin(w z), with A = amplitude and w = frequency (radians per unit) at the
  * point p where d was evaluated. No longer a distance: the result is a bound only once divided by
@@ -15,7 +15,7 @@
  * So |grad g| <= |A w|, reached (e.g. at wx = wz = pi/2, y = 0, where grad g = (0, A w, 0)), and the
  * bound is L_d + |A w| (lipschitz_displace_sine) -- tight when grad d lines up with grad g there,
  * as for a plane y = const. The component-wise estimate L_d + |A w| sqrt 3 is also safe but loose. */
-BRDF_FN float fOpDisplaceSine(float d, float3 p, float amplitude, float frequency) {
+SS_FN float fOpDisplaceSine(float d, float3 p, float amplitude, float frequency) {
     return d + amplitude * sin(frequency * p.x) * sin(frequency * p.y) * sin(frequency * p.z);
 }
 

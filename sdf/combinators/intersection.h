@@ -2,10 +2,10 @@
 #ifndef SDF_COMBINATORS_INTERSECTION_H
 #define SDF_COMBINATORS_INTERSECTION_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* max(a, b). A bound, exact inside when a and b are (outside, near edges the nearest point is on
  * the edge, farther than both). Lipschitz bound max(La, Lb) (lipschitz_union). */
-BRDF_FN float fOpIntersection(float a, float b) { return fmax(a, b); }
+SS_FN float fOpIntersection(float a, float b) { return fmax(a, b); }
 
 #endif

@@ -2,11 +2,11 @@
 #ifndef SDF_COMBINATORS_INTERSECTION_CHAMFER_H
 #define SDF_COMBINATORS_INTERSECTION_CHAMFER_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/combinators/union_chamfer.h"
 
 /* -fOpUnionChamfer(-a, -b, r) = max(a, b, (a + b + r) / sqrt 2). Lipschitz bound
  * max(La, Lb, (La + Lb) / sqrt 2) (lipschitz_chamfer). */
-BRDF_FN float fOpIntersectionChamfer(float a, float b, float r) { return -fOpUnionChamfer(-a, -b, r); }
+SS_FN float fOpIntersectionChamfer(float a, float b, float r) { return -fOpUnionChamfer(-a, -b, r); }
 
 #endif

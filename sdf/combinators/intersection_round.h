@@ -2,12 +2,12 @@
 #ifndef SDF_COMBINATORS_INTERSECTION_ROUND_H
 #define SDF_COMBINATORS_INTERSECTION_ROUND_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/combinators/union_round.h"
 
 /* The complement of the round union of the complements: -fOpUnionRound(-a, -b, r), which is
  * min(-r, max(a, b)) + |(max(r + a, 0), max(r + b, 0))|. Lipschitz bound sqrt(La^2 + Lb^2)
  * (lipschitz_round), reached far outside both solids with parallel gradients. */
-BRDF_FN float fOpIntersectionRound(float a, float b, float r) { return -fOpUnionRound(-a, -b, r); }
+SS_FN float fOpIntersectionRound(float a, float b, float r) { return -fOpUnionRound(-a, -b, r); }
 
 #endif

@@ -2,11 +2,11 @@
 #ifndef SDF_COMBINATORS_SUBTRACTION_H
 #define SDF_COMBINATORS_SUBTRACTION_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/combinators/intersection.h"
 
 /* a intersected with the complement of b: max(a, -b). A bound. Lipschitz bound max(La, Lb)
  * (lipschitz_union): negation keeps a bound. */
-BRDF_FN float fOpSubtraction(float a, float b) { return fOpIntersection(a, -b); }
+SS_FN float fOpSubtraction(float a, float b) { return fOpIntersection(a, -b); }
 
 #endif

@@ -2,11 +2,11 @@
 #ifndef SDF_COMBINATORS_SUBTRACTION_CHAMFER_H
 #define SDF_COMBINATORS_SUBTRACTION_CHAMFER_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/combinators/intersection_chamfer.h"
 
 /* fOpIntersectionChamfer(a, -b, r). Lipschitz bound max(La, Lb, (La + Lb) / sqrt 2)
  * (lipschitz_chamfer). */
-BRDF_FN float fOpSubtractionChamfer(float a, float b, float r) { return fOpIntersectionChamfer(a, -b, r); }
+SS_FN float fOpSubtractionChamfer(float a, float b, float r) { return fOpIntersectionChamfer(a, -b, r); }
 
 #endif

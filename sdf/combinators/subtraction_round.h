@@ -2,10 +2,10 @@
 #ifndef SDF_COMBINATORS_SUBTRACTION_ROUND_H
 #define SDF_COMBINATORS_SUBTRACTION_ROUND_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/combinators/intersection_round.h"
 
 /* fOpIntersectionRound(a, -b, r). Lipschitz bound sqrt(La^2 + Lb^2) (lipschitz_round). */
-BRDF_FN float fOpSubtractionRound(float a, float b, float r) { return fOpIntersectionRound(a, -b, r); }
+SS_FN float fOpSubtractionRound(float a, float b, float r) { return fOpIntersectionRound(a, -b, r); }
 
 #endif

@@ -2,11 +2,11 @@
 #ifndef SDF_COMBINATORS_UNION_H
 #define SDF_COMBINATORS_UNION_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* min(a, b). Exact outside when a and b are; inside it is a bound (the nearer surface may be
  * buried in the other solid). Lipschitz bound max(La, Lb) (lipschitz_union): the minimum of
  * L-Lipschitz functions is L-Lipschitz. */
-BRDF_FN float fOpUnion(float a, float b) { return fmin(a, b); }
+SS_FN float fOpUnion(float a, float b) { return fmin(a, b); }
 
 #endif

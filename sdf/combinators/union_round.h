@@ -2,7 +2,7 @@
 #ifndef SDF_COMBINATORS_UNION_ROUND_H
 #define SDF_COMBINATORS_UNION_ROUND_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* With u = (max(r - a, 0), max(r - b, 0)):  f = max(r, min(a, b)) - |u|.
  * Where both a, b >= r it is min(a, b); where one is below r it is that one; where both are below r
@@ -16,7 +16,7 @@
  * |grad f| -> sqrt 2. With exact operands whose gradients make an angle theta it is
  * sqrt(1 + cos theta * 2 (r - a)(r - b) / |u|^2) <= sqrt(1 + max(cos theta, 0)): 1 for
  * perpendicular surfaces (r <= 0 gives max(0, min(a, b)) - |max(-a, -b, 0)|, still this bound). */
-BRDF_FN float fOpUnionRound(float a, float b, float r) {
+SS_FN float fOpUnionRound(float a, float b, float r) {
     float2 u = fmax(make_float2(r - a, r - b), make_float2(0.0f, 0.0f));
     return fmax(r, fmin(a, b)) - length(u);
 }

@@ -2,7 +2,7 @@
 #ifndef SDF_COMBINATORS_UNION_SMOOTH_H
 #define SDF_COMBINATORS_UNION_SMOOTH_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* Quadratic smooth minimum with blend radius k > 0 (k <= 0 is fOpUnion):
  *   h = clamp(1/2 + (b - a) / (2k), 0, 1),   f = b + (a - b) h - k h (1 - h).
@@ -14,7 +14,7 @@
  * because (a - b) = k (1 - 2h): the bracket vanishes. Hence grad f = h grad a + (1 - h) grad b, a
  * CONVEX COMBINATION of the operands' gradients, and |grad f| <= h La + (1 - h) Lb <= max(La, Lb)
  * (lipschitz_union). Outside the band f is a or b. */
-BRDF_FN float fOpUnionSmooth(float a, float b, float k) {
+SS_FN float fOpUnionSmooth(float a, float b, float k) {
     if (!(k > 0.0f)) return fmin(a, b);
     float h = clamp(0.5f + 0.5f * (b - a) / k, 0.0f, 1.0f);
     return mix(b, a, h) - k * h * (1.0f - h);

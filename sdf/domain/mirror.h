@@ -2,7 +2,7 @@
 #ifndef SDF_DOMAIN_MIRROR_H
 #define SDF_DOMAIN_MIRROR_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* Folds space about the plane n.p + offset = 0 (n unit): a point on the negative side is reflected
  * onto the positive side, so whatever the shape has on the positive side appears mirrored on the
@@ -11,7 +11,7 @@
  * reflection can only bring them closer), so f(pMirror(p)) is L_f-Lipschitz for ANY shape, and its
  * zero set is what is rendered. It is the exact distance of shape + mirror image when the shape lies
  * on the positive side; a shape that crosses the plane loses its negative-side part. */
-BRDF_FN float3 pMirror(float3 p, float3 n, float offset) {
+SS_FN float3 pMirror(float3 p, float3 n, float offset) {
     float d = dot(p, n) + offset;
     if (d >= 0.0f) return p;
     return p - n * (2.0f * d);

@@ -2,12 +2,12 @@
 #ifndef SDF_DOMAIN_MOD_INTERVAL3_H
 #define SDF_DOMAIN_MOD_INTERVAL3_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/domain/mod3.h"
 
 /* x relative to the nearest of the copies centred on period k, k in [count_min, count_max]
  * (whole numbers, count_min <= count_max); period <= 0 means no repetition along this axis. */
-BRDF_FN float pModInterval1(float x, float period, float count_min, float count_max) {
+SS_FN float pModInterval1(float x, float period, float count_min, float count_max) {
     if (!(period > 0.0f)) return x;
     return x - period * clamp(mod_cell(x, period), count_min, count_max);
 }
@@ -18,7 +18,7 @@ BRDF_FN float pModInterval1(float x, float period, float count_min, float count_
  * Bound: as pMod3 (see mod3.h): L_f-Lipschitz, and exact for the whole block, when the shape fits
  * inside its cell and is symmetric about the cell's mid-planes; otherwise the field jumps at the
  * faces between copies and the bound is broken. */
-BRDF_FN float3 pModInterval3(float3 p, float3 period, float3 count_min, float3 count_max) {
+SS_FN float3 pModInterval3(float3 p, float3 period, float3 count_min, float3 count_max) {
     return make_float3(pModInterval1(p.x, period.x, count_min.x, count_max.x),
                        pModInterval1(p.y, period.y, count_min.y, count_max.y),
                        pModInterval1(p.z, period.z, count_min.z, count_max.z));

@@ -2,12 +2,12 @@
 #ifndef SDF_PRIMITIVES_BOX_H
 #define SDF_PRIMITIVES_BOX_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* Exact signed distance. With q = |p| - half_size (per axis), a point outside is nearest to the
  * clamped point, at distance |max(q, 0)|; a point inside is nearest to the face it is closest to,
  * at distance -max_i q_i. The two terms are never both non-zero. Lipschitz bound 1. */
-BRDF_FN float fBox(float3 p, float3 half_size) {
+SS_FN float fBox(float3 p, float3 half_size) {
     float3 q = fabs(p) - half_size;
     return length(fmax(q, float3_splat(0.0f))) + fmin(max_component(q), 0.0f);
 }
@@ -15,7 +15,7 @@ BRDF_FN float fBox(float3 p, float3 half_size) {
 /* Unit outward normal, the gradient of fBox: outside, the direction from the nearest point of the
  * box (an axis on a face, a diagonal near an edge or corner); inside or on the surface, the normal
  * of the nearest face (ties between faces go to x, then y, then z). */
-BRDF_FN float3 nBox(float3 p, float3 half_size) {
+SS_FN float3 nBox(float3 p, float3 half_size) {
     float3 q = fabs(p) - half_size;
     float3 s = make_float3(p.x < 0.0f ? -1.0f : 1.0f, p.y < 0.0f ? -1.0f : 1.0f, p.z < 0.0f ? -1.0f : 1.0f);
     float3 outside = fmax(q, float3_splat(0.0f));

@@ -4,19 +4,19 @@
 #ifndef SDF_PRIMITIVES_CAPSULE_H
 #define SDF_PRIMITIVES_CAPSULE_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* p minus its nearest point on the core segment. */
-BRDF_FN float3 capsule_offset(float3 p, float half_height) {
+SS_FN float3 capsule_offset(float3 p, float half_height) {
     return make_float3(p.x, p.y - clamp(p.y, -half_height, half_height), p.z);
 }
 
 /* Exact signed distance: distance to the core segment minus r. Lipschitz bound 1. */
-BRDF_FN float fCapsule(float3 p, float r, float half_height) { return length(capsule_offset(p, half_height)) - r; }
+SS_FN float fCapsule(float3 p, float r, float half_height) { return length(capsule_offset(p, half_height)) - r; }
 
 /* Unit outward normal: from the nearest point of the segment towards p (undefined on the segment;
  * +x is returned there). */
-BRDF_FN float3 nCapsule(float3 p, float r, float half_height) {
+SS_FN float3 nCapsule(float3 p, float r, float half_height) {
     (void)r;
     float3 v = capsule_offset(p, half_height);
     float l = length(v);

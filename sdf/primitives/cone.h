@@ -3,7 +3,7 @@
 #ifndef SDF_PRIMITIVES_CONE_H
 #define SDF_PRIMITIVES_CONE_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/primitives/radial.h"
 
 /* The cone's meridian section, in the half-plane (rho = |p.xz|, y): the triangle with vertices
@@ -18,7 +18,7 @@ typedef struct ConeFeatures {
     int inside;       /* 1 when (rho, y) is in the closed triangle */
 } ConeFeatures;
 
-BRDF_FN ConeFeatures cone_features(float rho, float y, float r, float height) {
+SS_FN ConeFeatures cone_features(float rho, float y, float r, float height) {
     ConeFeatures c;
     c.to_base = make_float2(fmax(rho - r, 0.0f), y);
     float2 e = make_float2(-r, height);  /* rim -> apex */
@@ -32,7 +32,7 @@ BRDF_FN ConeFeatures cone_features(float rho, float y, float r, float height) {
 
 /* Exact signed distance: the distance to the nearer of the two segments, negative inside.
  * Lipschitz bound 1. */
-BRDF_FN float fCone(float3 p, float r, float height) {
+SS_FN float fCone(float3 p, float r, float height) {
     ConeFeatures c = cone_features(radius_y(p), p.y, r, height);
     float d = sqrt(fmin(dot(c.to_base, c.to_base), dot(c.to_slant, c.to_slant)));
     return c.inside ? -d : d;
@@ -43,7 +43,7 @@ BRDF_FN float fCone(float3 p, float r, float height) {
  * slant (the slant wins ties, e.g. on the rim). Outside it is the direction from the nearest point:
  * the face normal again when that point is inside a face, otherwise the direction from the rim or
  * apex. On the axis the radial direction is +x (radial.h). */
-BRDF_FN float3 nCone(float3 p, float r, float height) {
+SS_FN float3 nCone(float3 p, float r, float height) {
     float rho = radius_y(p);
     ConeFeatures c = cone_features(rho, p.y, r, height);
     float slant_len = length(make_float2(height, r));

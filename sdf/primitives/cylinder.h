@@ -3,14 +3,14 @@
 #ifndef SDF_PRIMITIVES_CYLINDER_H
 #define SDF_PRIMITIVES_CYLINDER_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/primitives/radial.h"
 
 /* Exact signed distance. In the meridian half-plane (rho = |p.xz|, y) the cylinder is the
  * rectangle [0, r] x [-half_height, half_height], whose axis edge is interior to the solid of
  * revolution; so this is the 2D box distance of (rho, |y|) against (r, half_height), the same
  * construction as fBox. Lipschitz bound 1. */
-BRDF_FN float fCylinder(float3 p, float r, float half_height) {
+SS_FN float fCylinder(float3 p, float r, float half_height) {
     float2 q = make_float2(radius_y(p) - r, fabs(p.y) - half_height);
     return length(fmax(q, make_float2(0.0f, 0.0f))) + fmin(fmax(q.x, q.y), 0.0f);
 }
@@ -18,7 +18,7 @@ BRDF_FN float fCylinder(float3 p, float r, float half_height) {
 /* Unit outward normal, the gradient of fCylinder: outside, from the nearest point (side, cap or
  * rim); inside or on the surface, the nearest of side and cap (ties go to the side). On the axis
  * the side direction is taken as +x. */
-BRDF_FN float3 nCylinder(float3 p, float r, float half_height) {
+SS_FN float3 nCylinder(float3 p, float r, float half_height) {
     float y_sign = p.y < 0.0f ? -1.0f : 1.0f;
     float2 q = make_float2(radius_y(p) - r, fabs(p.y) - half_height);
     float2 outside = fmax(q, make_float2(0.0f, 0.0f));

@@ -2,15 +2,15 @@
 #ifndef SDF_PRIMITIVES_PLANE_H
 #define SDF_PRIMITIVES_PLANE_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* Exact signed distance n.p + offset for a unit normal n (the plane lies at distance -offset from
  * the origin along n; fPlane(p, (0,1,0), 0) is the ground y = 0 with the solid below). Lipschitz
  * bound |n| = 1; a non-unit n scales the field by |n|, so the scene compiler normalises it. */
-BRDF_FN float fPlane(float3 p, float3 n, float offset) { return dot(p, n) + offset; }
+SS_FN float fPlane(float3 p, float3 n, float offset) { return dot(p, n) + offset; }
 
 /* Unit outward normal: n itself, everywhere. */
-BRDF_FN float3 nPlane(float3 p, float3 n, float offset) {
+SS_FN float3 nPlane(float3 p, float3 n, float offset) {
     (void)p;
     (void)offset;
     return n;

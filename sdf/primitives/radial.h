@@ -3,21 +3,21 @@
 #ifndef SDF_PRIMITIVES_RADIAL_H
 #define SDF_PRIMITIVES_RADIAL_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 
 /* Distance from the y axis. */
-BRDF_FN float radius_y(float3 p) { return length(make_float2(p.x, p.z)); }
+SS_FN float radius_y(float3 p) { return length(make_float2(p.x, p.z)); }
 
 /* Unit direction from the y axis towards p, in the xz plane; +x on the axis itself, where every
  * direction is as good. */
-BRDF_FN float3 radial_direction_y(float3 p) {
+SS_FN float3 radial_direction_y(float3 p) {
     float rho = radius_y(p);
     if (rho > 0.0f) return make_float3(p.x / rho, 0.0f, p.z / rho);
     return make_float3(1.0f, 0.0f, 0.0f);
 }
 
 /* The 3D direction of the meridian-plane direction (d_rho, d_y) at p. */
-BRDF_FN float3 meridian_to_world(float3 p, float d_rho, float d_y) {
+SS_FN float3 meridian_to_world(float3 p, float d_rho, float d_y) {
     return radial_direction_y(p) * d_rho + make_float3(0.0f, d_y, 0.0f);
 }
 

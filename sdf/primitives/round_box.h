@@ -4,12 +4,12 @@
 #ifndef SDF_PRIMITIVES_ROUND_BOX_H
 #define SDF_PRIMITIVES_ROUND_BOX_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/primitives/box.h"
 
 /* The inner box, shrunk by the radius on every side; the radius is capped at the smallest half
  * extent so the inner box never turns inside out (the scene compiler should reject such a radius). */
-BRDF_FN float3 round_box_core(float3 half_size, float radius) {
+SS_FN float3 round_box_core(float3 half_size, float radius) {
     float r = fmin(radius, fmin(half_size.x, fmin(half_size.y, half_size.z)));
     return half_size - float3_splat(r);
 }
@@ -18,13 +18,13 @@ BRDF_FN float3 round_box_core(float3 half_size, float radius) {
  * B the signed distance of its dilation is d_B - radius everywhere: outside, following the gradient
  * of d_B raises it at rate 1 and no path can do better (d_B is 1-Lipschitz); inside, the same
  * argument reversed. So this is exact, Lipschitz bound 1. */
-BRDF_FN float fRoundBox(float3 p, float3 half_size, float radius) {
+SS_FN float fRoundBox(float3 p, float3 half_size, float radius) {
     float3 core = round_box_core(half_size, radius);
     float r = half_size.x - core.x;
     return fBox(p, core) - r;
 }
 
 /* Unit outward normal: the gradient of the inner box's distance (a constant offset keeps it). */
-BRDF_FN float3 nRoundBox(float3 p, float3 half_size, float radius) { return nBox(p, round_box_core(half_size, radius)); }
+SS_FN float3 nRoundBox(float3 p, float3 half_size, float radius) { return nBox(p, round_box_core(half_size, radius)); }
 
 #endif

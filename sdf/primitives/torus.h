@@ -3,20 +3,20 @@
 #ifndef SDF_PRIMITIVES_TORUS_H
 #define SDF_PRIMITIVES_TORUS_H
 
-#include "brdf/common.h"
+#include "single_source/vocabulary.h"
 #include "sdf/primitives/radial.h"
 
 /* Exact signed distance: the distance to the core circle minus minor. In the meridian half-plane
  * (rho = |p.xz|, y) the core circle is the point (major, 0), so that distance is
  * |(rho - major, y)|. Lipschitz bound 1. */
-BRDF_FN float fTorus(float3 p, float major, float minor) {
+SS_FN float fTorus(float3 p, float major, float minor) {
     float2 q = make_float2(radius_y(p) - major, p.y);
     return length(q) - minor;
 }
 
 /* Unit outward normal: from the nearest point of the core circle towards p. On the y axis every
  * point of the circle is nearest; +x is taken. Undefined on the core circle itself ((0,1,0)). */
-BRDF_FN float3 nTorus(float3 p, float major, float minor) {
+SS_FN float3 nTorus(float3 p, float major, float minor) {
     (void)minor;
     float3 v = p - radial_direction_y(p) * major;
     float l = length(v);

@@ -1,12 +1,18 @@
+// The single-source vocabulary on the host: namespace single_source.
+//
 // Maps the OpenCL C vocabulary used by the single-source headers (brdf/, sdf/, ibl/, kernels/*.h)
-// onto GLM and <cmath>, so the very same .h files compile as C++ on the host. Only what those
+// onto GLM and <cmath>, so the very same .h files compile as C++ on the host, then includes
+// single_source/vocabulary.h (SS_FN, sqr, float3_splat, ...) in the same namespace. Only what those
 // headers use is mapped; swizzles (.xy) are not, so the headers build vectors with make_floatN().
+// A module's host header (brdf/brdf.hpp, sdf/sdf.hpp, ibl/ibl.hpp) includes this first and its own
+// headers inside its namespace with `using namespace single_source;`; the vocabulary's include
+// guard keeps it here.
 #pragma once
 
 #include <cmath>
 #include <glm/glm.hpp>
 
-namespace brdf {
+namespace single_source {
 
 using float2 = glm::vec2;
 using float3 = glm::vec3;
@@ -67,4 +73,7 @@ inline float3 mix(float3 x, float3 y, float a) { return x + (y - x) * a; }
 inline float4 mix(float4 x, float4 y, float a) { return x + (y - x) * a; }
 inline bool isfinite_f(float x) { return std::isfinite(x); }
 
-}  // namespace brdf
+
+#include "single_source/vocabulary.h"
+
+}  // namespace single_source

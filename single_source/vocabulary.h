@@ -1,0 +1,35 @@
+/* Shared vocabulary of the single-source modules (brdf, sdf, ibl, kernels).
+ * Every such header is written in the common subset of OpenCL C 1.2 and C++17: no references,
+ * no overloading, no templates; vectors are float3 built with make_float3(); functions are SS_FN
+ * ("single source"). On the host, single_source/host_vocabulary.hpp supplies float3 and the
+ * built-ins; in a kernel, OpenCL does. */
+#ifndef SINGLE_SOURCE_VOCABULARY_H
+#define SINGLE_SOURCE_VOCABULARY_H
+
+#ifdef __OPENCL_C_VERSION__
+#define SS_FN static inline
+#define make_float2(x, y) ((float2)((x), (y)))
+#define make_float3(x, y, z) ((float3)((x), (y), (z)))
+#define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
+#define isfinite_f(x) isfinite(x)
+/* Address spaces of buffer pointers; the host has one flat address space. */
+#define GLOBAL_MEM __global
+#define CONSTANT_MEM __constant
+#else
+#define SS_FN inline
+#define GLOBAL_MEM
+#define CONSTANT_MEM
+#endif
+
+#define SS_PI 3.14159265358979323846f
+#define SS_INV_PI 0.31830988618379067154f
+#define SS_INV_4PI 0.07957747154594766788f
+
+SS_FN float sqr(float x) { return x * x; }
+SS_FN float safe_sqrt(float x) { return sqrt(fmax(x, 0.0f)); }
+SS_FN float pow5(float x) { float x2 = x * x; return x2 * x2 * x; }
+SS_FN float3 float3_splat(float v) { return make_float3(v, v, v); }
+SS_FN float max_component(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
+SS_FN bool finite3(float3 v) { return isfinite_f(v.x) && isfinite_f(v.y) && isfinite_f(v.z); }
+
+#endif
