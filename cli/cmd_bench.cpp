@@ -238,6 +238,7 @@ void register_bench(CLI::App& app) {
     brdf_cmd->add_flag("--sorted", options->sorted, "Give the presets consecutive blocks of items instead of alternating them");
     brdf_cmd->callback([options] { run_bench_brdf(*options); });
     register_bench_preview(*bench);
+    register_bench_render(*bench);
 }
 
 }  // namespace lab::cli

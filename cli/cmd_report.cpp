@@ -12,7 +12,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
-#include "cli/preview_job.hpp"
+#include "cli/render_job.hpp"
+#include "render/opencl_renderer.hpp"
 #include "cli/report_groups.hpp"
 #include "common/input_error.hpp"
 #include "opencl/runtime.hpp"
@@ -45,25 +46,23 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
     std::vector<plots::SheetImage> sheet;
     opencl::Runtime runtime(o.device);
     for (const brdf::Preset& p : presets) {
-        PreviewJobOptions job_options;
+        RenderJobOptions job_options;
         job_options.material = p.source;
         job_options.env = o.env;
         job_options.size = o.preview_size;
-        job_options.device = o.device;
-        PreviewJob job = prepare_preview_job(job_options);
+        RenderJob job = prepare_render_job(job_options);
         std::string name = "preview_" + fs::path(p.source).stem().string();
         std::printf("report: preview of %s -> %s.png\n", p.name.c_str(), (out / name).c_str());
         std::fflush(stdout);
-        ibl::PreviewRenderer renderer(runtime, job.scene, job.environment, job.settings);
-        RenderLimits limits;
+        render::OpenClRenderer renderer(runtime, job.input);
+        render::RenderLimits limits;
         limits.samples = o.preview_spp;
         limits.quiet = true;
-        render_progressively(renderer, limits);
-        ibl::PreviewStatistics stats = renderer.statistics();
-        film::ImageMetadata metadata = preview_metadata(job, stats, runtime.device().description());
-        film::ImageRgb image = renderer.image();
-        write_preview_images((out / (name + ".exr")).string(), image, film::ToneMap::Aces, 0.0f, metadata);
-        print_preview_statistics(stats, true);  // only the warnings
+        render::render_progressively(renderer, limits);
+        render::RenderStatistics stats = renderer.statistics();
+        render::write_render_images((out / (name + ".exr")).string(), renderer.image(), film::ToneMap::Aces, 0.0f,
+                                    job_metadata(job, renderer, stats));
+        render::print_render_statistics(stats, true);  // only the warnings
         written.push_back(name + ".png");
         sheet.push_back({p.name, (out / (name + ".png")).string()});
     }
@@ -77,7 +76,7 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
 void run_report(const ReportOptions& o) {
     std::vector<brdf::Preset> presets = load_preset_folder(o.presets, "--presets");
     int width = 0, height = 0;
-    parse_image_size(o.preview_size, "--preview-size", &width, &height);
+    render::parse_image_size(o.preview_size, "--preview-size", &width, &height);
     if (o.preview_spp < 1 || o.preview_spp > 1 << 20) throw InputError("--preview-spp", "", "must be in [1, 1048576]");
     if (o.preview && !fs::exists(o.env) && o.env.rfind("constant:", 0) != 0)
         throw InputError(o.env, "", "no such file (--env; run from the repository root, or pass --env)");

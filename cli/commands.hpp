@@ -13,7 +13,10 @@ void register_bench(CLI::App& app);
 void register_report(CLI::App& app);
 void register_devices(CLI::App& app);
 void register_preview(CLI::App& app);
+void register_render(CLI::App& app);
 // `bench preview`, registered under the bench group by register_bench
 void register_bench_preview(CLI::App& bench);
+// `bench render`, likewise
+void register_bench_render(CLI::App& bench);
 
 }  // namespace lab::cli

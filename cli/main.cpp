@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     lab::cli::register_bench(app);
     lab::cli::register_devices(app);
     lab::cli::register_preview(app);
+    lab::cli::register_render(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

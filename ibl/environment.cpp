@@ -102,8 +102,7 @@ Environment::Environment(std::vector<brdf::float4> texels, int face_size, std::s
                          const EnvironmentOptions& options)
     : texels_(std::move(texels)), source_(std::move(source)) {
     map_.face_size = face_size;
-    rotation(options.rotation_degrees, &map_.rotation_cos, &map_.rotation_sin);
-    map_.intensity = std::exp2(options.exposure_stops);
+    set_transform(options.rotation_degrees, options.exposure_stops);
     CubemapDistribution d = build_cubemap_distribution(texels_, face_size);
     marginal_cdf_ = std::move(d.marginal_cdf);
     conditional_cdf_ = std::move(d.conditional_cdf);
@@ -123,6 +122,18 @@ Environment Environment::constant(brdf::float3 radiance, std::string source, con
     const int n = options.face_size > 0 ? options.face_size : kMinAutomaticFaceSize;
     std::vector<brdf::float4> texels(size_t(CUBEMAP_FACES) * n * n, brdf::float4(radiance, 1.0f));
     return Environment(std::move(texels), n, std::move(source), options);
+}
+
+void Environment::set_transform(float rotation_degrees, float exposure_stops) {
+    EnvironmentOptions options;
+    options.rotation_degrees = rotation_degrees;
+    options.exposure_stops = exposure_stops;
+    options.origin = source_;
+    validate(options);
+    rotation(rotation_degrees, &map_.rotation_cos, &map_.rotation_sin);
+    map_.intensity = std::exp2(exposure_stops);
+    rotation_degrees_ = rotation_degrees;
+    exposure_stops_ = exposure_stops;
 }
 
 brdf::float3 Environment::radiance(brdf::float3 direction) const {

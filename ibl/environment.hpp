@@ -40,6 +40,14 @@ public:
     // The file name, or the constant spec, this environment came from.
     const std::string& source() const { return source_; }
 
+    // Turns and scales the environment anew: absolute values, as EnvironmentOptions gives them
+    // (InputError naming the source for a non-finite rotation or an exposure outside [-64, 64]).
+    // Only the kernel argument map() changes: the texels and their distribution stay, since the
+    // rotation turns directions and the intensity scales every texel alike.
+    void set_transform(float rotation_degrees, float exposure_stops);
+    float rotation_degrees() const { return rotation_degrees_; }
+    float exposure_stops() const { return exposure_stops_; }
+
     // The single-source functions of ibl/environment.h on this environment (world directions).
     brdf::float3 radiance(brdf::float3 direction) const;
     brdf::float3 radiance_filtered(brdf::float3 direction) const;
@@ -53,6 +61,7 @@ private:
     std::vector<brdf::float4> texels_;
     std::vector<float> marginal_cdf_, conditional_cdf_;
     std::string source_;
+    float rotation_degrees_ = 0.0f, exposure_stops_ = 0.0f;
 };
 
 // Reads an equirectangular OpenEXR (.exr) or Radiance HDR (.hdr) file: 2:1, one channel (grey) or

@@ -12,25 +12,16 @@
 
 #include "brdf/host/parameters.hpp"
 #include "film/image_stats.hpp"
-#include "ibl/environment.hpp"
-#include "ibl/preview_renderer.hpp"
-#include "ibl/preview_scene.hpp"
 #include "opencl/runtime.hpp"
-#include "scene/load_scene.hpp"
+#include "render/opencl_renderer.hpp"
 #include "tests/lobe_material.hpp"
+#include "tests/render_inputs.hpp"
 #include "validation/albedo.hpp"
 
 namespace {
 
 using lab::film::ImageRgb;
-using lab::ibl::IblSampling;
-
-brdf::Preset preset_of(const brdf::Material& m, const std::string& name) {
-    brdf::Preset p;
-    p.name = name;
-    p.material = m;
-    return p;
-}
+using IblSampling = lab::render::LightSampling;
 
 brdf::Material white_lambert() {
     brdf::Material m = lobe_material(1, 0, 0, 0);
@@ -49,10 +40,7 @@ brdf::Material white_conductor(int distribution, float roughness) {
     return m;
 }
 
-struct Render {
-    ImageRgb image;
-    lab::ibl::PreviewStatistics stats;
-};
+using Render = RenderResult;
 
 // A lone sphere filling most of the image: convex, so every reflected ray escapes and a pixel
 // shows exactly the single-scattering albedo at its view angle.
@@ -64,23 +52,13 @@ const char* kSphereScene = R"({
 
 Render furnace(const lab::opencl::Runtime& runtime, const brdf::Material& material, IblSampling sampling, int spp, uint64_t seed = 1,
                bool convex = false) {
-    lab::ibl::PreviewSceneOptions options;
-    options.sample_material = preset_of(material, "furnace");
-    options.ground = convex;  // the sphere scene has no ground to switch off
-    lab::scene::Scene model = convex ? lab::scene::parse_scene(kSphereScene, "furnace-sphere.json") : lab::ibl::load_preview_scene("");
-    lab::ibl::PreviewScene scene = lab::ibl::compile_preview_scene(model, options);
-    lab::ibl::Environment env = lab::ibl::load_environment("constant:1,1,1");
-    lab::ibl::PreviewSettings settings;
-    settings.width = settings.height = 48;
+    // The sphere scene has no ground to switch off.
+    lab::render::RenderInput input = render_input(material, "constant:1,1,1", 48, sampling, seed, convex ? kSphereScene : "", convex);
     // A white furnace never ends a path by roulette, only by depth; between the core and the shell a
     // path of albedo 1 can bounce hundreds of times before it finds the window.
-    settings.max_depth = 512;
-    settings.sampling = sampling;
-    settings.seed = seed;
-    lab::ibl::PreviewRenderer renderer(runtime, scene, env, settings);
-    renderer.set_samples_per_launch(spp);
-    renderer.add_samples(spp);
-    return {renderer.image(), renderer.statistics()};
+    input.settings.max_depth = 512;
+    lab::render::OpenClRenderer renderer(runtime, input);
+    return render_samples(renderer, spp);
 }
 
 struct Range {
@@ -103,7 +81,7 @@ double pixel_noise(const ImageRgb& a, const ImageRgb& b) { return lab::film::ima
 
 TEST_CASE("Furnace: a white Lambert test model is 1 in every pixel (BSDF sampling, no noise)", "[furnace][preview]") {
     lab::opencl::Runtime runtime("");
-    Render r = furnace(runtime, white_lambert(), IblSampling::brdf, 4);
+    Render r = furnace(runtime, white_lambert(), IblSampling::bsdf, 4);
     Range range = pixel_range(r.image);
     INFO("pixels in [" << range.lo << ", " << range.hi << "], lost rays " << r.stats.lost_rays << " of " << r.stats.rays);
     CHECK(r.stats.nonfinite_samples == 0);
@@ -113,12 +91,12 @@ TEST_CASE("Furnace: a white Lambert test model is 1 in every pixel (BSDF samplin
 
 TEST_CASE("Furnace: environment sampling and MIS also give 1, within their noise", "[furnace][preview]") {
     lab::opencl::Runtime runtime("");
-    for (IblSampling sampling : {IblSampling::env, IblSampling::mis}) {
+    for (IblSampling sampling : {IblSampling::lights, IblSampling::mis}) {
         Render a = furnace(runtime, white_lambert(), sampling, 64, 1), b = furnace(runtime, white_lambert(), sampling, 64, 2);
         double noise = pixel_noise(a.image, b.image);
         lab::film::ImageStats stats = lab::film::image_stats(a.image);
         Range range = pixel_range(a.image);
-        INFO(lab::ibl::ibl_sampling_name(sampling) << ": mean " << stats.mean[0] << ", pixels in [" << range.lo << ", " << range.hi
+        INFO(lab::render::light_sampling_name(sampling) << ": mean " << stats.mean[0] << ", pixels in [" << range.lo << ", " << range.hi
                                                   << "], pixel noise " << noise);
         CHECK(a.stats.nonfinite_samples == 0);
         // the mean of 48 x 48 pixels: its standard error is noise / 48

@@ -10,28 +10,23 @@
 
 #include "brdf/host/preset.hpp"
 #include "film/image_stats.hpp"
-#include "ibl/environment.hpp"
-#include "ibl/preview_renderer.hpp"
-#include "ibl/preview_scene.hpp"
 #include "opencl/runtime.hpp"
+#include "render/opencl_renderer.hpp"
+#include "tests/render_inputs.hpp"
 
 namespace fs = std::filesystem;
-using lab::ibl::IblSampling;
+using IblSampling = lab::render::LightSampling;
 
 namespace {
 
-lab::film::ImageRgb render(const lab::opencl::Runtime& runtime, const lab::ibl::PreviewScene& scene, const lab::ibl::Environment& env,
-                           IblSampling sampling, int size, int spp, uint64_t seed, lab::ibl::PreviewStatistics* stats = nullptr) {
-    lab::ibl::PreviewSettings settings;
-    settings.width = settings.height = size;
-    settings.sampling = sampling;
-    settings.seed = seed;
-    settings.max_depth = 8;
-    lab::ibl::PreviewRenderer renderer(runtime, scene, env, settings);
-    renderer.set_samples_per_launch(spp);
-    renderer.add_samples(spp);
-    if (stats) *stats = renderer.statistics();
-    return renderer.image();
+lab::film::ImageRgb render(const lab::opencl::Runtime& runtime, const std::optional<brdf::Material>& sample, const std::string& env,
+                           IblSampling sampling, int size, int spp, uint64_t seed, lab::render::RenderStatistics* stats = nullptr) {
+    lab::render::RenderInput input = render_input(sample, env, size, sampling, seed);
+    input.settings.max_depth = 8;
+    lab::render::OpenClRenderer renderer(runtime, input);
+    RenderResult r = render_samples(renderer, spp);
+    if (stats) *stats = r.stats;
+    return r.image;
 }
 
 double image_mean(const lab::film::ImageRgb& image) {
@@ -43,13 +38,11 @@ double image_mean(const lab::film::ImageRgb& image) {
 
 TEST_CASE("BRDF, environment and MIS sampling converge to the same image mean", "[preview]") {
     lab::opencl::Runtime runtime("");
-    lab::ibl::PreviewSceneOptions options;
-    options.sample_material = brdf::load_preset("presets/glossy_plastic.json");
-    lab::ibl::PreviewScene scene = lab::ibl::compile_preview_scene(lab::ibl::load_preview_scene(""), options);
-    lab::ibl::Environment env = lab::ibl::load_environment("envmaps/courtyard.exr");
+    brdf::Material scene = brdf::load_preset("presets/glossy_plastic.json").material;
+    std::string env = "envmaps/courtyard.exr";
     // Each strategy's mean over 4 seeds; the spread of those means gives its standard error.
     std::vector<double> means, errors;
-    for (IblSampling sampling : {IblSampling::brdf, IblSampling::env, IblSampling::mis}) {
+    for (IblSampling sampling : {IblSampling::bsdf, IblSampling::lights, IblSampling::mis}) {
         std::vector<double> m;
         for (uint64_t seed = 1; seed <= 4; ++seed) m.push_back(image_mean(render(runtime, scene, env, sampling, 32, 16, seed)));
         double mean = (m[0] + m[1] + m[2] + m[3]) / 4.0, var = 0.0;
@@ -70,8 +63,8 @@ TEST_CASE("BRDF, environment and MIS sampling converge to the same image mean", 
 
 TEST_CASE("A render is a pure function of its seed", "[preview]") {
     lab::opencl::Runtime runtime("");
-    lab::ibl::PreviewScene scene = lab::ibl::compile_preview_scene(lab::ibl::load_preview_scene(""), {});
-    lab::ibl::Environment env = lab::ibl::load_environment("constant:0.5,0.7,1");
+    std::optional<brdf::Material> scene;  // the test model's own material
+    std::string env = "constant:0.5,0.7,1";
     lab::film::ImageRgb a = render(runtime, scene, env, IblSampling::mis, 16, 4, 7);
     lab::film::ImageRgb b = render(runtime, scene, env, IblSampling::mis, 16, 4, 7);
     lab::film::ImageRgb c = render(runtime, scene, env, IblSampling::mis, 16, 4, 8);
@@ -81,13 +74,11 @@ TEST_CASE("A render is a pure function of its seed", "[preview]") {
 
 TEST_CASE("Every bundled preset renders without NaN or infinity", "[preview]") {
     lab::opencl::Runtime runtime("");
-    lab::ibl::Environment env = lab::ibl::load_environment("envmaps/sunset.exr");  // a sun of 6520: a stress test
+    std::string env = "envmaps/sunset.exr";  // a sun of 6520: a stress test
     for (const auto& entry : fs::directory_iterator("presets")) {
         if (entry.path().extension() != ".json") continue;
-        lab::ibl::PreviewSceneOptions options;
-        options.sample_material = brdf::load_preset(entry.path().string());
-        lab::ibl::PreviewScene scene = lab::ibl::compile_preview_scene(lab::ibl::load_preview_scene(""), options);
-        lab::ibl::PreviewStatistics stats;
+        brdf::Material scene = brdf::load_preset(entry.path().string()).material;
+        lab::render::RenderStatistics stats;
         lab::film::ImageRgb image = render(runtime, scene, env, IblSampling::mis, 24, 4, 1, &stats);
         INFO(entry.path().string());
         CHECK(stats.nonfinite_samples == 0);

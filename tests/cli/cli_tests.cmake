@@ -225,7 +225,7 @@ cli_bad_input(NAME preview.nan_exposure ABSENT ${PNG} EXPECT "${E}--env-exposure
               ARGS ${PREVIEW} --env-exposure nan)
 cli_bad_input(NAME preview.nan_tonemap_exposure ABSENT ${PNG} EXPECT "${E}--exposure: must be a number of stops in \\[-64, 64\\]$"
               ARGS ${PREVIEW} --exposure nan)
-cli_bad_input(NAME preview.unknown_sampling ABSENT ${PNG} EXPECT "${E}--ibl-sampling: unknown value \"light\" \\(brdf, env, mis\\)$"
+cli_bad_input(NAME preview.unknown_sampling ABSENT ${PNG} EXPECT "${E}--ibl-sampling: unknown value \"light\" \\(bsdf, lights, mis, brdf, env\\)$"
               ARGS ${PREVIEW} --ibl-sampling light)
 cli_bad_input(NAME preview.unknown_normals ABSENT ${PNG} EXPECT "${E}--normals: unknown value \"sobel\" \\(tetrahedral, central, analytic\\)$"
               ARGS ${PREVIEW} --normals sobel)
@@ -242,11 +242,24 @@ cli_bad_input(NAME preview.no_device ABSENT ${PNG} EXPECT "${E}no OpenCL device 
 cli_bad_input(NAME bench_preview.bad_seconds EXPECT "${E}--seconds: must be more than 0 and at most 3600$"
               ARGS bench preview --seconds 0)
 
-# --- preview writes a linear EXR with its metadata and an sRGB PNG beside it --------------------
-add_test(NAME cli.preview.writes_exr_and_png
-         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/preview_output -DSOURCE=${PROJECT_SOURCE_DIR}
-                 -P ${CLI_TEST_DIR}/expect_preview_output.cmake)
-set_tests_properties(cli.preview.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT 120)
+# --- render: bad input ------------------------------------------------------------------------
+set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_scene\\.json: cannot open"
+              ARGS render ${D}/absent_scene.json --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"vcm\" \\(pt\\)$"
+              ARGS ${RENDER} --integrator vcm)
+cli_bad_input(NAME render.unknown_light_sampling ABSENT ${PNG} EXPECT "${E}--light-sampling: unknown value \"all\" "
+              ARGS ${RENDER} --light-sampling all)
+cli_bad_input(NAME render.unknown_light_selection ABSENT ${PNG} EXPECT "${E}--light-selection: unknown value \"random\" "
+              ARGS ${RENDER} --light-selection random)
+cli_bad_input(NAME render.no_sample_slot ABSENT ${PNG} EXPECT "${E}${D}/scene_no_sample\\.json: materials: no material named \"sample\""
+              ARGS render ${D}/scene_no_sample.json --material presets/gold.json --size 16x16 --spp 1 -o ${PNG})
+
+# --- preview and render write a linear EXR with its metadata and an sRGB PNG beside it ------------
+add_test(NAME cli.render.writes_exr_and_png
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/render_output -DSOURCE=${PROJECT_SOURCE_DIR}
+                 -P ${CLI_TEST_DIR}/expect_render_output.cmake)
+set_tests_properties(cli.render.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT 120)
 
 # --- no OpenCL platform at all: the ICD loader is pointed at an empty vendor folder ---------------
 file(MAKE_DIRECTORY ${CLI_SCRATCH}/no_icd_vendors)

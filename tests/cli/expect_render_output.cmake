@@ -1,6 +1,7 @@
 # cmake -P driver: `dtoadq preview` run in an empty folder WORK (the test model is built in, the
 # preset and environment come from SOURCE) writes a linear OpenEXR whose header carries the render's
-# metadata and an sRGB PNG beside it; `--time` renders until the time is up, then writes as well.
+# metadata and an sRGB PNG beside it; `--time` renders until the time is up, then writes as well;
+# `dtoadq render` of a scene file does the same, with and without the OpenCL device.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
@@ -27,14 +28,25 @@ run(preview --material ${SOURCE}/presets/gold.json --env ${SOURCE}/envmaps/studi
 expect_magic(out.exr 762f3101)
 expect_magic(out.png 89504e470d0a1a0a)
 find_program(OIIOTOOL oiiotool REQUIRED)
-execute_process(COMMAND ${OIIOTOOL} --info -v out.exr WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE info)
-foreach(expected "48 x   32, 3 channel, float" "dtoadq:spp: 4" "dtoadq:material: \"gold\"" "dtoadq:environment: \".*studio.exr\""
-                 "dtoadq:ibl_sampling: \"mis\"" "dtoadq:seed: \"3\"" "dtoadq:nonfinite_samples: \"0\"" "dtoadq:seconds: ")
-  if(NOT info MATCHES "${expected}")
-    message(FATAL_ERROR "out.exr's header lacks '${expected}':\n${info}")
-  endif()
-endforeach()
+function(expect_header file)
+  execute_process(COMMAND ${OIIOTOOL} --info -v ${file} WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE info)
+  foreach(expected ${ARGN})
+    if(NOT info MATCHES "${expected}")
+      message(FATAL_ERROR "${file}'s header lacks '${expected}':\n${info}")
+    endif()
+  endforeach()
+endfunction()
+expect_header(out.exr "48 x   32, 3 channel, float" "dtoadq:spp: 4" "dtoadq:material: \"gold\"" "dtoadq:environment: \".*studio.exr\""
+              "dtoadq:ibl_sampling: \"mis\"" "dtoadq:seed: \"3\"" "dtoadq:nonfinite_samples: \"0\"" "dtoadq:seconds: ")
 
 run(preview --env constant:0.5,0.5,0.5 --time 1 --size 32x32 --quiet -o timed.png)
 expect_magic(timed.png 89504e470d0a1a0a)
+
+foreach(device cpu host)
+  run(render ${SOURCE}/scenes/metaballs.json --spp 2 --size 32x24 --seed 5 --light-selection uniform --device ${device} --quiet
+      -o scene_${device}.exr)
+  expect_magic(scene_${device}.png 89504e470d0a1a0a)
+  expect_header(scene_${device}.exr "32 x   24, 3 channel, float" "dtoadq:spp: 2" "dtoadq:integrator: \"pt\""
+                "dtoadq:light_sampling: \"mis\"" "dtoadq:light_selection: \"uniform\"" "dtoadq:scene: \".*metaballs.json\"")
+endforeach()
 message(STATUS "ok")

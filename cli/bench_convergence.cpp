@@ -1,0 +1,67 @@
+#include "cli/bench_convergence.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "film/image_stats.hpp"
+
+namespace lab::cli {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+}  // namespace
+
+void render_for(render::Renderer& renderer, double seconds, const std::function<void(double)>& checkpoint) {
+    Clock::time_point start = Clock::now();
+    while (seconds_since(start) < seconds) {
+        Clock::time_point launch = Clock::now();
+        renderer.add_samples(renderer.samples_per_launch());
+        double took = seconds_since(launch);
+        checkpoint(seconds_since(start));
+        // double the launch while it is short, but keep ~20 points per series
+        if (took < seconds / 40.0) renderer.set_samples_per_launch(renderer.samples_per_launch() * 2);
+    }
+}
+
+Reference render_reference(const RendererFactory& make, render::RenderInput input, double seconds) {
+    input.settings.seed += 1000003;
+    std::unique_ptr<render::Renderer> half_a = make(input);
+    input.settings.seed += 1;
+    std::unique_ptr<render::Renderer> half_b = make(input);
+    render_for(*half_a, seconds / 2, [](double) {});
+    render_for(*half_b, seconds / 2, [](double) {});
+    film::ImageRgb a = half_a->image(), b = half_b->image();
+    Reference r;
+    r.image = film::ImageRgb(a.width, a.height);
+    for (size_t k = 0; k < a.rgb.size(); ++k) r.image.rgb[k] = 0.5f * (a.rgb[k] + b.rgb[k]);
+    // RMSE(a, b) = sqrt(2) sigma_half, and the mean of the halves has sigma_half / sqrt(2).
+    r.noise = film::image_error(a, b).rmse_mean / 2.0;
+    r.half_stats = half_a->statistics();
+    r.samples_per_pixel = r.half_stats.samples_per_pixel + half_b->statistics().samples_per_pixel;
+    return r;
+}
+
+std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const std::vector<EqualTimeRun>& runs, const Reference& reference,
+                                            double seconds) {
+    std::vector<EqualTimeResult> results;
+    std::printf("equal time, %.1f s each:\n  %-16s %8s %12s %12s %14s\n", seconds, "run", "spp", "paths/s", "RMSE", "RMSE x sqrt(t)");
+    for (const EqualTimeRun& run : runs) {
+        std::unique_ptr<render::Renderer> renderer = make(run.input);
+        EqualTimeResult r;
+        r.series.name = run.name;
+        render_for(*renderer, seconds, [&](double t) {
+            r.series.seconds.push_back(t);
+            r.series.rmse.push_back(film::image_error(renderer->image(), reference.image).rmse_mean);
+        });
+        r.stats = renderer->statistics();
+        std::printf("  %-16s %8d %12.3g %12.4g %14.4g\n", run.name.c_str(), r.stats.samples_per_pixel, r.stats.paths_per_second(),
+                    r.final_rmse(), r.final_rmse() * std::sqrt(r.series.seconds.back()));
+        std::fflush(stdout);
+        results.push_back(std::move(r));
+    }
+    return results;
+}
+
+}  // namespace lab::cli

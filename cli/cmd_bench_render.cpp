@@ -1,0 +1,116 @@
+// dtoadq bench render: the render core's figures per bundled scene. Paths/s and rays/s of the path
+// tracer on the OpenCL device and of the same integrator built as C++ on the host's threads, as a
+// ratio; and on the scenes where the choice matters (the Cornell box, Veach's MIS scene) the
+// equal-time error of next-event estimation with MIS against BSDF sampling alone (what the
+// preview did before the render core) and light sampling alone, against a long reference.
+// Figures, not timed tests: every ratio is measured within the one run.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/bench_convergence.hpp"
+#include "cli/commands.hpp"
+#include "cli/render_job.hpp"
+#include "common/input_error.hpp"
+#include "film/image_output.hpp"
+#include "render/host_renderer.hpp"
+#include "render/opencl_renderer.hpp"
+
+namespace lab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BenchRenderCommand {
+    RenderJobOptions job;
+    std::vector<std::string> scenes{"scenes/shader_ball.json", "scenes/cornell_box.json", "scenes/veach_mis.json",
+                                    "scenes/depth_of_field.json", "scenes/metaballs.json",  "scenes/repetition.json",
+                                    "scenes/primitives.json"};
+    std::vector<std::string> compare{"scenes/cornell_box.json", "scenes/veach_mis.json"};
+    double throughput_seconds = 2.0;
+    double seconds = 4.0;
+    double reference_seconds = 40.0;
+    std::string chart, csv;
+};
+
+// Renders for about `seconds` and returns the statistics.
+render::RenderStatistics measure(render::Renderer& renderer, double seconds) {
+    render_for(renderer, seconds, [](double) {});
+    return renderer.statistics();
+}
+
+void run_bench_render(const BenchRenderCommand& c) {
+    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
+    if (!(c.throughput_seconds > 0.0 && c.throughput_seconds <= 3600.0))
+        throw InputError("--throughput-seconds", "", "must be more than 0 and at most 3600");
+    if (!(c.reference_seconds >= c.seconds && c.reference_seconds <= 36000.0))
+        throw InputError("--reference-seconds", "", "must be at least --seconds and at most 36000");
+    if (!c.chart.empty()) film::check_output_path(c.chart);
+    opencl::Runtime runtime(c.job.device);
+    RendererFactory on_device = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
+    std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());
+
+    std::printf("%-28s %12s %12s %10s %14s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "host paths/s", "device/host");
+    for (const std::string& file : c.scenes) {
+        RenderJobOptions o = c.job;
+        o.scene = file;
+        RenderJob job = prepare_render_job(o);
+        std::unique_ptr<render::Renderer> device = on_device(job.input);
+        render::RenderStatistics d = measure(*device, c.throughput_seconds);
+        render::HostRenderer host(job.input);
+        render::RenderStatistics h = measure(host, c.throughput_seconds);
+        std::printf("%-28s %12.3g %12.3g %10.2f %14.3g %11.2fx\n", fs::path(file).filename().string().c_str(), d.paths_per_second(),
+                    d.rays_per_second(), double(d.rays) / double(d.paths), h.paths_per_second(), d.paths_per_second() / h.paths_per_second());
+        std::fflush(stdout);
+    }
+
+    std::vector<plots::ConvergenceSeries> series;
+    for (const std::string& file : c.compare) {
+        RenderJobOptions o = c.job;
+        o.scene = file;
+        RenderJob job = prepare_render_job(o);
+        std::string name = fs::path(file).stem().string();
+        std::printf("\n%s: reference (MIS) for %.0f s\n", name.c_str(), c.reference_seconds);
+        Reference reference = render_reference(on_device, job.input, c.reference_seconds);
+        std::printf("reference %d spp; its own noise (RMSE) about %.3g\n", reference.samples_per_pixel, reference.noise);
+        std::vector<EqualTimeRun> runs;
+        for (render::LightSampling sampling : {render::LightSampling::bsdf, render::LightSampling::lights, render::LightSampling::mis}) {
+            EqualTimeRun run{name + " " + render::light_sampling_name(sampling), job.input};
+            run.input.settings.light_sampling = sampling;
+            runs.push_back(std::move(run));
+        }
+        std::vector<EqualTimeResult> results = run_equal_time(on_device, runs, reference, c.seconds);
+        std::printf("equal-time RMSE relative to MIS:");
+        for (const EqualTimeResult& r : results) {
+            std::printf("  %s %.2fx", r.series.name.c_str(), r.final_rmse() / results.back().final_rmse());
+            series.push_back(r.series);
+        }
+        std::printf("\n");
+    }
+    if (!c.chart.empty() && !series.empty()) {
+        plots::write_speed_accuracy_chart(series, "Render core: RMSE against render time, pt by light-sampling strategy", c.chart, c.csv);
+        std::printf("wrote %s%s\n", c.chart.c_str(), c.csv.empty() ? "" : (" and " + c.csv).c_str());
+    }
+}
+
+}  // namespace
+
+void register_bench_render(CLI::App& bench) {
+    auto c = std::make_shared<BenchRenderCommand>();
+    c->job.size = "128x128";
+    auto* cmd = bench.add_subcommand(
+        "render", "Paths/s and rays/s per bundled scene on the device and the host build, and the equal-time error of each light-sampling strategy");
+    add_render_options(*cmd, &c->job);
+    cmd->add_option("--scenes", c->scenes, "Scenes to measure throughput on")->capture_default_str();
+    cmd->add_option("--compare", c->compare, "Scenes to compare light-sampling strategies on at equal time")->capture_default_str();
+    cmd->add_option("--throughput-seconds", c->throughput_seconds, "Render time of each throughput figure")->capture_default_str();
+    cmd->add_option("--seconds", c->seconds, "Render time of each strategy")->capture_default_str();
+    cmd->add_option("--reference-seconds", c->reference_seconds, "Render time of each reference (MIS)")->capture_default_str();
+    cmd->add_option("-o,--chart", c->chart, "Speed-against-accuracy chart (PNG): RMSE against time per scene and strategy");
+    cmd->add_option("--csv", c->csv, "The chart's data as CSV");
+    cmd->callback([c] { run_bench_render(*c); });
+}
+
+}  // namespace lab::cli

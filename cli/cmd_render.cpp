@@ -1,0 +1,29 @@
+// dtoadq render: a scene file rendered by one of the render core's integrators (`--integrator pt`:
+// the path tracer with next-event estimation to every light and MIS), progressively, to a linear
+// EXR with its metadata and a tone-mapped sRGB PNG. Same progress bar, --time, Ctrl-C and outputs
+// as `preview`.
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/render_job.hpp"
+
+namespace lab::cli {
+
+void register_render(CLI::App& app) {
+    auto job = std::make_shared<RenderJobOptions>();
+    auto run = std::make_shared<RenderRunOptions>();
+    run->output = "render.exr";
+    auto* cmd = app.add_subcommand("render", "Render a scene file with one of the integrators (pt)");
+    cmd->add_option("scene", job->scene, "Scene file (docs/scenes.md)")->required();
+    cmd->add_option("--integrator", job->integrator, "Integrator: pt (path tracing with next-event estimation and MIS)")
+        ->capture_default_str();
+    cmd->add_option("--light-sampling", job->light_sampling,
+                    "How paths find lights: bsdf (BSDF sampling alone), lights (next-event estimation alone) or mis")
+        ->capture_default_str();
+    cmd->add_option("--material", job->material, "Material preset for the scene's \"sample\" slot, if it has one");
+    add_render_options(*cmd, job.get());
+    add_render_run_options(*cmd, run);
+    cmd->callback([job, run] { run_render_job(*job, *run); });
+}
+
+}  // namespace lab::cli

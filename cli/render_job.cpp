@@ -1,0 +1,183 @@
+#include "cli/render_job.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "brdf/host/preset.hpp"
+#include "common/input_error.hpp"
+#include "film/image_output.hpp"
+#include "render/host_renderer.hpp"
+#include "render/opencl_renderer.hpp"
+#include "scene/load_scene.hpp"
+#include "scene/test_model.hpp"
+
+namespace lab::cli {
+
+void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
+    cmd.add_option("--env", o->env, "Environment: an equirectangular .exr/.hdr or constant:R,G,B (default: the scene's)");
+    cmd.add_option("--env-rotation", o->env_rotation, "Environment rotation about +y, degrees")->capture_default_str();
+    cmd.add_option("--env-exposure", o->env_exposure, "Environment intensity in stops")->capture_default_str();
+    cmd.add_option("--size", o->size, "Image size WxH")->capture_default_str();
+    cmd.add_option("--light-selection", o->light_selection, "How a light is chosen for next-event estimation: power or uniform")
+        ->capture_default_str();
+    cmd.add_option("--normals", o->normals, "Surface normals: tetrahedral, central or analytic")->capture_default_str();
+    cmd.add_option("--max-depth", o->max_depth, "Scattering events per path")->capture_default_str();
+    cmd.add_option("--max-steps", o->max_steps, "Sphere-tracing steps per ray before it counts as lost")->capture_default_str();
+    cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain)")->capture_default_str();
+    cmd.add_option("--seed", o->seed, "Seed of the random numbers (same seed, same image)")->capture_default_str();
+    cmd.add_option("--device", o->device,
+                   "OpenCL device: P:D, gpu, cpu or part of its name (dtoadq devices lists them); host: the C++ build on the CPU's threads");
+}
+
+void add_preview_options(CLI::App& cmd, RenderJobOptions* o) {
+    cmd.add_option("--scene", o->scene, "Scene file (docs/scenes.md); default: the built-in test model");
+    cmd.add_option("--material", o->material, "Material preset for the scene's \"sample\" slot");
+    cmd.add_option("--ground", o->ground, "Ground plane of the test model: on or off")->capture_default_str();
+    cmd.add_option("--ibl-sampling", o->light_sampling, "Light sampling: brdf, env (next-event estimation) or mis")->capture_default_str();
+    o->light_sampling_option = "--ibl-sampling";
+}
+
+namespace {
+
+bool parse_on_off(const std::string& text, const std::string& option) {
+    if (text == "on") return true;
+    if (text == "off") return false;
+    throw InputError(option, "", "expected on or off, got \"" + text + "\"");
+}
+
+void require_within(float value, const std::string& option, float lo, float hi) {
+    if (!(value >= lo && value <= hi))
+        throw InputError(option, "", "value " + std::to_string(value) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+std::optional<ibl::Environment> load_job_environment(const RenderJobOptions& o, const scene::Scene& scene, std::string* name) {
+    ibl::EnvironmentOptions env_options;
+    env_options.rotation_degrees = o.env_rotation;
+    env_options.exposure_stops = o.env_exposure;
+    if (!o.env.empty()) {
+        *name = o.env;
+        return ibl::load_environment(o.env, env_options);
+    }
+    if (scene.environment) {  // the scene's own: its rotation and exposure, then the options' on top
+        const scene::EnvironmentSpec& spec = *scene.environment;
+        env_options.rotation_degrees += spec.rotation_degrees;
+        env_options.exposure_stops += spec.exposure;
+        env_options.origin = scene.file + ": environment";
+        if (!spec.file.empty()) {
+            *name = spec.file;
+            return ibl::load_environment(spec.file, env_options);
+        }
+        *name = "constant:" + std::to_string(spec.constant.x) + "," + std::to_string(spec.constant.y) + "," + std::to_string(spec.constant.z);
+        return ibl::Environment::constant(spec.constant, *name, env_options);
+    }
+    if (o.default_env.empty()) {
+        *name = "none";
+        return std::nullopt;
+    }
+    *name = o.default_env;
+    return ibl::load_environment(o.default_env, env_options);
+}
+
+}  // namespace
+
+RenderJob prepare_render_job(const RenderJobOptions& o) {
+    render::RenderSettings settings;
+    render::parse_image_size(o.size, "--size", &settings.width, &settings.height);
+    settings.integrator = render::parse_integrator(o.integrator);
+    settings.light_sampling = render::parse_light_sampling(o.light_sampling, o.light_sampling_option);
+    settings.normals = render::parse_normal_method(o.normals);
+    settings.max_depth = o.max_depth;
+    settings.max_steps = o.max_steps;
+    settings.over_relaxation = o.over_relaxation;
+    render::check_render_settings(settings);  // before anything is loaded
+    render::LightSelection selection = render::parse_light_selection(o.light_selection);
+    require_within(o.env_rotation, "--env-rotation", -36000.0f, 36000.0f);
+    require_within(o.env_exposure, "--env-exposure", -64.0f, 64.0f);
+    settings.seed = o.seed;
+
+    // scene::apply_options rejects, naming the scene file, a slot or object the scene does not declare
+    scene::CompileOptions compile;
+    std::optional<brdf::Preset> sample;
+    if (!o.material.empty()) {
+        sample = brdf::load_preset(o.material);
+        compile.material_overrides[scene::kSampleMaterialSlot] = sample->material;
+    }
+    if (!parse_on_off(o.ground, "--ground")) compile.disabled_objects.push_back(scene::kGroundObject);
+    scene::Scene scene = scene::apply_options(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), compile);
+
+    std::string env_name;
+    std::optional<ibl::Environment> environment = load_job_environment(o, scene, &env_name);
+    RenderJob job;
+    job.scene_name = o.scene.empty() ? std::string("test model") : o.scene;
+    job.material_name = sample ? sample->name : std::string("the scene's materials");
+    job.environment_name = env_name;
+    job.input.scene = std::move(scene);
+    job.input.environment = std::move(environment);
+    job.input.settings = settings;
+    job.input.light_selection = selection;
+    char line[768];
+    std::snprintf(line, sizeof line, "%s on %s under %s, %dx%d, %s with %s light sampling", job.material_name.c_str(),
+                  job.scene_name.c_str(), env_name.c_str(), settings.width, settings.height, render::integrator_name(settings.integrator),
+                  render::light_sampling_name(settings.light_sampling));
+    job.description = line;
+    return job;
+}
+
+std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const std::string& device, std::optional<opencl::Runtime>* runtime) {
+    if (device == "host") return std::make_unique<render::HostRenderer>(job.input);
+    runtime->emplace(device);
+    return std::make_unique<render::OpenClRenderer>(**runtime, job.input);
+}
+
+film::ImageMetadata job_metadata(const RenderJob& job, const render::Renderer& renderer, const render::RenderStatistics& stats) {
+    film::ImageMetadata m = render::render_metadata(renderer, stats);
+    m.set("material", job.material_name);
+    m.set("scene", job.scene_name);
+    m.set("environment", job.environment_name);
+    return m;
+}
+
+void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOptions>& run) {
+    cmd.add_option("--spp", run->spp, "Samples per pixel (with --time: at most this many)")->capture_default_str()
+        ->each([run](const std::string&) { run->spp_given = true; });
+    cmd.add_option("--time", run->time_seconds, "Render until this many seconds have passed, instead of a sample count");
+    cmd.add_option("-o,--output", run->output, "Output .exr (linear, with a tone-mapped .png beside it) or .png")->capture_default_str();
+    cmd.add_option("--tonemap", run->tone_map, "Tone map of the PNG: aces, reinhard or clamp")->capture_default_str();
+    cmd.add_option("--exposure", run->exposure, "Exposure of the PNG in stops")->capture_default_str();
+    cmd.add_flag("--quiet", run->quiet, "No progress bar or statistics");
+}
+
+void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra) {
+    // Everything that can be wrong with the input is found before the first sample.
+    render::check_render_output(run.output);
+    film::ToneMap tone_map = film::parse_tone_map(run.tone_map);
+    if (!(run.time_seconds >= 0.0) || run.time_seconds > 1e6) throw InputError("--time", "", "must be in [0, 1e6] seconds");
+    if (run.spp < 1 || run.spp > 1 << 24) throw InputError("--spp", "", "must be in [1, 16777216]");
+    if (!(run.exposure >= -64.0f && run.exposure <= 64.0f)) throw InputError("--exposure", "", "must be a number of stops in [-64, 64]");
+    RenderJob job = prepare_render_job(options);
+    std::optional<opencl::Runtime> runtime;
+    std::unique_ptr<render::Renderer> renderer = make_renderer(job, options.device, &runtime);
+    if (!run.quiet)
+        std::printf("%s on %s: kernel built in %.2f s\n", job.description.c_str(), renderer->device_description().c_str(),
+                    renderer->build_seconds());
+    for (const std::string& w : renderer->compiled_scene().warnings) std::fprintf(stderr, "dtoadq: note: %s\n", w.c_str());
+
+    render::RenderLimits limits;
+    limits.samples = run.spp;
+    limits.samples_given = run.spp_given;
+    limits.seconds = run.time_seconds;
+    limits.quiet = run.quiet;
+    bool interrupted = render::render_progressively(*renderer, limits);
+    render::RenderStatistics stats = renderer->statistics();
+    film::ImageMetadata metadata = job_metadata(job, *renderer, stats);
+    for (const auto& [key, value] : extra.values) metadata.values[key] = value;
+    metadata.set("tonemap", run.tone_map);
+    metadata.set("exposure", run.exposure);
+    render::write_render_images(run.output, renderer->image(), tone_map, run.exposure, metadata);
+    std::printf("wrote %s%s\n", run.output.c_str(), render::is_exr_path(run.output) ? (" and " + render::png_beside(run.output)).c_str() : "");
+    render::print_render_statistics(stats, run.quiet);
+    if (interrupted)
+        std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);
+}
+
+}  // namespace lab::cli

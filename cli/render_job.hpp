@@ -1,0 +1,81 @@
+// What `preview`, `render`, `report` and the benches share: the options that choose the scene,
+// material, environment, integrator and sampling, turned into a ready job (render::RenderInput);
+// the renderer it runs on (an OpenCL device, or `--device host` for the C++ build); and the whole
+// progressive run from the first sample to the written images.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "film/image_metadata.hpp"
+#include "opencl/runtime.hpp"
+#include "render/progressive.hpp"
+#include "render/renderer.hpp"
+
+namespace lab::cli {
+
+struct RenderJobOptions {
+    std::string scene;     // empty: the built-in test model
+    std::string material;  // preset for the "sample" slot; empty: the scene's own
+    std::string env;       // file or constant:R,G,B; empty: the scene's (else see default_env)
+    std::string default_env;  // when neither --env nor the scene gives one; empty: no environment
+    float env_rotation = 0.0f;
+    float env_exposure = 0.0f;
+    std::string size = "512x512";
+    std::string ground = "on";
+    std::string integrator = "pt";
+    std::string light_sampling = "mis";
+    std::string light_sampling_option = "--light-sampling";  // the flag that gave it, for errors
+    std::string light_selection = "power";
+    std::string normals = "tetrahedral";
+    int max_depth = 16;
+    int max_steps = 1024;
+    float over_relaxation = 1.0f;
+    unsigned long long seed = 0;
+    std::string device;
+};
+
+// The options of every render: environment, size, normals, depth, march, light selection, seed, device.
+void add_render_options(CLI::App& cmd, RenderJobOptions* options);
+// The preview's: --scene, --material, --ground and --ibl-sampling (brdf, env or mis).
+void add_preview_options(CLI::App& cmd, RenderJobOptions* options);
+
+struct RenderJob {
+    render::RenderInput input;
+    std::string scene_name, material_name, environment_name;
+    std::string description;  // one line: material, scene, environment, size, integrator, sampling
+};
+
+// Loads and checks everything (scene, preset, environment, sizes, words); throws lab::InputError.
+RenderJob prepare_render_job(const RenderJobOptions& options);
+
+// The renderer the job runs on: the C++ build for `--device host`, else the OpenCL device the
+// selector names (the runtime is made here and kept in `runtime`).
+std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const std::string& device,
+                                                std::optional<opencl::Runtime>* runtime);
+
+// The render's metadata (render::render_metadata) with the job's scene, material and environment.
+film::ImageMetadata job_metadata(const RenderJob& job, const render::Renderer& renderer, const render::RenderStatistics& stats);
+
+// Where a progressive run stops and what it writes.
+struct RenderRunOptions {
+    int spp = 64;
+    bool spp_given = false;
+    double time_seconds = 0.0;
+    std::string output;
+    std::string tone_map = "aces";
+    float exposure = 0.0f;
+    bool quiet = false;
+};
+void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOptions>& run);
+
+// The whole command: checks the output and the limits, prepares the job, renders progressively
+// (Ctrl-C writes the image so far), writes the EXR with metadata and the PNG, prints statistics.
+// `extra` is added to the metadata.
+void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra = {});
+
+}  // namespace lab::cli

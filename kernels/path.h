@@ -1,0 +1,107 @@
+/* What every integrator's paths share: marching a ray with its counters, the surface a ray hit
+ * (point, material slot, shading frame, the error scale of the point), offsetting rays off a
+ * surface, and shadow rays. Needs the scene (scene_distance, scene_distance_material,
+ * scene_analytic_normal) declared before it is included, like sdf/march.h: the generated scene
+ * source in a kernel, the host interpreter in render/host_path_tracer.cpp. */
+#ifndef KERNELS_PATH_H
+#define KERNELS_PATH_H
+
+#include "single_source/vocabulary.h"
+#include "brdf/frame.h"
+#include "kernels/render_settings.h"
+#include "sdf/march.h"
+#include "sdf/normals.h"
+
+/* Per-pixel counters the host reads for its statistics. */
+typedef struct PathCounters {
+    uint rays;      /* marches: camera, continuation and shadow rays */
+    uint lost_rays; /* marches that ran out of steps (treated as escaping, or as shadowed) */
+} PathCounters;
+
+/* sdf/march.h's settings with what the render settings change; the epsilons stay the defaults. */
+SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
+    MarchSettings s = march_settings_default(k->lipschitz);
+    s.max_steps = k->max_steps;
+    s.max_distance = k->max_distance;
+    s.over_relaxation = k->over_relaxation;
+    return s;
+}
+
+SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings s, PathCounters* counters) {
+    MarchResult r = march(origin, direction, 0.0f, s);
+    counters->rays += 1u;
+    if (r.status == MARCH_OUT_OF_STEPS) counters->lost_rays += 1u;
+    return r;
+}
+
+/* Starts a ray off a surface on the side it leaves into (side: the sign of the new direction's
+ * cosine with n): twice the hit threshold clears the surface's own |d| < epsilon band, so the march
+ * does not stop where it starts. */
+SS_FN float3 offset_origin(float3 p, float3 n, float epsilon, float side) {
+    return p + n * (side > 0.0f ? 2.0f * epsilon : -2.0f * epsilon);
+}
+
+/* A normal estimated at an edge, or at a grazing hit, can face away from the side the ray came
+ * from (finite differences straddle the edge; the hit lies within epsilon of the surface). The
+ * BSDF would then see the ray arrive from below and absorb it. Bend such a normal towards that side
+ * just far enough that it faces it; `toward` is the unit vector back along the ray. */
+#define MIN_FACING_COSINE 1e-3f
+SS_FN float3 facing_normal(float3 n, float3 toward) {
+    float facing = dot(n, toward);
+    if (facing >= MIN_FACING_COSINE) return n;
+    return normalize(n + toward * (MIN_FACING_COSINE - facing));
+}
+
+/* Anisotropy follows the lines of latitude about +y: brushed metal on a shader ball is brushed round it. */
+SS_FN ShadingFrame shading_frame(float3 n) { return frame_from_normal_tangent(n, make_float3(n.z, 0.0f, -n.x)); }
+
+/* The surface a ray hit, as a path sees it. */
+typedef struct SurfaceHit {
+    float3 p;           /* the hit point */
+    int slot;           /* its material slot */
+    ShadingFrame frame; /* outward normal (the BSDF tells the sides apart), anisotropy tangent */
+    float3 wo;          /* back along the ray, in the frame */
+    float epsilon;      /* the march's hit threshold there: the scale of the error in p */
+} SurfaceHit;
+
+/* `inside`: the ray travels in a solid (only transmission gets a ray there), so the side it came
+ * from is the inner one; the frame's normal stays outward and that side must face it. */
+SS_FN SurfaceHit surface_hit(const RenderKernelSettings* k, MarchSettings s, float3 origin, float3 direction, float t, bool inside) {
+    SurfaceHit h;
+    h.p = origin + direction * t;
+    scene_distance_material(h.p, &h.slot);
+    float3 outward = scene_normal(h.p, k->normal_step, k->normal_method);
+    h.frame = shading_frame(inside ? -facing_normal(-outward, -direction) : facing_normal(outward, -direction));
+    h.wo = frame_to_local(h.frame, -direction);
+    h.epsilon = march_epsilon(s, t);
+    return h;
+}
+
+/* The hit seen as a two-sided surface: the frame turned over, if need be, so that its normal faces
+ * the side the ray came from. For surfaces that scatter on both sides whatever solid they bound
+ * (emissive spheres seen from inside). */
+SS_FN SurfaceHit facing_side(SurfaceHit h) {
+    if (h.wo.z >= 0.0f) return h;
+    h.frame.n = -h.frame.n;
+    h.frame.b = -h.frame.b; /* keeps the frame right-handed */
+    h.wo = make_float3(h.wo.x, -h.wo.y, -h.wo.z);
+    return h;
+}
+
+/* Whether a shadow ray from `origin` along unit `direction` reaches what lies `distance` away: a
+ * point light or the environment (target_slot < 0: nothing may be hit before `distance`), or a
+ * point on an emissive sphere (target_slot: its material slot; the ray may end on that sphere,
+ * which the march reports as a hit short of `distance` when it grazes it). A ray that runs out of
+ * steps counts as shadowed. */
+SS_FN bool segment_unoccluded(float3 origin, float3 direction, float distance, int target_slot, MarchSettings s,
+                              PathCounters* counters) {
+    s.max_distance = fmin(s.max_distance, distance);
+    MarchResult r = trace_ray(origin, direction, s, counters);
+    if (r.status == MARCH_MISS) return true;
+    if (r.status != MARCH_HIT || target_slot < 0) return false;
+    int slot;
+    scene_distance_material(origin + direction * r.t, &slot);
+    return slot == target_slot;
+}
+
+#endif

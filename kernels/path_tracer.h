@@ -1,0 +1,149 @@
+/* The path tracer (`dtoadq render --integrator pt`, and the preview): unidirectional paths from the
+ * camera with next-event estimation to every light -- the environment, emissive spheres, point
+ * lights -- combined with BSDF sampling by multiple importance sampling (power heuristic), or
+ * either strategy alone (RenderKernelSettings.light_sampling). One light per vertex is chosen by
+ * the host's selection distribution (power or uniform; kernels/lights/light_selection.h), and its
+ * probability is part of every light density, in NEE and in the MIS weight of BSDF-sampled hits.
+ *
+ * Single source: kernels/path_tracer.cl runs it on OpenCL, render/host_path_tracer.cpp as C++ on
+ * threads over pixels, with the same random numbers. Needs the scene declared before it, as
+ * kernels/path.h does. */
+#ifndef KERNELS_PATH_TRACER_H
+#define KERNELS_PATH_TRACER_H
+
+#include "single_source/vocabulary.h"
+#include "brdf/bsdf.h"
+#include "ibl/environment.h"
+#include "kernels/camera.h"
+#include "kernels/lights/light_selection.h"
+#include "kernels/mis.h"
+#include "kernels/path.h"
+#include "kernels/render_scene.h"
+#include "kernels/rng.h"
+
+/* The MIS weight of light `index` reached by a ray sampled from the BSDF at `from` with solid-angle
+ * density `bsdf_pdf`: 1 after a delta event (no light sample could have made it) or with BSDF
+ * sampling alone, 0 with light sampling alone, else the power heuristic against the density with
+ * which next-event estimation at `from` samples the same direction. */
+SS_FN float light_hit_weight(const RenderKernelSettings* k, const RenderScene* scene, int index, float3 from, float3 direction,
+                             float bsdf_pdf, bool after_delta) {
+    if (after_delta || k->light_sampling == LIGHT_SAMPLING_BSDF) return 1.0f;
+    if (k->light_sampling == LIGHT_SAMPLING_LIGHTS) return 0.0f;
+    Light light = scene->lights[index];
+    float light_density = light_selection_pmf(scene->light_cdf, k->light_count, index) *
+                          light_pdf(&light, &scene->env, scene->env_buffers, from, direction);
+    return mis_power_heuristic(bsdf_pdf, light_density);
+}
+
+/* Next-event estimation at a surface point: one light chosen by the selection distribution, one
+ * sample on it, its shadow ray, and the BSDF there. Returns the contribution before the path
+ * throughput. u: xy for the light sample, z for the choice of light. */
+SS_FN float3 estimate_direct(const RenderKernelSettings* k, MarchSettings s, const RenderScene* scene, const Material* m,
+                             const SurfaceHit* hit, float3 u, PathCounters* counters) {
+    float pmf;
+    int index = select_light(scene->light_cdf, k->light_count, u.z, &pmf);
+    if (!(pmf > 0.0f)) return float3_splat(0.0f);
+    Light light = scene->lights[index];
+    LightSample ls = sample_light(&light, &scene->env, scene->env_buffers, hit->p, make_float2(u.x, u.y));
+    if (!(ls.pdf > 0.0f) || !(max_component(ls.radiance) > 0.0f)) return float3_splat(0.0f);
+    float3 wl = frame_to_local(hit->frame, ls.wi);
+    float3 f = bsdf_eval(m, hit->wo, wl);
+    if (!(max_component(f) > 0.0f)) return float3_splat(0.0f);
+    float3 origin = offset_origin(hit->p, hit->frame.n, hit->epsilon, wl.z);
+    if (!segment_unoccluded(origin, ls.wi, ls.distance, light.material_slot, s, counters)) return float3_splat(0.0f);
+    float light_density = pmf * ls.pdf;
+    float weight = (ls.delta || k->light_sampling != LIGHT_SAMPLING_MIS) ? 1.0f
+                                                                         : mis_power_heuristic(light_density, bsdf_pdf(m, hit->wo, wl));
+    return f * ls.radiance * (fabs(wl.z) * weight / light_density);
+}
+
+/* Radiance arriving at `origin` from `direction`, estimated by one path. */
+SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene, float3 origin, float3 direction, Rng* rng,
+                        PathCounters* counters) {
+    MarchSettings s = render_march_settings(k);
+    bool has_environment = k->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
+    float3 radiance = float3_splat(0.0f);
+    float3 throughput = float3_splat(1.0f);
+    float3 previous_p = origin;
+    float previous_pdf = 0.0f;
+    bool previous_delta = true; /* the camera ray: nothing else could have found what it sees */
+    bool seen_directly = true;  /* the camera ray, or only delta events since */
+    bool inside = scene_distance(origin) < 0.0f;
+    for (int depth = 0;; ++depth) {
+        MarchResult march_result = trace_ray(origin, direction, s, counters);
+        if (march_result.status != MARCH_HIT) {
+            if (has_environment && (k->show_background || !seen_directly)) {
+                float weight = light_hit_weight(k, scene, 0, previous_p, direction, previous_pdf, previous_delta);
+                /* what the eye sees directly or in mirrors is filtered, so the backdrop shows no texels */
+                if (weight > 0.0f)
+                    radiance += throughput * weight *
+                                (seen_directly ? environment_radiance_filtered(&scene->env, scene->env_buffers.texels, direction)
+                                               : environment_radiance(&scene->env, scene->env_buffers.texels, direction));
+            }
+            break;
+        }
+        SurfaceHit hit = surface_hit(k, s, origin, direction, march_result.t, inside);
+        float4 emitted = scene->emission[hit.slot];
+        if (emitted.w > 0.0f) { /* an emissive sphere, seen from either side */
+            float weight = light_hit_weight(k, scene, scene->light_of_slot[hit.slot], previous_p, direction, previous_pdf, previous_delta);
+            radiance += throughput * (weight * make_float3(emitted.x, emitted.y, emitted.z));
+            if (emitted.w < EMISSION_SCATTERS) break; /* a black emitter scatters nothing */
+            /* An emissive sphere's material scatters on the side the ray arrives from, outside or in:
+             * a sphere light is a surface, not a solid the path enters. */
+            hit = facing_side(hit);
+        }
+        if (depth >= k->max_depth) break;
+
+        Material m = scene->materials[hit.slot]; /* bsdf_* take private pointers */
+        float4 u_light = rng_next4(rng);
+        float4 u_bsdf = rng_next4(rng);
+        if (k->light_sampling != LIGHT_SAMPLING_BSDF && k->light_count > 0)
+            radiance += throughput * estimate_direct(k, s, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), counters);
+
+        BsdfSample b = bsdf_sample(&m, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
+        if (b.flags == 0) break;
+        throughput *= b.f * (fabs(b.wi.z) / b.pdf);
+        previous_p = hit.p;
+        previous_pdf = b.pdf;
+        previous_delta = (b.flags & BSDF_DELTA) != 0;
+        seen_directly = seen_directly && previous_delta;
+        if ((b.flags & BSDF_TRANSMISSION) != 0) inside = !inside;
+        origin = offset_origin(hit.p, hit.frame.n, hit.epsilon, b.wi.z);
+        direction = frame_to_world(hit.frame, b.wi);
+
+        /* Russian roulette keeps a path with probability min(1, max throughput): a path whose
+         * throughput stays 1 (white furnace) is never cut, so the estimator's variance is not raised
+         * where nothing is absorbed. */
+        if (depth + 1 >= k->roulette_depth) {
+            float survive = fmin(max_component(throughput), 1.0f);
+            if (!(u_light.z < survive)) break;
+            throughput /= survive;
+        }
+    }
+    return radiance;
+}
+
+/* Adds settings.sample_count samples to one pixel; pixel k is (k % width, k / width), row 0 at the
+ * top. The samples of a pixel are summed in sample order by the one work-item that owns it. */
+SS_FN void path_tracer_pixel(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel,
+                             GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts) {
+    float x = (float)(pixel % camera->width), y = (float)(pixel / camera->width);
+    float4 sum = accumulation[pixel];
+    PathCounters counters;
+    counters.rays = 0u;
+    counters.lost_rays = 0u;
+    for (int i = 0; i < k->sample_count; ++i) {
+        Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
+        float4 u_pixel = rng_next4(&rng); /* xy: box-filter jitter within the pixel; zw: the lens */
+        float3 origin, direction;
+        camera_generate_ray(camera, x + u_pixel.x, y + u_pixel.y, make_float2(u_pixel.z, u_pixel.w), &origin, &direction);
+        float3 l = trace_path(k, scene, origin, direction, &rng, &counters);
+        if (finite3(l)) sum += make_float4(l.x, l.y, l.z, 0.0f);
+        else sum.w += 1.0f;
+    }
+    accumulation[pixel] = sum;
+    ray_counts[pixel] += counters.rays;
+    lost_ray_counts[pixel] += counters.lost_rays;
+}
+
+#endif

@@ -1,0 +1,30 @@
+/* What an integrator reads of the scene besides its distance field (which is compiled in): the
+ * material slots, what each slot emits, the lights with their selection distribution, and the
+ * environment. Buffers and kernel arguments, not source: a material, a light's power or the
+ * environment's rotation and exposure change without a kernel build. */
+#ifndef KERNELS_RENDER_SCENE_H
+#define KERNELS_RENDER_SCENE_H
+
+#include "single_source/vocabulary.h"
+#include "brdf/material.h"
+#include "ibl/environment.h"
+#include "kernels/lights/environment_light.h"
+#include "kernels/lights/light.h"
+
+/* emission[slot].w: the slot emits nothing; it emits and absorbs what reaches it (a black emitter,
+ * the path ends there); it emits and scatters by its material too (a reflecting emitter). */
+#define EMISSION_NONE 0.0f
+#define EMISSION_ABSORBS 1.0f
+#define EMISSION_SCATTERS 2.0f
+
+typedef struct RenderScene {
+    GLOBAL_MEM const Material* materials; /* per material slot */
+    GLOBAL_MEM const float4* emission;    /* per slot: xyz radiance, w one of EMISSION_* */
+    GLOBAL_MEM const Light* lights;       /* the environment first when there is one */
+    GLOBAL_MEM const float* light_cdf;    /* the selection distribution over the lights */
+    GLOBAL_MEM const int* light_of_slot;  /* per slot: the light an emissive slot belongs to, else -1 */
+    EnvironmentMap env;
+    EnvironmentBuffers env_buffers;
+} RenderScene;
+
+#endif

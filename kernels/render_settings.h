@@ -1,0 +1,33 @@
+/* The settings every integrator kernel takes (kernels/path_tracer.cl, and the host build of the same
+ * integrators, render/host_path_tracer): plain 4-byte scalars only, so the struct has one layout on
+ * both sides and travels as a kernel argument by value. */
+#ifndef KERNELS_RENDER_SETTINGS_H
+#define KERNELS_RENDER_SETTINGS_H
+#include "single_source/vocabulary.h"
+
+/* How a path finds the lights (the environment, emissive spheres, point lights):
+ *   BSDF:   only where a BSDF-sampled ray happens to reach one (point lights are then never found);
+ *   LIGHTS: next-event estimation only: a light sample and a shadow ray at every vertex; BSDF-sampled
+ *           rays count where they reach a light only after a delta event, which NEE cannot produce;
+ *   MIS:    both, weighted by the power heuristic (Veach 1997), so each covers where the other is poor. */
+#define LIGHT_SAMPLING_BSDF 0
+#define LIGHT_SAMPLING_LIGHTS 1
+#define LIGHT_SAMPLING_MIS 2
+
+typedef struct RenderKernelSettings {
+    int first_sample;   /* sample index of this launch's first sample (keys the random numbers) */
+    int sample_count;   /* samples per pixel in this launch */
+    int max_depth;      /* scattering events per path; 0 shows only what the camera sees directly */
+    int roulette_depth; /* Russian roulette from this many scattering events on */
+    int light_sampling; /* LIGHT_SAMPLING_* */
+    int normal_method;  /* NORMAL_* of sdf/normals.h */
+    float normal_step;  /* finite-difference step of the numerical normals, scene units */
+    uint seed_lo, seed_hi;
+    /* what changes of sdf/march.h's MarchSettings; the epsilons are march_settings_default()'s */
+    int max_steps;
+    float max_distance, over_relaxation, lipschitz;
+    int light_count;      /* entries of the light array; the environment, when there is one, is entry 0 */
+    int show_background;  /* 0: camera rays (and mirror paths) that escape see black, lighting unchanged */
+} RenderKernelSettings;
+
+#endif

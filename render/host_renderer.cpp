@@ -1,0 +1,87 @@
+#include "render/host_renderer.hpp"
+
+#include <atomic>
+#include <thread>
+
+#include "scene/interpreter.hpp"
+
+namespace lab::render {
+
+// The integrator's single-source code on the host. The kernels call the scene's distance field as
+// free functions (the generated scene/generated.h defines them in a kernel); here they evaluate
+// the scene each worker thread renders, through the host interpreter.
+namespace host_integrator {
+
+using namespace ::kernel;
+thread_local const scene::Scene* current_scene = nullptr;
+
+inline float scene_distance(float3 p) { return scene::scene_distance(*current_scene, p); }
+inline float scene_distance_material(float3 p, int* material) { return scene::scene_distance_material(*current_scene, p, material); }
+inline int scene_analytic_normal(float3 p, float3* n) { return scene::scene_analytic_normal(*current_scene, p, n); }
+
+#include "sdf/march.h"
+#include "sdf/normals.h"
+#include "kernels/path_tracer.h"
+
+}  // namespace host_integrator
+
+HostRenderer::HostRenderer(RenderInput input, int threads) : Renderer(std::move(input)) {
+    threads_ = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    initialize();
+}
+
+std::string HostRenderer::device_description() const {
+    return "host C++ (" + std::to_string(threads_) + (threads_ == 1 ? " thread)" : " threads)");
+}
+
+void HostRenderer::clear_film() {
+    size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
+    film_.accumulation.assign(pixels * 4, 0.0f);
+    film_.splat.assign(pixels * 3, 0.0f);
+    rays_.assign(pixels, 0u);
+    lost_.assign(pixels, 0u);
+}
+
+void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
+    static const std::vector<brdf::float4> no_texels(1, brdf::float4(0.0f));
+    static const std::vector<float> no_cdf(2, 0.0f);
+    const ibl::Environment* env = input_.environment ? &*input_.environment : nullptr;
+    kernel::RenderScene scene;
+    scene.materials = compiled_.materials.data();
+    scene.emission = emission_.data();
+    scene.lights = lights_.lights.data();
+    scene.light_cdf = lights_.selection_cdf.data();
+    scene.light_of_slot = lights_.light_of_slot.data();
+    scene.env = env ? env->map() : ::ibl::EnvironmentMap{1, 1.0f, 0.0f, 0.0f};
+    scene.env_buffers.texels = env ? env->texels().data() : no_texels.data();
+    scene.env_buffers.marginal_cdf = env ? env->marginal_cdf().data() : no_cdf.data();
+    scene.env_buffers.conditional_cdf = env ? env->conditional_cdf().data() : no_cdf.data();
+
+    int pixels = input_.settings.width * input_.settings.height;
+    auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());
+    std::atomic<int> next{0};
+    auto work = [&] {
+        host_integrator::current_scene = &input_.scene;
+        // Rows of pixels at a time: few enough atomics, small enough to balance the threads.
+        const int chunk = std::max(1, input_.settings.width);
+        for (int begin = next.fetch_add(chunk); begin < pixels; begin = next.fetch_add(chunk))
+            for (int pixel = begin; pixel < std::min(pixels, begin + chunk); ++pixel)
+                host_integrator::path_tracer_pixel(&k, &camera_, &scene, pixel, accumulation, rays_.data(), lost_.data());
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads_; ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+}
+
+FilmReadback HostRenderer::read_film() const { return film_; }
+
+void HostRenderer::read_ray_counts(uint64_t* rays, uint64_t* lost) const {
+    *rays = *lost = 0;
+    for (size_t p = 0; p < rays_.size(); ++p) {
+        *rays += rays_[p];
+        *lost += lost_[p];
+    }
+}
+
+}  // namespace lab::render

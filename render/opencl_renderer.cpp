@@ -1,0 +1,128 @@
+#include "render/opencl_renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "opencl/material_layout.hpp"
+#include "scene/scene_source.hpp"
+
+namespace lab::render {
+
+namespace {
+
+// Without -cl-fast-relaxed-math: the kernel shares its BRDF with the host, and NaN guards matter.
+constexpr const char* kBuildOptions = "-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt";
+
+const char* kernel_file(Integrator integrator) {
+    switch (integrator) {
+        case Integrator::pt: break;
+    }
+    return "kernels/path_tracer.cl";
+}
+
+const char* kernel_name(Integrator integrator) {
+    switch (integrator) {
+        case Integrator::pt: break;
+    }
+    return "render_pt";
+}
+
+template <typename T>
+opencl::BufferHandle upload(const opencl::Runtime& runtime, const std::vector<T>& data) {
+    opencl::BufferHandle buffer = runtime.buffer(std::max<size_t>(data.size(), 1) * sizeof(T), CL_MEM_READ_ONLY);
+    if (!data.empty()) runtime.write(buffer, data.data(), data.size() * sizeof(T));
+    return buffer;
+}
+
+}  // namespace
+
+OpenClRenderer::OpenClRenderer(const opencl::Runtime& runtime, RenderInput input) : Renderer(std::move(input)), runtime_(runtime) {
+    initialize();
+}
+
+std::string OpenClRenderer::device_description() const { return runtime_.device().description(); }
+
+void OpenClRenderer::build_kernel() {
+    auto start = std::chrono::steady_clock::now();
+    const RenderSettings& s = input_.settings;
+    std::string options = kBuildOptions + (s.extra_build_options.empty() ? "" : " " + s.extra_build_options);
+    opencl::Program program = runtime_.build(scene::assemble_scene_kernel(kernel_file(s.integrator), compiled_), options);
+    opencl::check_material_layout(runtime_, program);
+    opencl::KernelHandle kernel = program.kernel(kernel_name(s.integrator));
+    size_t kernel_max = 0;
+    opencl::check_cl(clGetKernelWorkGroupInfo(kernel.get(), runtime_.device().device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max),
+                                              &kernel_max, nullptr),
+                     "clGetKernelWorkGroupInfo");
+    local_size_ = 64;
+    while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
+    program_.emplace(std::move(program));
+    kernel_ = std::move(kernel);
+    build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void OpenClRenderer::upload_scene() {
+    static const std::vector<brdf::float4> no_texels(1, brdf::float4(0.0f));
+    static const std::vector<float> no_cdf(2, 0.0f);
+    const ibl::Environment* env = input_.environment ? &*input_.environment : nullptr;
+    texels_ = upload(runtime_, env ? env->texels() : no_texels);
+    marginal_ = upload(runtime_, env ? env->marginal_cdf() : no_cdf);
+    conditional_ = upload(runtime_, env ? env->conditional_cdf() : no_cdf);
+    materials_ = upload(runtime_, compiled_.materials);
+    emission_buffer_ = upload(runtime_, emission_);
+    lights_buffer_ = upload(runtime_, lights_.lights);
+    light_cdf_ = upload(runtime_, lights_.selection_cdf);
+    light_of_slot_ = upload(runtime_, lights_.light_of_slot);
+}
+
+void OpenClRenderer::clear_film() {
+    size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
+    if (pixels != film_pixels_) {
+        accumulation_ = runtime_.buffer(pixels * 4 * sizeof(float), CL_MEM_READ_WRITE);
+        splat_ = runtime_.buffer(pixels * 3 * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        rays_ = runtime_.buffer(pixels * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        lost_ = runtime_.buffer(pixels * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        film_pixels_ = pixels;
+    }
+    std::vector<float> zeros(pixels * 4, 0.0f);  // 0.0f and 0u share their bits
+    runtime_.write(accumulation_, zeros.data(), pixels * 4 * sizeof(float));
+    runtime_.write(splat_, zeros.data(), pixels * 3 * sizeof(cl_uint));
+    runtime_.write(rays_, zeros.data(), pixels * sizeof(cl_uint));
+    runtime_.write(lost_, zeros.data(), pixels * sizeof(cl_uint));
+}
+
+void OpenClRenderer::launch(const kernel::RenderKernelSettings& k) {
+    static const ::ibl::EnvironmentMap no_environment{1, 1.0f, 0.0f, 0.0f};
+    cl_uint a = 0;
+    opencl::set_kernel_arg(kernel_, a++, k);
+    opencl::set_kernel_arg(kernel_, a++, camera_);
+    opencl::set_kernel_arg(kernel_, a++, input_.environment ? input_.environment->map() : no_environment);
+    for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &emission_buffer_, &lights_buffer_, &light_cdf_,
+                                          &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
+        opencl::set_kernel_arg(kernel_, a++, *b);
+    runtime_.launch_1d(kernel_, size_t(input_.settings.width) * size_t(input_.settings.height), local_size_);
+    runtime_.finish();
+}
+
+FilmReadback OpenClRenderer::read_film() const {
+    size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
+    FilmReadback film;
+    film.accumulation.resize(pixels * 4);
+    film.splat.resize(pixels * 3);
+    runtime_.read(accumulation_, film.accumulation.data(), film.accumulation.size() * sizeof(float));
+    runtime_.read(splat_, film.splat.data(), film.splat.size() * sizeof(float));
+    return film;
+}
+
+void OpenClRenderer::read_ray_counts(uint64_t* rays, uint64_t* lost) const {
+    size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
+    std::vector<cl_uint> r(pixels), l(pixels);
+    runtime_.read(rays_, r.data(), r.size() * sizeof(cl_uint));
+    runtime_.read(lost_, l.data(), l.size() * sizeof(cl_uint));
+    *rays = *lost = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        *rays += r[p];
+        *lost += l[p];
+    }
+}
+
+}  // namespace lab::render

@@ -1,0 +1,36 @@
+// A renderer on an OpenCL device: the integrator's kernel (kernels/<integrator>.cl) assembled
+// around the scene's generated source, built once per set of BRDF features (PoCL caches builds),
+// the scene and the film in device buffers.
+#pragma once
+
+#include "opencl/runtime.hpp"
+#include "render/renderer.hpp"
+
+namespace lab::render {
+
+class OpenClRenderer final : public Renderer {
+public:
+    // Builds the kernel (opencl::KernelBuildError with the mapped log on failure) and uploads the
+    // scene. Throws lab::InputError for bad settings or camera before anything is built.
+    OpenClRenderer(const opencl::Runtime& runtime, RenderInput input);
+
+    std::string device_description() const override;
+
+private:
+    void build_kernel() override;
+    void upload_scene() override;
+    void clear_film() override;
+    void launch(const kernel::RenderKernelSettings& k) override;
+    FilmReadback read_film() const override;
+    void read_ray_counts(uint64_t* rays, uint64_t* lost) const override;
+
+    const opencl::Runtime& runtime_;
+    std::optional<opencl::Program> program_;
+    opencl::KernelHandle kernel_;
+    size_t local_size_ = 64;
+    opencl::BufferHandle texels_, marginal_, conditional_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
+    opencl::BufferHandle accumulation_, splat_, rays_, lost_;
+    size_t film_pixels_ = 0;  // the size the film buffers were made for
+};
+
+}  // namespace lab::render

@@ -1,0 +1,51 @@
+// The progressive driver every render command shares: adds samples to any renderer until a sample
+// count or a time is reached or the user presses Ctrl-C, with a progress bar (samples/s, ETA); and
+// writes what it made as a linear EXR with its metadata plus a tone-mapped PNG, never losing a
+// finished render to a bad output path.
+#pragma once
+
+#include <string>
+
+#include "film/image.hpp"
+#include "film/image_metadata.hpp"
+#include "film/tone_map.hpp"
+#include "render/renderer.hpp"
+
+namespace lab::render {
+
+// When a progressive render stops: after `samples` per pixel, or when `seconds` (> 0) have passed
+// (then `samples` caps it only when given).
+struct RenderLimits {
+    int samples = 64;
+    bool samples_given = false;
+    double seconds = 0.0;
+    bool quiet = false;  // no progress bar
+};
+
+// Adds samples until a limit is reached or the user interrupts (Ctrl-C ends the current launch and
+// returns true, so the caller writes the image so far). Launches grow while they take under an
+// eighth of a second, so the bar moves and few launches are made.
+bool render_progressively(Renderer& renderer, const RenderLimits& limits);
+
+// What every render's metadata holds: samples, time, device, seed, non-finite samples, lost rays,
+// the settings. Callers add what they know besides (material, scene, environment, tone map).
+film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatistics& stats);
+
+// Whether `path` names an OpenEXR file (.exr, any case), and the PNG that goes beside it.
+bool is_exr_path(const std::string& path);
+std::string png_beside(const std::string& exr_path);
+
+// Fails before rendering when the output (and the PNG beside an .exr) cannot be written.
+void check_render_output(const std::string& output);
+
+// An .exr output gets the linear EXR and the tone-mapped PNG beside it; a .png only the PNG. When
+// they cannot be written the EXR goes to the temporary folder instead, and the InputError thrown
+// says where: a finished render is never lost to a bad path.
+void write_render_images(const std::string& output, const film::ImageRgb& image, film::ToneMap tone_map, float exposure_stops,
+                         const film::ImageMetadata& metadata);
+
+// Samples, time, paths/s, rays/s and rays that ran out of steps; non-finite samples, if any, on
+// stderr as a warning even when quiet (they are never silently dropped).
+void print_render_statistics(const RenderStatistics& stats, bool quiet);
+
+}  // namespace lab::render

@@ -1,0 +1,74 @@
+#include "render/render_settings.hpp"
+
+#include <regex>
+#include <utility>
+
+#include "common/input_error.hpp"
+
+namespace lab::render {
+
+namespace {
+
+// Images beyond 2^26 pixels are refused up front: the kernels count pixels in an int.
+constexpr long kMaxPixels = 1L << 26;
+
+template <typename Enum, size_t N>
+Enum parse_word(const std::string& text, const std::string& option, const std::pair<const char*, Enum> (&words)[N]) {
+    std::string known;
+    for (const auto& [word, value] : words) {
+        if (text == word) return value;
+        known += std::string(known.empty() ? "" : ", ") + word;
+    }
+    throw InputError(option, "", "unknown value \"" + text + "\" (" + known + ")");
+}
+
+template <typename Enum, size_t N>
+const char* word_of(Enum value, const std::pair<const char*, Enum> (&words)[N]) {
+    for (const auto& [word, v] : words)
+        if (v == value) return word;
+    return "?";
+}
+
+constexpr std::pair<const char*, Integrator> kIntegratorWords[] = {{"pt", Integrator::pt}};
+// The first word of each value is its name; the others are accepted as synonyms.
+constexpr std::pair<const char*, LightSampling> kLightSamplingWords[] = {
+    {"bsdf", LightSampling::bsdf}, {"lights", LightSampling::lights}, {"mis", LightSampling::mis},
+    {"brdf", LightSampling::bsdf}, {"env", LightSampling::lights}};
+constexpr std::pair<const char*, NormalMethod> kNormalWords[] = {
+    {"tetrahedral", NormalMethod::tetrahedral}, {"central", NormalMethod::central}, {"analytic", NormalMethod::analytic}};
+
+}  // namespace
+
+Integrator parse_integrator(const std::string& text, const std::string& option) { return parse_word(text, option, kIntegratorWords); }
+NormalMethod parse_normal_method(const std::string& text, const std::string& option) { return parse_word(text, option, kNormalWords); }
+LightSampling parse_light_sampling(const std::string& text, const std::string& option) {
+    return parse_word(text, option, kLightSamplingWords);
+}
+const char* integrator_name(Integrator integrator) { return word_of(integrator, kIntegratorWords); }
+const char* light_sampling_name(LightSampling sampling) { return word_of(sampling, kLightSamplingWords); }
+const char* normal_method_name(NormalMethod method) { return word_of(method, kNormalWords); }
+
+void check_render_settings(const RenderSettings& settings) {
+    if (settings.width < 1 || settings.height < 1 || settings.width > kMaxImageSide || settings.height > kMaxImageSide ||
+        long(settings.width) * settings.height > kMaxPixels)
+        throw InputError("--size", "", std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                                           " is outside 1x1 .. " + std::to_string(kMaxImageSide) + " a side and 2^26 pixels");
+    if (settings.max_depth < 0 || settings.max_depth > 1024)
+        throw InputError("--max-depth", "", "must be in [0, 1024], got " + std::to_string(settings.max_depth));
+    if (settings.max_steps < 1 || settings.max_steps > 1 << 20)
+        throw InputError("--max-steps", "", "must be in [1, 1048576], got " + std::to_string(settings.max_steps));
+    if (!(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f))
+        throw InputError("--over-relaxation", "", "must be in [1, 2]");
+}
+
+void parse_image_size(const std::string& text, const std::string& option, int* width, int* height) {
+    static const std::regex pattern(R"((\d{1,6})x(\d{1,6}))");
+    std::smatch m;
+    if (!std::regex_match(text, m, pattern)) throw InputError(option, "", "expected WIDTHxHEIGHT, e.g. 512x512, got \"" + text + "\"");
+    *width = std::stoi(m[1].str());
+    *height = std::stoi(m[2].str());
+    if (*width < 1 || *height < 1 || *width > kMaxImageSide || *height > kMaxImageSide)
+        throw InputError(option, "", text + " is outside 1 .. " + std::to_string(kMaxImageSide) + " pixels a side");
+}
+
+}  // namespace lab::render

@@ -1,0 +1,53 @@
+// The settings every renderer takes (image size, path depth, how lights are found, the march and
+// the normals, the seed) and the words the command line gives them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace lab::render {
+
+// Which transport algorithm fills the film. `pt`: the path tracer with next-event estimation
+// (kernels/path_tracer.h). The BDPT issue adds `lt` and `bdpt` beside it.
+enum class Integrator { pt };
+// How paths find lights (kernels/render_settings.h): BSDF sampling alone, light sampling (next-event
+// estimation) alone, or both by multiple importance sampling.
+enum class LightSampling { bsdf, lights, mis };
+enum class NormalMethod { tetrahedral, central, analytic };
+
+// Parse the command-line words; errors are lab::InputError naming `option`.
+Integrator parse_integrator(const std::string& text, const std::string& option = "--integrator");
+NormalMethod parse_normal_method(const std::string& text, const std::string& option = "--normals");
+// "bsdf" (or "brdf"), "lights" (or "env", the preview's word) and "mis".
+LightSampling parse_light_sampling(const std::string& text, const std::string& option);
+const char* integrator_name(Integrator integrator);
+const char* light_sampling_name(LightSampling sampling);
+const char* normal_method_name(NormalMethod method);
+
+// The largest image side a renderer takes (and the command line accepts).
+constexpr int kMaxImageSide = 16384;
+
+struct RenderSettings {
+    int width = 512, height = 512;
+    Integrator integrator = Integrator::pt;
+    int max_depth = 16;      // scattering events per path
+    int roulette_depth = 3;  // Russian roulette from this many events on
+    LightSampling light_sampling = LightSampling::mis;
+    NormalMethod normals = NormalMethod::tetrahedral;
+    float normal_step = 5e-4f;     // finite-difference step, scene units
+    float over_relaxation = 1.0f;  // 1: plain sphere tracing
+    int max_steps = 1024;
+    float max_distance = 100.0f;
+    bool show_background = true;   // false: escaping camera rays see black (lighting unchanged)
+    uint64_t seed = 0;
+    std::string extra_build_options;  // appended to the OpenCL build options (e.g. a -D forcing a cold build)
+};
+
+// Throws lab::InputError naming the option for a size, depth, step count or over-relaxation out of
+// range. Renderers call it too; callers call it first to fail before any loading.
+void check_render_settings(const RenderSettings& settings);
+
+// "WxH" with both in [1, kMaxImageSide]; `option` names the flag in errors.
+void parse_image_size(const std::string& text, const std::string& option, int* width, int* height);
+
+}  // namespace lab::render

@@ -1,0 +1,176 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "brdf/host/features.hpp"
+#include "render/camera_setup.hpp"
+#include "render/film_resolve.hpp"
+
+namespace lab::render {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// NORMAL_TETRAHEDRAL, NORMAL_CENTRAL, NORMAL_ANALYTIC of sdf/normals.h (which only a translation unit
+// with a scene can include).
+int normal_code(NormalMethod m) { return m == NormalMethod::tetrahedral ? 0 : (m == NormalMethod::central ? 1 : 2); }
+
+int light_sampling_code(LightSampling s) {
+    switch (s) {
+        case LightSampling::bsdf: return LIGHT_SAMPLING_BSDF;
+        case LightSampling::lights: return LIGHT_SAMPLING_LIGHTS;
+        case LightSampling::mis: break;
+    }
+    return LIGHT_SAMPLING_MIS;
+}
+
+// An emitter's material scatters when any of its lobes has weight; an emitter without a material
+// is black (every weight 0, docs/scenes.md) and ends the path that reaches it.
+bool scatters(const brdf::Material& m) {
+    return m.weight_diffuse > 0.0f || m.weight_glossy > 0.0f || m.weight_specular > 0.0f || m.weight_transmission > 0.0f;
+}
+
+}  // namespace
+
+std::vector<brdf::float4> emission_table(const scene::CompiledScene& scene) {
+    std::vector<brdf::float4> table;
+    for (size_t k = 0; k < scene.materials.size(); ++k) {
+        scene::Vec3 e = k < scene.emission.size() ? scene.emission[k] : scene::Vec3(0.0f);
+        float kind = EMISSION_NONE;
+        if (e.x > 0.0f || e.y > 0.0f || e.z > 0.0f) kind = scatters(scene.materials[k]) ? EMISSION_SCATTERS : EMISSION_ABSORBS;
+        table.push_back(brdf::float4(e.x, e.y, e.z, kind));
+    }
+    return table;
+}
+
+Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
+    check_render_settings(input_.settings);
+    compiled_ = scene::compile_scene(input_.scene);
+    if (compiled_.materials.empty()) throw std::invalid_argument("Renderer: a scene has at least one material slot");
+    // Everything about the scene is checked before the (slow) build.
+    camera_ = make_camera(compiled_.camera, input_.settings.width, input_.settings.height, compiled_.file);
+    emission_ = emission_table(compiled_);
+    rebuild_lights();
+}
+
+void Renderer::initialize() {
+    build_kernel();
+    upload_scene();
+    clear_film();
+}
+
+void Renderer::rebuild_lights() {
+    lights_ = build_light_set(compiled_, input_.environment ? &*input_.environment : nullptr, input_.light_selection);
+}
+
+kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int count) const {
+    const RenderSettings& s = input_.settings;
+    kernel::RenderKernelSettings k{};
+    k.first_sample = first_sample;
+    k.sample_count = count;
+    k.max_depth = s.max_depth;
+    k.roulette_depth = s.roulette_depth;
+    k.light_sampling = light_sampling_code(s.light_sampling);
+    k.normal_method = normal_code(s.normals);
+    k.normal_step = s.normal_step;
+    k.seed_lo = unsigned(s.seed & 0xffffffffu);
+    k.seed_hi = unsigned(s.seed >> 32);
+    k.max_steps = s.max_steps;
+    k.max_distance = s.max_distance;
+    k.over_relaxation = s.over_relaxation;
+    k.lipschitz = std::max(compiled_.lipschitz, 1.0f);
+    k.light_count = int(lights_.lights.size());
+    k.show_background = s.show_background ? 1 : 0;
+    return k;
+}
+
+int Renderer::add_samples(int max_samples, double budget_seconds) {
+    Clock::time_point start = Clock::now();
+    int added = 0;
+    while (added < max_samples) {
+        int n = std::min(max_samples - added, samples_per_launch_);
+        launch(kernel_settings(samples_, n));
+        samples_ += n;
+        added += n;
+        if (seconds_since(start) >= budget_seconds) break;
+    }
+    render_seconds_ += seconds_since(start);
+    return added;
+}
+
+void Renderer::reset() {
+    clear_film();
+    samples_ = 0;
+    render_seconds_ = 0.0;
+}
+
+void Renderer::resize(int width, int height) {
+    RenderSettings s = input_.settings;
+    s.width = width;
+    s.height = height;
+    check_render_settings(s);
+    kernel::Camera camera = make_camera(compiled_.camera, width, height, compiled_.file);
+    input_.settings = s;
+    camera_ = camera;
+    reset();
+}
+
+bool Renderer::set_materials(const std::vector<brdf::Material>& materials) {
+    if (materials.size() != compiled_.materials.size())
+        throw std::invalid_argument("Renderer::set_materials: one material per slot (" + std::to_string(compiled_.materials.size()) + ")");
+    bool rebuild = brdf::used_features(materials) != brdf::used_features(compiled_.materials);
+    for (size_t k = 0; k < materials.size(); ++k) input_.scene.materials[k].material = materials[k];
+    if (rebuild) {
+        compiled_ = scene::compile_scene(input_.scene);
+        build_kernel();
+    } else {
+        compiled_.materials = materials;
+    }
+    emission_ = emission_table(compiled_);
+    upload_scene();
+    reset();
+    return rebuild;
+}
+
+void Renderer::set_camera(const scene::Camera& camera) {
+    kernel::Camera c = make_camera(camera, input_.settings.width, input_.settings.height, compiled_.file);
+    compiled_.camera = camera;
+    input_.scene.camera = camera;
+    camera_ = c;
+    reset();
+}
+
+void Renderer::set_environment_transform(float rotation_degrees, float exposure_stops) {
+    if (!input_.environment) return;
+    input_.environment->set_transform(rotation_degrees, exposure_stops);
+    rebuild_lights();
+    upload_scene();
+    reset();
+}
+
+void Renderer::set_show_background(bool show) {
+    input_.settings.show_background = show;
+    reset();
+}
+
+film::ImageRgb Renderer::image() const {
+    return resolve_film(read_film(), samples_, input_.settings.width, input_.settings.height);
+}
+
+RenderStatistics Renderer::statistics() const {
+    FilmReadback film = read_film();
+    RenderStatistics s;
+    s.samples_per_pixel = samples_;
+    s.render_seconds = render_seconds_;
+    s.paths = uint64_t(samples_) * uint64_t(input_.settings.width) * uint64_t(input_.settings.height);
+    read_ray_counts(&s.rays, &s.lost_rays);
+    for (size_t p = 3; p < film.accumulation.size(); p += 4) s.nonfinite_samples += uint64_t(film.accumulation[p]);
+    return s;
+}
+
+}  // namespace lab::render

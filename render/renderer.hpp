@@ -1,0 +1,132 @@
+// The renderer interface every integrator implements, on OpenCL (render/opencl_renderer) or on the
+// host (render/host_renderer): one compiled scene, its lights and camera, an environment, and a
+// film that samples are added to progressively.
+//
+// Edits that keep the scene's kernel -- a material whose BRDF features the kernel already has,
+// the camera, the environment's rotation and exposure, the image size -- are uploads and restart
+// the accumulation; a material that needs another feature rebuilds the kernel (from the warm
+// PoCL cache when that kernel was built before).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "brdf/brdf.hpp"
+#include "film/image.hpp"
+#include "ibl/environment.hpp"
+#include "kernels/host.hpp"
+#include "render/light_set.hpp"
+#include "render/render_settings.hpp"
+#include "scene/compile.hpp"
+#include "scene/scene.hpp"
+
+namespace lab::render {
+
+// What a renderer is made from.
+struct RenderInput {
+    scene::Scene scene;                          // with its options applied (scene::apply_options)
+    std::optional<ibl::Environment> environment; // none: no environment light, escaping rays see black
+    RenderSettings settings;
+    LightSelection light_selection = LightSelection::power;
+};
+
+struct RenderStatistics {
+    int samples_per_pixel = 0;
+    double render_seconds = 0.0;  // in add_samples(): launches and waiting for them
+    uint64_t paths = 0, rays = 0;
+    uint64_t lost_rays = 0;          // marches that ran out of steps
+    uint64_t nonfinite_samples = 0;  // paths whose radiance was NaN or infinite: left out and counted
+    double paths_per_second() const { return render_seconds > 0.0 ? double(paths) / render_seconds : 0.0; }
+    double rays_per_second() const { return render_seconds > 0.0 ? double(rays) / render_seconds : 0.0; }
+};
+
+// The film as the device holds it (kernels/film.h), read back.
+struct FilmReadback {
+    std::vector<float> accumulation;  // 4 per pixel: sum of finite samples, count of non-finite ones
+    std::vector<float> splat;         // 3 per pixel
+};
+
+class Renderer {
+public:
+    virtual ~Renderer() = default;
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    virtual std::string device_description() const = 0;
+    const RenderSettings& settings() const { return input_.settings; }
+    const scene::CompiledScene& compiled_scene() const { return compiled_; }
+    const LightSet& lights() const { return lights_; }
+    double build_seconds() const { return build_seconds_; }
+    LightSelection light_selection() const { return input_.light_selection; }
+    const std::optional<ibl::Environment>& environment() const { return input_.environment; }
+
+    // Adds samples per pixel, in launches of samples_per_launch(), until `max_samples` were added or
+    // `budget_seconds` have passed; returns how many were added (at least one launch when
+    // max_samples > 0). A launch is not cut short, so a call overruns its budget by at most one
+    // launch: callers that need a frame-time budget keep launches small (set_samples_per_launch).
+    int add_samples(int max_samples, double budget_seconds = std::numeric_limits<double>::infinity());
+    int samples_per_launch() const { return samples_per_launch_; }
+    void set_samples_per_launch(int n) { samples_per_launch_ = n < 1 ? 1 : n; }
+
+    // Drops every sample so far.
+    void reset();
+    // A new image size (check_render_settings' limits); resets.
+    void resize(int width, int height);
+    // New materials for the scene's slots (one per slot, in slot order); resets. Rebuilds the
+    // kernel when their BRDF features differ from the kernel's; returns whether it did.
+    bool set_materials(const std::vector<brdf::Material>& materials);
+    // A new camera; resets. Throws lab::InputError as make_camera does.
+    void set_camera(const scene::Camera& camera);
+    // The environment turned and scaled anew (absolute values, as ibl::EnvironmentOptions); resets.
+    // The light selection follows the environment's new power.
+    void set_environment_transform(float rotation_degrees, float exposure_stops);
+    // Shows or hides what camera rays see of the environment directly; resets.
+    void set_show_background(bool show);
+
+    // The mean so far (all zeros before the first sample): each pixel's own finite samples, plus
+    // what was splatted onto it, over the samples per pixel. A pixel none of whose samples was
+    // finite is NaN, so it shows (magenta in a PNG).
+    film::ImageRgb image() const;
+    RenderStatistics statistics() const;
+
+protected:
+    explicit Renderer(RenderInput input);
+    // Derived constructors call this last: builds the kernel, uploads the scene, allocates the film.
+    void initialize();
+
+    // The scene's kernel source (scene/generated.h) changed, or there is none yet.
+    virtual void build_kernel() = 0;
+    // Materials, emission, lights and the environment's buffers changed.
+    virtual void upload_scene() = 0;
+    // A zeroed film (and ray counters) of the current size.
+    virtual void clear_film() = 0;
+    // Adds k.sample_count samples to every pixel, the first keyed by k.first_sample; blocks.
+    virtual void launch(const kernel::RenderKernelSettings& k) = 0;
+    virtual FilmReadback read_film() const = 0;
+    virtual void read_ray_counts(uint64_t* rays, uint64_t* lost) const = 0;
+
+    kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
+
+    RenderInput input_;
+    scene::CompiledScene compiled_;
+    kernel::Camera camera_{};
+    LightSet lights_;
+    std::vector<brdf::float4> emission_;  // per slot: radiance, and EMISSION_* (kernels/render_scene.h)
+    double build_seconds_ = 0.0;
+
+private:
+    void rebuild_lights();
+
+    int samples_ = 0;
+    int samples_per_launch_ = 1;
+    double render_seconds_ = 0.0;
+};
+
+// The emission table of kernels/render_scene.h: per slot, its radiance and whether it emits,
+// and whether an emitter's material scatters too.
+std::vector<brdf::float4> emission_table(const scene::CompiledScene& scene);
+
+}  // namespace lab::render
