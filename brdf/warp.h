@@ -3,22 +3,43 @@
 #define BRDF_WARP_H
 #include "single_source/vocabulary.h"
 
+/* Shirley and Chiu's concentric map from the square to the unit disk, in polar form: area-preserving
+ * and with little distortion, so stratified numbers stay stratified (the lens, Malley's method). */
+SS_FN void square_to_concentric_disk_polar(float u1, float u2, float* r, float* phi) {
+    float a = 2.0f * u1 - 1.0f, b = 2.0f * u2 - 1.0f;
+    if (a == 0.0f && b == 0.0f) {
+        *r = 0.0f;
+        *phi = 0.0f;
+    } else if (fabs(a) > fabs(b)) {
+        *r = a;
+        *phi = (SS_PI / 4.0f) * (b / a);
+    } else {
+        *r = b;
+        *phi = (SS_PI / 2.0f) - (SS_PI / 4.0f) * (a / b);
+    }
+}
+
+/* The same as a point of the unit disk; density 1 / pi over the disk. */
+SS_FN float2 square_to_concentric_disk(float u1, float u2) {
+    float r, phi;
+    square_to_concentric_disk_polar(u1, u2, &r, &phi);
+    return make_float2(r * cos(phi), r * sin(phi));
+}
+
 /* Malley's method: a concentric disk sample lifted onto the hemisphere; pdf = cos(theta) / pi. */
 SS_FN float3 square_to_cosine_hemisphere(float u1, float u2) {
-    float a = 2.0f * u1 - 1.0f, b = 2.0f * u2 - 1.0f;
     float r, phi;
-    if (a == 0.0f && b == 0.0f) {
-        r = 0.0f;
-        phi = 0.0f;
-    } else if (fabs(a) > fabs(b)) {
-        r = a;
-        phi = (SS_PI / 4.0f) * (b / a);
-    } else {
-        r = b;
-        phi = (SS_PI / 2.0f) - (SS_PI / 4.0f) * (a / b);
-    }
+    square_to_concentric_disk_polar(u1, u2, &r, &phi);
     /* z from r, not from x and y: 1 - x^2 - y^2 loses the rim to rounding */
     return make_float3(r * cos(phi), r * sin(phi), safe_sqrt((1.0f - r) * (1.0f + r)));
+}
+
+/* A uniform direction on the unit sphere; density 1 / (4 pi). */
+SS_FN float3 square_to_uniform_sphere(float u1, float u2) {
+    float z = 1.0f - 2.0f * u1;
+    float r = safe_sqrt((1.0f - z) * (1.0f + z));
+    float phi = 2.0f * SS_PI * u2;
+    return make_float3(r * cos(phi), r * sin(phi), z);
 }
 
 SS_FN float cosine_hemisphere_pdf(float cos_theta_w) { return fmax(cos_theta_w, 0.0f) * SS_INV_PI; }

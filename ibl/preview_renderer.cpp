@@ -9,9 +9,10 @@
 #include "common/input_error.hpp"
 #include "opencl/material_layout.hpp"
 
+#include "render/camera_setup.hpp"
+
 namespace preview_kernel {
 using namespace brdf;
-#include "kernels/pinhole_camera.h"
 #include "kernels/preview_settings.h"
 }  // namespace preview_kernel
 
@@ -42,30 +43,6 @@ constexpr std::pair<const char*, IblSampling> kSamplingWords[] = {
     {"brdf", IblSampling::brdf}, {"env", IblSampling::env}, {"mis", IblSampling::mis}};
 constexpr std::pair<const char*, NormalMethod> kNormalWords[] = {
     {"tetrahedral", NormalMethod::tetrahedral}, {"central", NormalMethod::central}, {"analytic", NormalMethod::analytic}};
-
-void copy3(float out[3], brdf::float3 v) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
-}
-
-preview_kernel::PinholeCamera pinhole_camera(const std::string& file, const scene::Camera& camera, int width, int height) {
-    if (camera.type != scene::CameraType::pinhole)
-        throw InputError(file, "camera.type", "the thin-lens camera is not supported by the preview yet (use \"pinhole\")");
-    brdf::float3 forward = glm::normalize(camera.look_at - camera.position);
-    brdf::float3 right = glm::normalize(glm::cross(forward, camera.up));
-    brdf::float3 up = glm::cross(right, forward);
-    float half_height = std::tan(0.5f * camera.fov_degrees * float(3.14159265358979323846 / 180.0));
-    float aspect = float(width) / float(height);
-    preview_kernel::PinholeCamera c{};
-    copy3(c.position, camera.position);
-    copy3(c.forward, forward);
-    copy3(c.right, right * (half_height * aspect));
-    copy3(c.up, up * half_height);
-    c.width = width;
-    c.height = height;
-    return c;
-}
 
 int strategy_code(IblSampling s) {
     switch (s) {
@@ -128,7 +105,7 @@ opencl::Program build_program(const opencl::Runtime& runtime, const PreviewScene
                               double* seconds) {
     if (scene.materials.empty() || scene.materials.size() != scene.emission.size())
         throw std::invalid_argument("PreviewScene: one emission entry per material slot, at least one slot");
-    pinhole_camera(scene.file, scene.camera, settings.width, settings.height);
+    render::make_camera(scene.camera, settings.width, settings.height, scene.file);
     Clock::time_point start = Clock::now();
     std::string options = kBuildOptions + (settings.extra_build_options.empty() ? "" : " " + settings.extra_build_options);
     opencl::Program program = runtime.build(scene.kernel_source, options);
@@ -145,7 +122,7 @@ PreviewRenderer::PreviewRenderer(const opencl::Runtime& runtime, const PreviewSc
       settings_(checked(settings)),
       program_(build_program(runtime, scene, settings, &build_seconds_)),
       kernel_(program_.kernel("preview_render")) {
-    preview_kernel::PinholeCamera camera = pinhole_camera(scene.file, scene.camera, settings.width, settings.height);
+    ::kernel::Camera camera = render::make_camera(scene.camera, settings.width, settings.height, scene.file);
     size_t kernel_max = 0;
     opencl::check_cl(clGetKernelWorkGroupInfo(kernel_.get(), runtime.device().device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max),
                                               &kernel_max, nullptr),

@@ -14,7 +14,7 @@
 #include "ibl/environment.h"
 #include "kernels/material_layout.h"
 #include "kernels/mis.h"
-#include "kernels/pinhole_camera.h"
+#include "kernels/camera.h"
 #include "kernels/preview_settings.h"
 #include "kernels/rng.h"
 #include "sdf/march.h"
@@ -164,7 +164,7 @@ static float3 trace_path(const PreviewSettings* s, const EnvironmentMap* env, En
 
 /* One work-item per pixel; pixel k is (k % width, k / width), row 0 at the top. accumulation.xyz
  * sums the finite samples, accumulation.w counts the non-finite ones (reported, never hidden). */
-__kernel void preview_render(PreviewKernelSettings kernel_settings, PinholeCamera camera, EnvironmentMap env,
+__kernel void preview_render(PreviewKernelSettings kernel_settings, Camera camera, EnvironmentMap env,
                              __global const float4* env_texels, __global const float* env_marginal_cdf,
                              __global const float* env_conditional_cdf, __global const Material* materials,
                              __global const float4* emission, __global float4* accumulation, __global uint* ray_counts,
@@ -184,8 +184,9 @@ __kernel void preview_render(PreviewKernelSettings kernel_settings, PinholeCamer
     for (int k = 0; k < settings.k.sample_count; ++k) {
         Rng rng = rng_make((uint)pixel, (uint)(settings.k.first_sample + k), settings.k.seed_lo, settings.k.seed_hi);
         float4 u_pixel = rng_next4(&rng); /* box-filter jitter within the pixel */
-        float3 direction = pinhole_ray_direction(&camera, x + u_pixel.x, y + u_pixel.y);
-        float3 l = trace_path(&settings, &env, buffers, materials, emission, camera_vector(camera.position), direction, &rng, &counters);
+        float3 origin, direction;
+        camera_generate_ray(&camera, x + u_pixel.x, y + u_pixel.y, make_float2(u_pixel.z, u_pixel.w), &origin, &direction);
+        float3 l = trace_path(&settings, &env, buffers, materials, emission, origin, direction, &rng, &counters);
         if (finite3(l)) sum += make_float4(l.x, l.y, l.z, 0.0f);
         else sum.w += 1.0f;
     }

@@ -249,6 +249,28 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
     return out.str();
 }
 
+// The box of what is bounded: the camera, the lights, and each object's box about the origin
+// (scene/lipschitz.hpp's extent) along its finite axes; then the sphere around that box.
+void scene_bounds(const Scene& scene, Vec3* center, float* radius) {
+    glm::dvec3 lo(scene.camera.position), hi(scene.camera.position);
+    auto grow = [&](glm::dvec3 a, glm::dvec3 b) {
+        lo = glm::min(lo, a);
+        hi = glm::max(hi, b);
+    };
+    for (const Object& object : scene.objects) {
+        const Vec3 e = analyse_shape(object.shape).extent;
+        for (int axis = 0; axis < 3; ++axis)
+            if (std::isfinite(e[axis])) {
+                lo[axis] = std::min(lo[axis], -double(e[axis]));
+                hi[axis] = std::max(hi[axis], double(e[axis]));
+            }
+    }
+    for (const EmitterSphere& e : scene.emitters) grow(glm::dvec3(e.center) - double(e.radius), glm::dvec3(e.center) + double(e.radius));
+    for (const PointLight& p : scene.point_lights) grow(glm::dvec3(p.position), glm::dvec3(p.position));
+    *center = Vec3(0.5 * (lo + hi));
+    *radius = float(0.5 * glm::length(hi - lo));
+}
+
 }  // namespace
 
 std::string float_literal(float value) {
@@ -276,6 +298,9 @@ Scene apply_options(const Scene& scene, const CompileOptions& options) {
             throw InputError(scene.file, "materials", "no material named \"" + name + "\" to replace (declared: " + list_names(declared) + ")");
         it->material = material;
         it->source = "override";
+        // a reflecting emitter scatters with the declared material it names: it follows the override
+        for (MaterialSlot& slot : out.materials)
+            if (slot.emitter >= 0 && out.emitters[size_t(slot.emitter)].surface_material == name) slot.material = material;
     }
     for (const std::string& name : options.disabled_objects) {
         auto it = std::find_if(out.objects.begin(), out.objects.end(), [&](const Object& o) { return o.name == name; });
@@ -299,6 +324,8 @@ CompiledScene compile_scene(const Scene& input, const CompileOptions& options) {
         out.emission.push_back(slot.emission);
     }
     out.emitters = scene.emitters;
+    out.point_lights = scene.point_lights;
+    scene_bounds(scene, &out.bounds_center, &out.bounds_radius);
     out.lipschitz = analysis.lipschitz;
     out.is_distance_bound = analysis.is_distance_bound;
     out.warnings = analysis.warnings;

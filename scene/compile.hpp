@@ -32,7 +32,13 @@ struct CompiledScene {
     std::vector<brdf::Material> materials;       // per slot: declared materials, then one per emitter
     std::vector<std::string> material_names;     // per slot
     std::vector<Vec3> emission;                  // per slot: an emitter's radiance, else 0
-    std::vector<EmitterSphere> emitters;
+    std::vector<EmitterSphere> emitters;         // emissive spheres; emitters[k].material is its slot
+    std::vector<PointLight> point_lights;        // lights only: not in the source
+    // A sphere that holds the camera, the lights and every bounded part of the objects (the axes
+    // along which an object is unbounded, a plane or an endless repetition, are left out): the
+    // scene's size for the environment's power (docs/lights.md).
+    Vec3 bounds_center{0.0f};
+    float bounds_radius = 0.0f;
     float lipschitz = 1.0f;                      // SCENE_LIPSCHITZ
     bool is_distance_bound = true;               // false when a repetition breaks the bound
     std::vector<std::string> warnings;           // for the command line to print

@@ -1,5 +1,6 @@
 #include "scene/load_scene.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -122,28 +123,51 @@ std::vector<Object> parse_objects(const Json& value, const std::string& file, co
     return objects;
 }
 
-// An emitter's slot: a black material (every lobe weight 0, docs/materials.md) with its radiance.
-MaterialSlot emitter_slot(size_t index, Vec3 radiance) {
+// An emissive sphere's slot: the declared material it names (a reflecting emitter), or a black
+// material (every lobe weight 0, docs/materials.md), with its radiance.
+MaterialSlot emitter_slot(const std::string& path, int index, const EmitterSphere& e, const std::vector<MaterialSlot>& slots) {
     MaterialSlot slot;
-    slot.name = element_path("emitters", index);
+    slot.name = path;
     slot.source = "emitter";
     slot.material = brdf::default_material();
     for (float& a : slot.material.albedo) a = 0.0f;
     slot.material.weight_diffuse = slot.material.weight_glossy = slot.material.weight_specular = slot.material.weight_transmission = 0.0f;
-    slot.emission = radiance;
+    for (const MaterialSlot& m : slots)
+        if (m.emitter < 0 && m.name == e.surface_material) slot.material = m.material;
+    slot.emission = e.radiance;
+    slot.emitter = index;
     return slot;
 }
 
-std::vector<EmitterSphere> parse_emitters(const Json& value, const std::string& file, std::vector<MaterialSlot>* slots) {
+// "emitters": emissive spheres (type "sphere", the default) and point lights (type "point").
+void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
     if (!value.is_array()) throw InputError(file, "emitters", std::string("expected an array, got ") + value.type_name());
-    std::vector<EmitterSphere> emitters;
     for (size_t i = 0; i < value.size(); ++i) {
-        Fields f(value[i], element_path("emitters", i), file, {"center", "radius", "radiance"});
-        EmitterSphere e{f.vec3("center"), f.positive("radius"), f.non_negative_vec3("radiance"), int(slots->size())};
-        slots->push_back(emitter_slot(i, e.radiance));
-        emitters.push_back(e);
+        const std::string path = element_path("emitters", i);
+        std::string type = "sphere";
+        if (value[i].is_object() && value[i].contains("type")) {
+            const Json& t = value[i].at("type");
+            if (!t.is_string()) throw InputError(file, field_path(path, "type"), std::string("expected a string, got ") + t.type_name());
+            type = t.get<std::string>();
+        }
+        if (type == "point") {
+            Fields f(value[i], path, file, {"type", "position", "intensity"});
+            scene->point_lights.push_back(PointLight{f.vec3("position"), f.non_negative_vec3("intensity")});
+            continue;
+        }
+        if (type != "sphere") throw InputError(file, field_path(path, "type"), "unknown emitter type \"" + type + "\" (expected one of: sphere, point)");
+        Fields f(value[i], path, file, {"type", "center", "radius", "radiance", "material"});
+        EmitterSphere e{f.vec3("center"), f.positive("radius"), f.non_negative_vec3("radiance"), int(scene->materials.size()), ""};
+        if (f.has("material")) {
+            e.surface_material = f.string("material");
+            const bool declared = std::any_of(scene->materials.begin(), scene->materials.end(), [&](const MaterialSlot& m) {
+                return m.emitter < 0 && m.name == e.surface_material;
+            });
+            if (!declared) f.fail("material", "material \"" + e.surface_material + "\" is not declared in \"materials\"");
+        }
+        scene->materials.push_back(emitter_slot(path, int(scene->emitters.size()), e, scene->materials));
+        scene->emitters.push_back(e);
     }
-    return emitters;
 }
 
 EnvironmentSpec parse_environment(const Json& value, const std::string& file) {
@@ -175,9 +199,10 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     scene.camera = parse_camera(top.at("camera"), file);
     if (top.has("materials")) scene.materials = parse_materials(top.at("materials"), file);
     if (top.has("objects")) scene.objects = parse_objects(top.at("objects"), file, scene.materials);
-    if (top.has("emitters")) scene.emitters = parse_emitters(top.at("emitters"), file, &scene.materials);
+    if (top.has("emitters")) parse_emitters(top.at("emitters"), file, &scene);
     if (top.has("environment")) scene.environment = parse_environment(top.at("environment"), file);
-    if (scene.objects.empty() && scene.emitters.empty()) throw InputError(file, "", "the scene has no objects and no emitters");
+    if (scene.objects.empty() && scene.emitters.empty())
+        throw InputError(file, "", "the scene has no objects and no emissive spheres (point lights are not geometry)");
     return scene;
 }
 

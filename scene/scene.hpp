@@ -68,12 +68,21 @@ struct Object {
     Node shape;
 };
 
-// An emissive sphere: part of the distance field with a material slot of its own.
+// An emissive sphere: part of the distance field with a material slot of its own. It emits the
+// same radiance from both sides of its surface; with a surface material it also scatters (a
+// reflecting emitter), without one its slot is black.
 struct EmitterSphere {
     Vec3 center;
     float radius;
     Vec3 radiance;      // linear RGB, W / (m^2 sr)
     int material = 0;   // its slot, after the declared materials
+    std::string surface_material;  // the declared material its slot copies; empty: a black emitter
+};
+
+// A point light: a light, not geometry (nothing hits it, it casts no shadow).
+struct PointLight {
+    Vec3 position;
+    Vec3 intensity;  // linear RGB, W / sr
 };
 
 enum class CameraType { pinhole, thin_lens };
@@ -95,12 +104,13 @@ struct EnvironmentSpec {
     float exposure = 0.0f;            // stops
 };
 
-// A material slot: declared materials first (in file order), then one per emitter.
+// A material slot: declared materials first (in file order), then one per emissive sphere.
 struct MaterialSlot {
     std::string name;        // the declared name, or "emitters[k]"
     std::string source;      // the preset file it came from, or "inline" / "emitter"
     brdf::Material material;
     Vec3 emission{0.0f};     // radiance of an emitter's slot, 0 otherwise
+    int emitter = -1;        // the emissive sphere (index into Scene::emitters) of this slot, -1 for none
 };
 
 struct Scene {
@@ -110,6 +120,7 @@ struct Scene {
     std::vector<MaterialSlot> materials;
     std::vector<Object> objects;
     std::vector<EmitterSphere> emitters;
+    std::vector<PointLight> point_lights;
     std::optional<EnvironmentSpec> environment;
 };
 

@@ -162,7 +162,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
     Json empty = base_scene();
     empty["objects"] = Json::array();
     empty["emitters"] = Json::array();
-    CHECK(error_of_text(empty.dump()) == "scenes/x.json: the scene has no objects and no emitters");
+    CHECK(error_of_text(empty.dump()) == "scenes/x.json: the scene has no objects and no emissive spheres (point lights are not geometry)");
 }
 
 TEST_CASE("scene parser: malformed JSON, overflow, NaN and duplicate keys", "[scene]") {

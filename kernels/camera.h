@@ -1,0 +1,160 @@
+/* The camera: a pinhole or a thin lens, for camera rays (path tracing) and for connections to the
+ * lens (light tracing, BDPT's t = 1), after pbrt-v4's PerspectiveCamera. Plain float arrays, not
+ * float3, so the struct has one layout on the host and in OpenCL C and travels as a kernel
+ * argument by value.
+ *
+ * Geometry. The film is the rectangle at distance 1 in front of the camera, centre
+ * position + forward, spanned by right and up (scaled to the film's half width and half height
+ * there), so raster (x, y) in pixels from the top-left corner is the film point
+ *   forward + sx right + sy up,  sx = 2 x / width - 1,  sy = 1 - 2 y / height,
+ * and the film's area is A = 4 |right| |up|. A pinhole (lens_radius 0) sends the ray from position
+ * through that point. A thin lens of radius R focused at distance F sends it from a point on the
+ * lens disk (position + R (lx right/|right| + ly up/|up|)) through the point where the pinhole ray
+ * crosses the plane of focus, position + F (forward + sx right + sy up): points on that plane image
+ * sharply, a point at depth z to a disk of radius R |1/F - 1/z| on the film at distance 1.
+ *
+ * Importance (Veach 1997, sec. 8.1.3; pbrt-v4 PerspectiveCamera::We). For a ray leaving the lens at
+ * angle theta to forward and landing on the film,
+ *   W_e = 1 / (A * lens_area * cos^4 theta),  lens_area = pi R^2 (1 for the pinhole),
+ * 0 elsewhere. Normalisation: for the pinhole, integral of W_e cos theta over the film's
+ * directions = 1 (d omega = cos^3 theta dA_film); for the lens, the same per lens point, times
+ * 1 / lens_area. A pixel's box-filter measurement is I_j = integral of (width height W_e [in pixel j])
+ * L cos theta, so a light tracer that follows one light path per pixel and sample
+ * (width * height * spp paths) and splats importance * contribution / pdf into the pixel of the
+ * returned raster position, then divides every pixel by spp, estimates the same pixel values as
+ * the path tracer (which averages L over the pixel). */
+#ifndef KERNELS_CAMERA_H
+#define KERNELS_CAMERA_H
+#include "single_source/vocabulary.h"
+#include "brdf/warp.h"
+
+typedef struct Camera {
+    float position[3];
+    float forward[3]; /* unit view direction */
+    float right[3];   /* scaled to the image's half width at distance 1: tan(fov / 2) * aspect */
+    float up[3];      /* scaled to the image's half height at distance 1: tan(fov / 2) */
+    int width, height;
+    float lens_radius;    /* 0: pinhole */
+    float focus_distance; /* thin lens only: the distance of the plane in focus along forward */
+} Camera;
+
+/* A light-tracing connection from a world point to the lens. */
+typedef struct CameraSample {
+    float2 raster;     /* pixels from the top-left image corner */
+    float3 lens_point; /* the point on the lens (the camera position for a pinhole) */
+    float3 wi;         /* unit, from the world point towards lens_point */
+    float distance;    /* from the world point to lens_point */
+    float importance;  /* W_e of the ray from lens_point towards the world point */
+    float pdf;         /* solid-angle density of wi at the world point: d^2 / (cos theta lens_area) */
+    int visible;       /* 0: behind the camera, outside the film, or degenerate; the rest is then 0 */
+} CameraSample;
+
+SS_FN float camera_lens_area(const Camera* c) { return c->lens_radius > 0.0f ? SS_PI * sqr(c->lens_radius) : 1.0f; }
+
+SS_FN float camera_film_area(const Camera* c) {
+    return 4.0f * length(float3_from_array(c->right)) * length(float3_from_array(c->up));
+}
+
+/* The pinhole ray's direction through raster (x, y), unnormalised, with unit length along forward. */
+SS_FN float3 camera_film_point(const Camera* c, float x, float y) {
+    float sx = 2.0f * x / (float)c->width - 1.0f;
+    float sy = 1.0f - 2.0f * y / (float)c->height;
+    return float3_from_array(c->forward) + sx * float3_from_array(c->right) + sy * float3_from_array(c->up);
+}
+
+/* The point of the lens for two uniform numbers (concentric disk, uniform by area). */
+SS_FN float3 camera_lens_point(const Camera* c, float2 u_lens) {
+    float3 origin = float3_from_array(c->position);
+    if (!(c->lens_radius > 0.0f)) return origin;
+    float2 disk = square_to_concentric_disk(u_lens.x, u_lens.y) * c->lens_radius;
+    return origin + disk.x * normalize(float3_from_array(c->right)) + disk.y * normalize(float3_from_array(c->up));
+}
+
+/* The camera ray through raster (x, y) (pixels from the top-left corner, jittered by the caller)
+ * from the lens point of u_lens (ignored by the pinhole). *direction is unit. */
+SS_FN void camera_generate_ray(const Camera* c, float x, float y, float2 u_lens, float3* origin, float3* direction) {
+    float3 film = camera_film_point(c, x, y);
+    if (!(c->lens_radius > 0.0f)) {
+        *origin = float3_from_array(c->position);
+        *direction = normalize(film);
+        return;
+    }
+    float3 focus = float3_from_array(c->position) + film * c->focus_distance;
+    *origin = camera_lens_point(c, u_lens);
+    *direction = normalize(focus - *origin);
+}
+
+/* Where a ray from lens point `origin` along unit `direction` lands on the raster: through the
+ * plane of focus (the film itself for the pinhole). Returns cos theta to forward; the raster is
+ * set only when it is positive. */
+SS_FN float camera_raster(const Camera* c, float3 origin, float3 direction, float2* raster) {
+    float3 forward = float3_from_array(c->forward);
+    float cos_theta = dot(direction, forward);
+    if (!(cos_theta > 0.0f)) return 0.0f;
+    float focus = c->lens_radius > 0.0f ? c->focus_distance : 1.0f;
+    /* the film point relative to position, scaled to distance 1 */
+    float3 q = (origin - float3_from_array(c->position) + direction * (focus / cos_theta)) / focus;
+    float3 right = float3_from_array(c->right), up = float3_from_array(c->up);
+    float sx = dot(q, right) / dot(right, right);
+    float sy = dot(q, up) / dot(up, up);
+    *raster = make_float2((sx + 1.0f) * 0.5f * (float)c->width, (1.0f - sy) * 0.5f * (float)c->height);
+    return cos_theta;
+}
+
+SS_FN bool camera_raster_inside(const Camera* c, float2 raster) {
+    return raster.x >= 0.0f && raster.x < (float)c->width && raster.y >= 0.0f && raster.y < (float)c->height;
+}
+
+/* W_e of the ray leaving lens point `origin` along unit `direction`, and its raster position;
+ * 0 when it points away from the film or lands outside it. (pbrt's We(ray) also takes the ray's
+ * origin: through a thin lens, the raster depends on where on the lens the ray starts.) */
+SS_FN float camera_importance(const Camera* c, float3 origin, float3 direction, float2* raster) {
+    float cos_theta = camera_raster(c, origin, direction, raster);
+    if (!(cos_theta > 0.0f) || !camera_raster_inside(c, *raster)) return 0.0f;
+    float cos2 = cos_theta * cos_theta;
+    return 1.0f / (camera_film_area(c) * camera_lens_area(c) * cos2 * cos2);
+}
+
+/* The densities of a ray leaving the camera as camera_generate_ray() draws it with a uniform
+ * raster position: per unit lens area, 1 / lens_area (1 for the pinhole, whose position is a
+ * delta), and per solid angle, 1 / (A cos^3 theta); both 0 off the film. */
+SS_FN void camera_pdf_we(const Camera* c, float3 origin, float3 direction, float* pdf_position, float* pdf_direction) {
+    float2 raster;
+    float cos_theta = camera_raster(c, origin, direction, &raster);
+    if (!(cos_theta > 0.0f) || !camera_raster_inside(c, raster)) {
+        *pdf_position = 0.0f;
+        *pdf_direction = 0.0f;
+        return;
+    }
+    *pdf_position = 1.0f / camera_lens_area(c);
+    *pdf_direction = 1.0f / (camera_film_area(c) * cos_theta * cos_theta * cos_theta);
+}
+
+/* A point on the lens (u_lens) seen from world point p: the connection light tracing splats. */
+SS_FN CameraSample camera_sample_wi(const Camera* c, float3 p, float2 u_lens) {
+    CameraSample s;
+    s.raster = make_float2(0.0f, 0.0f);
+    s.lens_point = camera_lens_point(c, u_lens);
+    s.wi = make_float3(0.0f, 0.0f, 1.0f);
+    s.distance = 0.0f;
+    s.importance = 0.0f;
+    s.pdf = 0.0f;
+    s.visible = 0;
+    float3 v = s.lens_point - p;
+    float dist = length(v);
+    if (!(dist > 0.0f)) return s;
+    float3 wi = v / dist;
+    float2 raster;
+    float importance = camera_importance(c, s.lens_point, -wi, &raster);
+    if (!(importance > 0.0f)) return s;
+    float cos_lens = dot(-wi, float3_from_array(c->forward)); /* the lens faces forward */
+    s.raster = raster;
+    s.wi = wi;
+    s.distance = dist;
+    s.importance = importance;
+    s.pdf = dist * dist / (cos_lens * camera_lens_area(c));
+    s.visible = 1;
+    return s;
+}
+
+#endif

@@ -1,0 +1,36 @@
+// The scene-independent single-source kernel headers (random numbers, MIS weights, the camera,
+// the lights), compiled as C++ for the host: namespace kernel, on the vocabularies of the BRDF
+// module (namespace brdf) and the environment (namespace ibl), whose headers these include and
+// whose include guards make them visible here through the using-directives.
+//
+// Host code that fills a kernel argument (kernel::Camera, kernel::Light) uses these very structs,
+// so the layout the kernel reads is the one written; the static_asserts pin the sizes OpenCL sees.
+#pragma once
+
+#include "brdf/brdf.hpp"
+#include "ibl/ibl.hpp"
+#include "single_source/host_vocabulary.hpp"
+
+namespace kernel {
+using namespace ::single_source;
+using namespace ::brdf;
+using namespace ::ibl;
+#include "kernels/rng.h"
+#include "kernels/mis.h"
+#include "kernels/camera.h"
+#include "kernels/lights/light.h"
+#include "kernels/lights/sphere_light.h"
+#include "kernels/lights/point_light.h"
+#include "kernels/lights/environment_light.h"
+#include "kernels/lights/light_selection.h"
+
+// The inverse of float3_from_array, for filling the structs' float[3] members on the host.
+inline void float3_to_array(float3 v, float out[3]) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
+}  // namespace kernel
+
+static_assert(sizeof(kernel::Camera) == 64, "Camera must match its OpenCL layout: 16 four-byte words");
+static_assert(sizeof(kernel::Light) == 48, "Light must match its OpenCL layout: 12 four-byte words");

@@ -1,0 +1,35 @@
+/* The environment map as a light, through ibl/environment.h's importance sampler (texels drawn in
+ * proportion to luminance times solid angle). The radiance is the nearest-texel lookup, the
+ * piecewise-constant function that sampler's pdf matches, so radiance / pdf never mixes texels. */
+#ifndef KERNELS_LIGHTS_ENVIRONMENT_LIGHT_H
+#define KERNELS_LIGHTS_ENVIRONMENT_LIGHT_H
+#include "single_source/vocabulary.h"
+#include "ibl/environment.h"
+#include "kernels/lights/light.h"
+
+/* The environment's three buffers (ibl/environment.h): texels, marginal and conditional cdfs. */
+typedef struct EnvironmentBuffers {
+    GLOBAL_MEM const float4* texels;
+    GLOBAL_MEM const float* marginal_cdf;
+    GLOBAL_MEM const float* conditional_cdf;
+} EnvironmentBuffers;
+
+SS_FN LightSample environment_light_sample(const EnvironmentMap* env, EnvironmentBuffers b, float2 u) {
+    LightSample s = light_sample_none();
+    float pdf;
+    float3 wi = environment_sample(env, b.marginal_cdf, b.conditional_cdf, u.x, u.y, &pdf);
+    if (!(pdf > 0.0f)) return s;
+    s.wi = wi;
+    s.distance = LIGHT_INFINITE_DISTANCE;
+    s.radiance = environment_radiance(env, b.texels, wi);
+    s.pdf = pdf;
+    s.position = wi; /* a point at infinity: its direction */
+    s.normal = -wi;
+    return s;
+}
+
+SS_FN float environment_light_pdf(const EnvironmentMap* env, EnvironmentBuffers b, float3 wi) {
+    return environment_pdf(env, b.marginal_cdf, b.conditional_cdf, wi);
+}
+
+#endif

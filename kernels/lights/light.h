@@ -1,0 +1,54 @@
+/* Lights: what every integrator (path tracer, light tracer, BDPT) knows about one light, and what a
+ * sample of it returns. docs/lights.md gives the formulas and the power used for light selection.
+ *
+ * A Light is a plain struct of 4-byte scalars (12 words, 48 bytes): the same layout in OpenCL C and
+ * C++, so the host uploads an array of them (render/light_set.hpp) as a buffer. The samplers take
+ * private pointers: a kernel copies the light first (`Light l = lights[k];`). */
+#ifndef KERNELS_LIGHTS_LIGHT_H
+#define KERNELS_LIGHTS_LIGHT_H
+#include "single_source/vocabulary.h"
+
+#define LIGHT_ENVIRONMENT 0 /* the environment map at infinity (ibl/environment.h) */
+#define LIGHT_SPHERE 1      /* an emissive sphere of the scene: part of the distance field */
+#define LIGHT_POINT 2       /* a point light: a delta position, not geometry */
+
+/* The distance reported for a sample of the environment: far beyond any scene, yet finite, so a
+ * shadow ray's maximum distance and comparisons stay well defined. */
+#define LIGHT_INFINITE_DISTANCE 1e30f
+
+typedef struct Light {
+    float position[3]; /* sphere: its centre; point light: its position; environment: unused */
+    float radius;      /* sphere only */
+    float emission[3]; /* sphere: radiance Le, W m^-2 sr^-1, the same from both sides;
+                          point light: intensity I, W sr^-1; environment: unused (the map holds it) */
+    int type;          /* LIGHT_* */
+    int material_slot; /* sphere: its material slot in the compiled scene; -1 otherwise */
+    int pad[3];        /* to 48 bytes, a multiple of 16 */
+} Light;
+
+/* One sample of one light, seen from a reference point p. */
+typedef struct LightSample {
+    float3 wi;        /* unit, from p towards the light */
+    float distance;   /* from p to the sampled point; LIGHT_INFINITE_DISTANCE for the environment */
+    float3 radiance;  /* what arrives at p along -wi before any BSDF or cosine: Le, or I / d^2 */
+    float pdf;        /* solid-angle density of wi at p for this light alone (selection excluded);
+                         1 for a point light (delta = 1); 0: no sample (skip it) */
+    float3 position;  /* the sampled point on the light (BDPT's area densities); for the
+                         environment, the direction wi itself (a point at infinity) */
+    float3 normal;    /* the light's outward unit normal there; -wi for a point light and the environment */
+    int delta;        /* 1: a delta distribution (point light), no MIS against BSDF sampling */
+} LightSample;
+
+SS_FN LightSample light_sample_none(void) {
+    LightSample s;
+    s.wi = make_float3(0.0f, 0.0f, 1.0f);
+    s.distance = 0.0f;
+    s.radiance = float3_splat(0.0f);
+    s.pdf = 0.0f;
+    s.position = float3_splat(0.0f);
+    s.normal = make_float3(0.0f, 0.0f, 1.0f);
+    s.delta = 0;
+    return s;
+}
+
+#endif

@@ -1,0 +1,50 @@
+/* Choosing one light per next-event estimate, and the dispatch over light types.
+ *
+ * The host (render/light_set.cpp) builds a cdf of count + 1 floats over the lights: cdf[0] = 0,
+ * cdf[count] = 1, light k chosen with probability cdf[k + 1] - cdf[k] (in proportion to its power,
+ * or uniform; docs/lights.md). Sampling is ibl/distribution2d.h's one-dimensional sampler, so the
+ * pmf is the difference of the very floats it compares with and a light of probability 0 is never
+ * chosen. */
+#ifndef KERNELS_LIGHTS_LIGHT_SELECTION_H
+#define KERNELS_LIGHTS_LIGHT_SELECTION_H
+#include "single_source/vocabulary.h"
+#include "ibl/distribution2d.h"
+#include "kernels/lights/environment_light.h"
+#include "kernels/lights/light.h"
+#include "kernels/lights/point_light.h"
+#include "kernels/lights/sphere_light.h"
+
+/* The light for u in [0, 1), and its probability in *pmf; -1 (and *pmf = 0) without lights. */
+SS_FN int select_light(GLOBAL_MEM const float* cdf, int count, float u, float* pmf) {
+    if (count <= 0) {
+        *pmf = 0.0f;
+        return -1;
+    }
+    float offset;
+    int k = distribution1d_sample(cdf, count, u, &offset);
+    *pmf = distribution1d_probability(cdf, k);
+    return k;
+}
+
+/* The probability with which select_light() chooses light `index`. */
+SS_FN float light_selection_pmf(GLOBAL_MEM const float* cdf, int count, int index) {
+    if (index < 0 || index >= count) return 0.0f;
+    return distribution1d_probability(cdf, index);
+}
+
+/* A sample of light l from p (u: two uniform numbers; the point light uses none). */
+SS_FN LightSample sample_light(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float2 u) {
+    if (l->type == LIGHT_SPHERE) return sphere_light_sample(l, p, u);
+    if (l->type == LIGHT_POINT) return point_light_sample(l, p);
+    return environment_light_sample(env, b, u);
+}
+
+/* The solid-angle density with which sample_light() from p returns the unit direction wi, for
+ * weighting a BSDF sample that found this light (0 for a point light: no direction finds it). */
+SS_FN float light_pdf(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float3 wi) {
+    if (l->type == LIGHT_SPHERE) return sphere_light_pdf(l, p, wi);
+    if (l->type == LIGHT_POINT) return 0.0f;
+    return environment_light_pdf(env, b, wi);
+}
+
+#endif

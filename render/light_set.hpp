@@ -1,0 +1,43 @@
+// The lights of a compiled scene as the kernels see them (kernels/lights/light.h), with the cdf that
+// chooses one per next-event estimate. docs/lights.md gives every power formula.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ibl/environment.hpp"
+#include "kernels/host.hpp"
+#include "scene/compile.hpp"
+
+namespace lab::render {
+
+// How a light is chosen: in proportion to its power (the default), or uniformly.
+enum class LightSelection { power, uniform };
+
+// "power" or "uniform"; lab::InputError naming `option` otherwise.
+LightSelection parse_light_selection(const std::string& text, const std::string& option = "--light-selection");
+const char* light_selection_name(LightSelection selection);
+
+struct LightSet {
+    // The environment first (index 0) when there is one, then the emissive spheres in file order,
+    // then the point lights in file order.
+    std::vector<kernel::Light> lights;
+    // lights.size() + 1 entries for kernels/lights/light_selection.h: 0, ..., 1 (empty without lights).
+    std::vector<float> selection_cdf;
+    // Per material slot: the index in `lights` of the emissive sphere with that slot, -1 otherwise.
+    std::vector<int> light_of_slot;
+    // Per light: its power as luminance, W (docs/lights.md), whatever the selection.
+    std::vector<double> power;
+};
+
+// Power of each kind of light, in luminance (lab::luminance of the RGB radiometric quantity).
+double sphere_light_power(const kernel::Light& light);   // pi Le 4 pi r^2: the flux leaving its outside
+double point_light_power(const kernel::Light& light);    // 4 pi I
+// pi R^2 times the integral of L over the sphere: the flux through a disk of radius R facing each
+// direction, R the radius of the sphere that holds the scene (CompiledScene::bounds_radius).
+double environment_light_power(const ibl::Environment& environment, double scene_radius);
+
+// environment: the scene's environment as loaded (null: none).
+LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environment* environment, LightSelection selection);
+
+}  // namespace lab::render
