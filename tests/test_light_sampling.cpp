@@ -309,11 +309,8 @@ TEST_CASE("lights: a point light is a delta with radiance I / d^2", "[lights]") 
 }
 
 TEST_CASE("lights: the environment light is ibl's sampler, radiance and pdf", "[lights]") {
-    lab::ibl::EnvironmentOptions options;
-    options.face_size = 16;
-    options.rotation_degrees = 40.0f;
-    options.exposure_stops = 1.0f;
-    const lab::ibl::Environment env = lab::ibl::load_environment("envmaps/sunset.exr", options);
+    // turned by 40 degrees, one stop up, faces of 16 texels
+    const lab::ibl::Environment env = lab::ibl::load_environment("envmaps/sunset.exr", {40.0f, 1.0f, 16});
     const kernel::EnvironmentBuffers b{env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data()};
     kernel::Light l{};
     l.type = LIGHT_ENVIRONMENT;
