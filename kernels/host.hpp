@@ -1,5 +1,6 @@
 // The scene-independent single-source kernel headers (random numbers, MIS weights, the camera,
-// the lights, the render settings, the scene's buffers, the film), compiled as C++ for the host: namespace kernel, on the vocabularies of the BRDF
+// the lights, the render settings, the scene's buffers, the film), compiled as C++ for the host:
+// namespace kernel, on the vocabularies of the BRDF
 // module (namespace brdf) and the environment (namespace ibl), whose headers these include and
 // whose include guards make them visible here through the using-directives.
 //

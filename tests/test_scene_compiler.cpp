@@ -3,11 +3,13 @@
 // objects change what is compiled and what the host interpreter evaluates alike.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <set>
 #include <string>
 
+#include "brdf/host/parameters.hpp"
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
 #include "scene/compile.hpp"
@@ -172,4 +174,31 @@ TEST_CASE("scene compiler: emitters get material slots with their radiance", "[s
     float d = lab::scene::scene_distance_material(lab::scene::load_scene("scenes/metaballs.json"), c.emitters[0].center, &material);
     CHECK(d == -c.emitters[0].radius);
     CHECK(material == 3);
+}
+
+TEST_CASE("scene compiler: point lights pass through, a reflecting emitter follows its material's override", "[scene]") {
+    const char* text = R"({
+      "camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "materials": {"sample": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}},
+      "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}},
+                  {"name": "ground", "material": "sample", "shape": {"type": "plane", "normal": [0, 1, 0], "offset": 1}}],
+      "emitters": [{"type": "point", "position": [0, 4, 0], "intensity": [1, 1, 1]},
+                   {"center": [3, 0, 0], "radius": 0.5, "radiance": [2, 2, 2], "material": "sample"}]
+    })";
+    const lab::scene::Scene scene = lab::scene::parse_scene(text, "scenes/x.json");
+    lab::scene::CompileOptions options;
+    brdf::Material gold = brdf::default_material();
+    gold.metallic = 1.0f;
+    options.material_overrides["sample"] = gold;
+    const CompiledScene c = lab::scene::compile_scene(scene, options);
+    REQUIRE(c.point_lights.size() == 1);
+    CHECK(c.point_lights[0].position == Vec3(0, 4, 0));
+    CHECK(c.source.find("#define SCENE_EMITTER_COUNT 1\n") != std::string::npos);  // the point light is no geometry
+    REQUIRE(c.materials.size() == 2);
+    CHECK(c.materials[1].metallic == 1.0f);  // the emitter's slot scatters with the override
+    CHECK(c.emission[1] == Vec3(2.0f));
+    // bounds: camera (0, 0, 5), ball [-1, 1]^3 (the plane's unbounded axes are left out; along y its
+    // extent is infinite too), emitter [2.5, 3.5] x [-0.5, 0.5]^2, point (0, 4, 0)
+    CHECK(c.bounds_center == Vec3(1.25f, 1.5f, 2.0f));
+    CHECK(c.bounds_radius == Approx(0.5 * std::sqrt(4.5 * 4.5 + 5.0 * 5.0 + 6.0 * 6.0)).epsilon(1e-6));
 }

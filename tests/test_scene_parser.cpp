@@ -141,6 +141,26 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
         {{"/emitters/0/radiance/1", -1}, "scenes/x.json: emitters[0].radiance[1]: value -1 must be >= 0"},
         {{"/emitters/0/radius", -0.25}, "scenes/x.json: emitters[0].radius: value -0.25 must be > 0"},
         {{"/emitters/0/center", Json::parse("[0, 1]")}, "scenes/x.json: emitters[0].center: expected an array of 3 numbers"},
+        {{"/emitters/0/type", "spot"}, "scenes/x.json: emitters[0].type: unknown emitter type \"spot\" (expected one of: sphere, point)"},
+        {{"/emitters/0/type", 1}, "scenes/x.json: emitters[0].type: expected a string, got number"},
+        {{"/emitters/0/material", "silver"}, "scenes/x.json: emitters[0].material: material \"silver\" is not declared in \"materials\""},
+        {{"/emitters/0/material", 2}, "scenes/x.json: emitters[0].material: expected a string, got number"},
+        {{"/emitters/0/intensity", Json::parse("[1, 1, 1]")},
+         "scenes/x.json: emitters[0].intensity: unknown key (expected one of: type, center, radius, radiance, material)"},
+        {{"/emitters/1", Json::parse(R"({"type": "point", "position": [0, 1, 0], "intensity": [1, -2, 1]})")},
+         "scenes/x.json: emitters[1].intensity[1]: value -2 must be >= 0"},
+        {{"/emitters/1", Json::parse(R"({"type": "point", "position": [0, 1, 0]})")}, "scenes/x.json: emitters[1].intensity: missing required key"},
+        {{"/emitters/1", Json::parse(R"({"type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1], "radius": 1})")},
+         "scenes/x.json: emitters[1].radius: unknown key (expected one of: type, position, intensity)"},
+        {{"/emitters/1", Json::parse(R"({"type": "point", "position": [0, "a", 0], "intensity": [1, 1, 1]})")},
+         "scenes/x.json: emitters[1].position[1]: expected a number, got string"},
+        {{"/emitters/1", 3}, "scenes/x.json: emitters[1]: expected an object, got number"},
+        {{"/camera", Json::parse(R"({"type": "thin_lens", "position": [0, 1, 4], "look_at": [0, 1, 0], "aperture_radius": 0.1, "focus_distance": -1})")},
+         "scenes/x.json: camera.focus_distance: value -1 must be > 0"},
+        {{"/camera", Json::parse(R"({"type": "thin_lens", "position": [0, 1, 4], "look_at": [0, 1, 0], "aperture_radius": 0, "focus_distance": 4})")},
+         "scenes/x.json: camera.aperture_radius: value 0 must be > 0"},
+        {{"/camera", Json::parse(R"({"type": "thin_lens", "position": [0, 1, 4], "look_at": [0, 1, 0], "aperture_radius": 0.1})")},
+         "scenes/x.json: camera.focus_distance: missing required key"},
         {{"/environment", Json::parse(R"({"file": "a.exr", "constant": [1, 1, 1]})")},
          "scenes/x.json: environment: give exactly one of \"file\" (an image) and \"constant\" (a radiance)"},
         {{"/environment", Json::parse(R"({"constant": [1, 1, 1], "exposure": 25})")},
@@ -162,7 +182,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
     Json empty = base_scene();
     empty["objects"] = Json::array();
     empty["emitters"] = Json::array();
-    CHECK(error_of_text(empty.dump()) == "scenes/x.json: the scene has no objects and no emitters");
+    CHECK(error_of_text(empty.dump()) == "scenes/x.json: the scene has no objects and no emissive spheres (point lights are not geometry)");
 }
 
 TEST_CASE("scene parser: malformed JSON, overflow, NaN and duplicate keys", "[scene]") {
@@ -231,6 +251,26 @@ TEST_CASE("scene parser: what a valid file becomes", "[scene]") {
     CHECK(b.objects[1].shape.path == "objects[1].shape");
     CHECK(b.objects[1].shape.children[0].path == "objects[1].shape.child");
     CHECK(b.objects[2].shape.children[1].path == "objects[2].shape.children[1]");
+
+    // Point lights are lights, not geometry (no slot); a sphere with a material scatters with it.
+    Json lit = base_scene();
+    lit["emitters"].push_back(Json::parse(R"({"type": "point", "position": [1, 2, 3], "intensity": [4, 5, 6]})"));
+    lit["emitters"].push_back(Json::parse(R"({"type": "sphere", "center": [0, -3, 0], "radius": 0.5, "radiance": [1, 2, 3], "material": "gold"})"));
+    Scene l = lab::scene::parse_scene(lit.dump(), kFile);
+    REQUIRE(l.point_lights.size() == 1);
+    CHECK(l.point_lights[0].position == lab::scene::Vec3(1, 2, 3));
+    CHECK(l.point_lights[0].intensity == lab::scene::Vec3(4, 5, 6));
+    REQUIRE(l.emitters.size() == 2);
+    REQUIRE(l.materials.size() == 4);  // sample, gold, emitters[0], emitters[2]
+    CHECK(l.emitters[1].material == 3);
+    CHECK(l.emitters[1].surface_material == "gold");
+    CHECK(l.materials[3].name == "emitters[2]");
+    CHECK(l.materials[3].emitter == 1);
+    CHECK(l.materials[3].emission == lab::scene::Vec3(1, 2, 3));
+    CHECK(l.materials[3].material.metallic == l.materials[1].material.metallic);
+    CHECK(l.materials[3].material.weight_glossy == 1.0f);
+    CHECK(l.materials[2].material.weight_glossy == 0.0f);  // the plain emitter stays black
+    CHECK(l.emitters[0].surface_material.empty());
 
     Scene t = lab::scene::load_scene("tests/scene_data/combinators.json");
     CHECK(t.camera.type == lab::scene::CameraType::thin_lens);

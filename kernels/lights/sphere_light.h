@@ -20,10 +20,11 @@
 #include "brdf/warp.h"
 #include "kernels/lights/light.h"
 
-/* A direction within this many radians (in sin) of the cone's edge still counts as hitting the
- * sphere: a unit vector built in float carries about this much rounding, and a sample drawn at the
- * very edge must find the density it was drawn with. */
-#define SPHERE_LIGHT_EDGE_TOLERANCE 2e-7f
+/* A direction within this much (in sin of its angle to the axis) outside the cone still counts as
+ * hitting the sphere: a unit vector built in float is only that exact, and a sample drawn at the
+ * very edge must find the density it was drawn with. It widens the pdf's support, so the pdf
+ * integrates to 1 + 2e-7 / sin(theta_max) (1.0008 at sin theta_max = 2.5e-4, 1/20 of the sun). */
+#define SPHERE_LIGHT_EDGE_TOLERANCE 1e-7f
 
 SS_FN float sphere_light_area_pdf(const Light* l) { return 1.0f / (4.0f * SS_PI * sqr(l->radius)); }
 
@@ -73,10 +74,15 @@ SS_FN LightSample sphere_light_sample(const Light* l, float3 p, float2 u) {
     ShadingFrame frame = frame_from_normal(to_center / d);
     float3 wi = frame_to_world(frame, make_float3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta));
     /* the nearer intersection of the ray with the sphere, seen from the centre: the angle alpha
-     * from the axis back towards p, cos alpha = sin^2 / sin_max + cos sqrt(1 - sin^2 / sin^2_max) */
+     * from the axis back towards p. In the triangle (p, centre, point) the angle at the point is
+     * beta, obtuse, sin beta = sin theta / sin_max, and alpha = pi - theta - beta, so
+     *   cos alpha = sin^2 theta / sin_max + cos theta sqrt(1 - sin^2 theta / sin^2_max)  (pbrt),
+     *   sin alpha = sin theta (cos theta / sin_max - sqrt(1 - sin^2 theta / sin^2_max));
+     * sin alpha from its own formula, not from 1 - cos^2, which loses it for small alpha. */
     float sin_max = r / d;
-    float cos_alpha = sin2_theta / sin_max + cos_theta * safe_sqrt(1.0f - sin2_theta / sin2_max);
-    float sin_alpha = safe_sqrt(1.0f - cos_alpha * cos_alpha);
+    float cos_beta = safe_sqrt(1.0f - sin2_theta / sin2_max);
+    float cos_alpha = sin2_theta / sin_max + cos_theta * cos_beta;
+    float sin_alpha = fmax(sin_theta * (cos_theta / sin_max - cos_beta), 0.0f);
     float3 n = frame_to_world(frame, make_float3(sin_alpha * cos(phi), sin_alpha * sin(phi), -cos_alpha));
     s.position = c + n * r;
     s.normal = n;
