@@ -101,7 +101,7 @@ double pixel_noise(const ImageRgb& a, const ImageRgb& b) { return lab::film::ima
 
 }  // namespace
 
-TEST_CASE("Furnace: a white Lambert test model is 1 in every pixel (BSDF sampling, no noise)", "[furnace][preview]") {
+TEST_CASE("Furnace: a white Lambert test model is 1 in every pixel (BSDF sampling, no noise)", "[furnace][preview][opencl]") {
     lab::opencl::Runtime runtime("");
     Render r = furnace(runtime, white_lambert(), IblSampling::brdf, 4);
     Range range = pixel_range(r.image);
@@ -111,7 +111,7 @@ TEST_CASE("Furnace: a white Lambert test model is 1 in every pixel (BSDF samplin
     CHECK(range.hi < 1.01f);
 }
 
-TEST_CASE("Furnace: environment sampling and MIS also give 1, within their noise", "[furnace][preview]") {
+TEST_CASE("Furnace: environment sampling and MIS also give 1, within their noise", "[furnace][preview][opencl]") {
     lab::opencl::Runtime runtime("");
     for (IblSampling sampling : {IblSampling::env, IblSampling::mis}) {
         Render a = furnace(runtime, white_lambert(), sampling, 64, 1), b = furnace(runtime, white_lambert(), sampling, 64, 2);
@@ -130,7 +130,7 @@ TEST_CASE("Furnace: environment sampling and MIS also give 1, within their noise
     }
 }
 
-TEST_CASE("Furnace: white GGX and Hyper-Cauchy conductor spheres lose only their single-scattering energy", "[furnace][preview]") {
+TEST_CASE("Furnace: white GGX and Hyper-Cauchy conductor spheres lose only their single-scattering energy", "[furnace][preview][opencl]") {
     lab::opencl::Runtime runtime("");
     struct Case {
         const char* name;

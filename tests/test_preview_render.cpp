@@ -41,7 +41,7 @@ double image_mean(const lab::film::ImageRgb& image) {
 
 }  // namespace
 
-TEST_CASE("BRDF, environment and MIS sampling converge to the same image mean", "[preview]") {
+TEST_CASE("BRDF, environment and MIS sampling converge to the same image mean", "[preview][opencl]") {
     lab::opencl::Runtime runtime("");
     lab::ibl::PreviewSceneOptions options;
     options.sample_material = brdf::load_preset("presets/glossy_plastic.json");
@@ -68,7 +68,7 @@ TEST_CASE("BRDF, environment and MIS sampling converge to the same image mean", 
     CHECK(errors[2] <= errors[0] * 1.5);  // MIS is never much worse than BSDF sampling alone
 }
 
-TEST_CASE("A render is a pure function of its seed", "[preview]") {
+TEST_CASE("A render is a pure function of its seed", "[preview][opencl]") {
     lab::opencl::Runtime runtime("");
     lab::ibl::PreviewScene scene = lab::ibl::compile_preview_scene(lab::ibl::load_preview_scene(""), {});
     lab::ibl::Environment env = lab::ibl::load_environment("constant:0.5,0.7,1");
@@ -79,7 +79,7 @@ TEST_CASE("A render is a pure function of its seed", "[preview]") {
     CHECK(a.rgb != c.rgb);
 }
 
-TEST_CASE("Every bundled preset renders without NaN or infinity", "[preview]") {
+TEST_CASE("Every bundled preset renders without NaN or infinity", "[preview][opencl]") {
     lab::opencl::Runtime runtime("");
     lab::ibl::Environment env = lab::ibl::load_environment("envmaps/sunset.exr");  // a sun of 6520: a stress test
     for (const auto& entry : fs::directory_iterator("presets")) {

@@ -5,12 +5,13 @@ set(CLI_TEST_DIR ${CMAKE_CURRENT_LIST_DIR})
 set(CLI_SCRATCH ${CMAKE_CURRENT_BINARY_DIR}/cli_scratch)
 file(MAKE_DIRECTORY ${CLI_SCRATCH})
 
-# cli_bad_input(NAME <name> EXPECT <regex> [STDIN <file>] [ABSENT <file>] ARGS <dtoadq arguments...>)
+# cli_bad_input(NAME <name> EXPECT <regex> [STDIN <file>] [ABSENT <file>] [STATUS <exit>] ARGS <dtoadq arguments...>)
+# STATUS is the exit status required: 2 (every input error, the default) or 1 (no usable device).
 # @PNG@ in ARGS and ABSENT stands for an output path of this test's own (tests may run in parallel).
 # Runs in the source root, so presets/ and tests/cli/data/ paths are short and the messages fixed.
 # EXPECT may not hold an unbalanced "[": CMake would stop splitting the argument list there.
 function(cli_bad_input)
-  cmake_parse_arguments(T "" "NAME;EXPECT;STDIN;ABSENT" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "" "NAME;EXPECT;STDIN;ABSENT;STATUS" "ARGS" ${ARGN})
   string(REPLACE ";" "|" args "${T_ARGS}")
   string(REPLACE "@PNG@" "${CLI_SCRATCH}/${T_NAME}.png" args "${args}")
   string(REPLACE "@PNG@" "${CLI_SCRATCH}/${T_NAME}.png" T_ABSENT "${T_ABSENT}")
@@ -20,6 +21,9 @@ function(cli_bad_input)
   endif()
   if(T_ABSENT)
     list(APPEND extra -DABSENT=${T_ABSENT})
+  endif()
+  if(T_STATUS)
+    list(APPEND extra -DSTATUS=${T_STATUS})
   endif()
   add_test(NAME cli.${T_NAME}
            COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${args}" "-DEXPECT=${T_EXPECT}" ${extra}
@@ -237,7 +241,7 @@ cli_bad_input(NAME preview.output_extension EXPECT "${E}${CLI_SCRATCH}/preview\\
               ARGS preview --size 16x16 --spp 1 -o ${CLI_SCRATCH}/preview.jpg)
 cli_bad_input(NAME preview.output_folder EXPECT "${E}${CLI_SCRATCH}/absent_folder/preview\\.exr: "
               ARGS preview --size 16x16 --spp 1 -o ${CLI_SCRATCH}/absent_folder/preview.exr)
-cli_bad_input(NAME preview.no_device ABSENT ${PNG} EXPECT "${E}no OpenCL device matches \"no-such-device\""
+cli_bad_input(NAME preview.no_device ABSENT ${PNG} STATUS 1 EXPECT "${E}no OpenCL device matches \"no-such-device\""
               ARGS ${PREVIEW} --device no-such-device)
 cli_bad_input(NAME bench_preview.bad_seconds EXPECT "${E}--seconds: must be more than 0 and at most 3600$"
               ARGS bench preview --seconds 0)
@@ -255,7 +259,7 @@ set(NO_PLATFORM_ARGS_preview "preview|--size|8x8|--spp|1|-o|${CLI_SCRATCH}/no_pl
 foreach(command devices preview)
   add_test(NAME cli.${command}.no_opencl_platform
            COMMAND ${CMAKE_COMMAND} -E env OCL_ICD_VENDORS=${CLI_SCRATCH}/no_icd_vendors
-                   ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${NO_PLATFORM_ARGS_${command}}" -DABSENT=${CLI_SCRATCH}/no_platform.exr
+                   ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${NO_PLATFORM_ARGS_${command}}" -DABSENT=${CLI_SCRATCH}/no_platform.exr -DSTATUS=1
                    "-DEXPECT=${E}no OpenCL device found: no platform reports a device \\(is an OpenCL driver such as pocl-opencl-icd installed\\?\\)$"
                    -P ${CLI_TEST_DIR}/expect_error.cmake
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
