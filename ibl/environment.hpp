@@ -61,6 +61,16 @@ private:
 // a size that is not 2:1, and a NaN or infinite pixel.
 LatLongImage read_latlong_image(const std::string& path);
 
+// The largest lat-long image read: 32768 x 16384 (6 GiB of float RGB).
+constexpr int kMaxLatLongHeight = 16384;
+
+// What read_latlong_image checks of the size (2:1, at most kMaxLatLongHeight rows), and of the
+// pixels it read (width x height x 1 or 3 floats, channel_names.size() channels): each an
+// InputError naming `path` and the field. Separate so that any float data can be tested and fuzzed.
+void check_latlong_size(const std::string& path, int width, int height);
+LatLongImage latlong_from_pixels(const std::string& path, int width, int height, const std::vector<float>& pixels,
+                                 const std::vector<std::string>& channel_names);
+
 // "constant:R,G,B" (three finite non-negative numbers) or the path of a lat-long image.
 // Throws lab::InputError naming the file, or options.origin for the spec and the options.
 Environment load_environment(const std::string& spec, const EnvironmentOptions& options = {});

@@ -1,0 +1,114 @@
+// Fuzzes the command line's size and option parsers: the input, split at newlines, is the argument
+// list of an app with every option of `preview` (CLI11 and the lab's own checks), and each line is
+// also given to the size, angle-pair, sampling, normals and tone-map parsers. Invariants: each is
+// refused with an error of its kind or accepted; an accepted size lies in 1 .. 16384 a side and
+// reads back the same from "WxH"; an accepted angle pair is finite with theta in [0, 180]; an
+// accepted word is the name of what it parsed to.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/options.hpp"
+#include "cli/preview_job.hpp"
+#include "common/input_error.hpp"
+#include "film/tone_map.hpp"
+#include "fuzz/fuzz_check.hpp"
+#include "ibl/preview_renderer.hpp"
+
+namespace {
+
+void check_size(const std::string& text) {
+    int width = 0, height = 0;
+    try {
+        lab::cli::parse_image_size(text, "--size", &width, &height);
+    } catch (const lab::InputError&) {
+        return;
+    }
+    FUZZ_REQUIRE(width >= 1 && height >= 1 && width <= lab::ibl::kMaxImageSide && height <= lab::ibl::kMaxImageSide,
+                 "an accepted size is outside 1 .. 16384");
+    int w2 = 0, h2 = 0;
+    lab::cli::parse_image_size(std::to_string(width) + "x" + std::to_string(height), "--size", &w2, &h2);
+    FUZZ_REQUIRE(w2 == width && h2 == height, "an accepted size does not read back the same");
+}
+
+void check_angles(const std::string& text) {
+    float theta = -1.0f, phi = 0.0f;
+    try {
+        lab::cli::parse_angle_pair(text, "--wi", &theta, &phi);
+    } catch (const lab::InputError&) {
+        return;
+    }
+    FUZZ_REQUIRE(std::isfinite(theta) && std::isfinite(phi) && theta >= 0.0f && theta <= 180.0f, "an accepted angle pair is out of range");
+}
+
+void check_words(const std::string& text) {
+    try {
+        FUZZ_REQUIRE(text == lab::ibl::ibl_sampling_name(lab::ibl::parse_ibl_sampling(text)), "a sampling word is not its name");
+    } catch (const lab::InputError&) {
+    }
+    try {
+        FUZZ_REQUIRE(text == lab::ibl::normal_method_name(lab::ibl::parse_normal_method(text)), "a normals word is not its name");
+    } catch (const lab::InputError&) {
+    }
+    try {
+        FUZZ_REQUIRE(text == lab::film::tone_map_name(lab::film::parse_tone_map(text)), "a tone map word is not its name");
+    } catch (const lab::InputError&) {
+    }
+}
+
+// The preview's options through CLI11, then the checks `prepare_preview_job` makes before it loads
+// anything (the size, the words, the settings' ranges).
+void check_command_line(std::vector<std::string> args) {
+    CLI::App app{"fuzz"};
+    lab::cli::PreviewJobOptions options;
+    lab::cli::add_preview_job_options(app, &options);
+    int spp = 64;
+    double seconds = 0.0;
+    app.add_option("--spp", spp);
+    app.add_option("--time", seconds);
+    std::reverse(args.begin(), args.end());  // CLI11 takes the arguments back to front
+    try {
+        app.parse(args);
+    } catch (const CLI::ParseError&) {
+        return;
+    }
+    lab::ibl::PreviewSettings settings;
+    try {
+        lab::cli::parse_image_size(options.size, "--size", &settings.width, &settings.height);
+        settings.sampling = lab::ibl::parse_ibl_sampling(options.sampling);
+        settings.normals = lab::ibl::parse_normal_method(options.normals);
+        settings.max_depth = options.max_depth;
+        settings.max_steps = options.max_steps;
+        settings.over_relaxation = options.over_relaxation;
+        lab::ibl::check_preview_settings(settings);
+    } catch (const lab::InputError&) {
+        return;
+    }
+    FUZZ_REQUIRE(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f, "an accepted over-relaxation is outside [1, 2]");
+    FUZZ_REQUIRE(settings.max_depth >= 0 && settings.max_depth <= 1024 && settings.max_steps >= 1, "an accepted depth or step count is out of range");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    std::vector<std::string> lines;
+    size_t start = 0;
+    while (start <= text.size() && lines.size() < 64) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    for (const std::string& line : lines) {
+        check_size(line);
+        check_angles(line);
+        check_words(line);
+    }
+    check_command_line(lines);
+    return 0;
+}
