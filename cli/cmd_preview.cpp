@@ -9,6 +9,7 @@
 
 #include "brdf/host/preset.hpp"
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/preview_job.hpp"
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
@@ -47,6 +48,7 @@ void run_preview(const PreviewCommand& c) {
     if (!c.quiet)
         std::printf("%s on %s: kernel built in %.2f s\n", job.description.c_str(), runtime.device().description().c_str(),
                     renderer.build_seconds());
+    std::fflush(stdout);
     for (const std::string& w : job.warnings) std::fprintf(stderr, "dtoadq: note: %s\n", w.c_str());
 
     RenderLimits limits;
@@ -62,8 +64,10 @@ void run_preview(const PreviewCommand& c) {
     write_preview_images(c.output, renderer.image(), tone_map, c.exposure, metadata);
     std::printf("wrote %s%s\n", c.output.c_str(), is_exr_path(c.output) ? (" and " + png_beside(c.output)).c_str() : "");
     print_preview_statistics(stats, c.quiet);
-    if (interrupted)
+    if (interrupted) {
         std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);
+        throw CLI::RuntimeError(kInterruptedExitStatus);
+    }
 }
 
 }  // namespace

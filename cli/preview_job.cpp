@@ -3,15 +3,14 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
 
 #include "brdf/host/preset.hpp"
+#include "cli/interrupt.hpp"
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "film/progress_bar.hpp"
@@ -160,11 +159,6 @@ void write_preview_images(const std::string& output, const film::ImageRgb& image
     }
 }
 
-namespace {
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) { g_interrupted = true; }
-}  // namespace
-
 bool render_progressively(ibl::PreviewRenderer& renderer, const RenderLimits& limits) {
     bool timed = limits.seconds > 0.0;
     int target = timed && !limits.samples_given ? (1 << 24) : limits.samples;
@@ -173,10 +167,9 @@ bool render_progressively(ibl::PreviewRenderer& renderer, const RenderLimits& li
     const ibl::PreviewSettings& settings = renderer.settings();
     film::ProgressBar progress(timed ? film::ProgressMode::Time : film::ProgressMode::Samples, timed ? limits.seconds : double(target),
                                double(settings.width) * settings.height, progress_options);
-    g_interrupted = false;
-    auto previous = std::signal(SIGINT, on_interrupt);
+    InterruptScope interrupt_scope;
     int done = 0;
-    while (done < target && !g_interrupted) {
+    while (done < target && !interrupt_requested()) {
         if (timed && progress.elapsed_seconds() >= limits.seconds) break;
         int n = std::min(renderer.samples_per_launch(), target - done);
         auto start = std::chrono::steady_clock::now();
@@ -192,9 +185,8 @@ bool render_progressively(ibl::PreviewRenderer& renderer, const RenderLimits& li
             if (fit < renderer.samples_per_launch()) renderer.set_samples_per_launch(std::max(1, fit));
         }
     }
-    std::signal(SIGINT, previous);
     progress.finish();
-    return g_interrupted;
+    return interrupt_requested();
 }
 
 void print_preview_statistics(const ibl::PreviewStatistics& s, bool quiet) {

@@ -265,3 +265,79 @@ foreach(command devices preview)
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli.${command}.no_opencl_platform PROPERTIES LABELS cli TIMEOUT 60)
 endforeach()
+
+# --- Ctrl-C, a vanished output folder: what was rendered is kept --------------------------------
+# run_and_interrupt sends SIGINT (or removes a folder) once the command's output shows a text;
+# expect_interrupted.cmake checks the exit status, the output and that every EXR is complete and
+# says how many samples per pixel it holds.
+add_executable(run_and_interrupt ${CLI_TEST_DIR}/run_and_interrupt.cpp)
+# cli_interrupt_test(NAME <name> TRIGGER <text> DELAY <seconds> [ACTION <action>] [STATUS <exit>]
+#                    [EXRS <files>] [MIN_SPP n] [MAX_SPP n] [MAY_BE_ABSENT] [ABSENT <files>] [MKDIRS <folders>]
+#                    [SETUP <from=to...>] [ENV <VAR=value...>] EXPECT <regexes...> ARGS <dtoadq arguments...>)
+function(cli_interrupt_test)
+  cmake_parse_arguments(T "MAY_BE_ABSENT" "NAME;TRIGGER;DELAY;ACTION;STATUS;MIN_SPP;MAX_SPP" "EXRS;ABSENT;MKDIRS;SETUP;ENV;EXPECT;ARGS" ${ARGN})
+  set(work ${CLI_SCRATCH}/${T_NAME})
+  set(defines -DHELPER=$<TARGET_FILE:run_and_interrupt> -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${work} "-DTRIGGER=${T_TRIGGER}" -DDELAY=${T_DELAY})
+  foreach(list_name ARGS EXPECT EXRS ABSENT MKDIRS SETUP)
+    string(REPLACE ";" "|" joined "${T_${list_name}}")
+    string(REPLACE "@WORK@" "${work}" joined "${joined}")
+    list(APPEND defines "-D${list_name}=${joined}")
+  endforeach()
+  foreach(scalar ACTION STATUS MIN_SPP MAX_SPP)
+    if(DEFINED T_${scalar})
+      string(REPLACE "@WORK@" "${work}" value "${T_${scalar}}")
+      list(APPEND defines "-D${scalar}=${value}")
+    endif()
+  endforeach()
+  if(T_MAY_BE_ABSENT)
+    list(APPEND defines -DMAY_BE_ABSENT=1)
+  endif()
+  string(REPLACE "@WORK@" "${work}" env "${T_ENV}")
+  add_test(NAME cli.${T_NAME} COMMAND ${CMAKE_COMMAND} -E env ${env} ${CMAKE_COMMAND} ${defines} -P ${CLI_TEST_DIR}/expect_interrupted.cmake)
+  set_tests_properties(cli.${T_NAME} PROPERTIES LABELS cli TIMEOUT 500)
+endfunction()
+
+set(SRC ${PROJECT_SOURCE_DIR})
+# Ctrl-C during a preview that would take hours: the image so far is written, its header says how
+# many samples it holds, and the exit status is 130.
+cli_interrupt_test(NAME preview.ctrl_c TRIGGER "kernel built in" DELAY 2
+                   EXRS out.exr MIN_SPP 1 MAX_SPP 16777215
+                   EXPECT "interrupted after [1-9][0-9]* samples per pixel; the image so far was written"
+                   ARGS preview --material ${SRC}/presets/gold.json --env constant:1,1,1 --size 64x64 --spp 16777216 -o out.exr)
+# A second Ctrl-C right after the first stops at once, during the write if it comes then: the EXR is
+# absent or complete, never truncated (writes are atomic).
+cli_interrupt_test(NAME preview.second_ctrl_c TRIGGER "kernel built in" DELAY 2 ACTION int,0.02
+                   EXRS out.exr MIN_SPP 1 MAX_SPP 16777215 MAY_BE_ABSENT
+                   EXPECT "interrupted"
+                   ARGS preview --material ${SRC}/presets/gold.json --env constant:1,1,1 --size 256x256 --spp 16777216 -o out.exr)
+# The output folder vanishes while the preview renders: the render goes to the temporary folder
+# and the one-line error (exit 2) says where.
+cli_interrupt_test(NAME preview.output_folder_vanishes TRIGGER "kernel built in" DELAY 0 ACTION remove=@WORK@/out STATUS 2
+                   MKDIRS out tmp ENV TMPDIR=@WORK@/tmp
+                   EXRS tmp/dtoadq-preview-*.exr MIN_SPP 64 MAX_SPP 64
+                   EXPECT "dtoadq: error: out/preview\\.exr: cannot write .*; the render was saved to .*/tmp/dtoadq-preview-[0-9]+\\.exr"
+                   ARGS preview --material ${SRC}/presets/gold.json --env constant:1,1,1 --size 64x64 --spp 64 -o out/preview.exr)
+# Ctrl-C during a report's second preview (its kernel build): the report stops, says what it
+# finished, and the first preview is complete.
+set(REPORT_PRESETS SETUP ${SRC}/presets/copper.json=presets/copper.json ${SRC}/presets/gold.json=presets/gold.json)
+cli_interrupt_test(NAME report.ctrl_c_between_presets TRIGGER "report: preview of gold" DELAY 0 ${REPORT_PRESETS}
+                   EXRS report/preview_copper.exr MIN_SPP 16 MAX_SPP 16 ABSENT report/preview_gold.exr report/README.md
+                   EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart, the preview of copper \\(2 presets in all\\)"
+                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr -o report --samples 20000 --theta-in 30
+                        --preview-spp 16 --preview-size 32x32)
+# Ctrl-C during a preview of a report: that preview is written with the samples it holds.
+cli_interrupt_test(NAME report.ctrl_c_during_preview TRIGGER "report: preview of copper" DELAY 4 ${REPORT_PRESETS}
+                   EXRS report/preview_copper.exr MIN_SPP 1 MAX_SPP 999999 ABSENT report/preview_gold.exr report/README.md
+                   EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart; cut short: the preview of copper \\([0-9]+ of 1000000 samples per pixel, written\\)"
+                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr -o report --samples 20000 --theta-in 30
+                        --preview-spp 1000000 --preview-size 32x32)
+
+# --- validate: a physical failure is a non-zero exit (1), a pass is 0 -----------------------------
+function(cli_status_test name status expect)
+  string(REPLACE ";" "|" args "${ARGN}")
+  add_test(NAME cli.${name} COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${args}" -DSTATUS=${status} "-DEXPECT=${expect}"
+                                    -P ${CLI_TEST_DIR}/expect_status.cmake WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.${name} PROPERTIES LABELS cli TIMEOUT 300)
+endfunction()
+cli_status_test(validate.physical_failure_exits_1 1 "FAIL" validate --samples 20000 --material presets/dtoadq2017_typical.json)
+cli_status_test(validate.pass_exits_0 0 "PASS" validate --samples 20000 --material presets/gold.json)
