@@ -44,7 +44,7 @@ double ggx_single_scattering_albedo(double theta_o, double alpha, int n = 512) {
         const double cos_h = 1.0 / std::sqrt(1.0 + tan2_h), sin_h = std::sqrt(tan2_h) * cos_h;
         for (int b = 0; b < n; ++b) {
             const double phi = 2.0 * kPi * (b + 0.5) / n;
-            const double hx = sin_h * std::cos(phi), hy = sin_h * std::sin(phi), hz = cos_h;
+            const double hx = sin_h * std::cos(phi), hz = cos_h;  // h.y does not enter: o lies in the xz plane
             const double o_h = sin_o * hx + mu_o * hz;  // o = (sin_o, 0, mu_o)
             if (o_h <= 0.0) continue;
             const double iz = 2.0 * o_h * hz - mu_o;  // i = 2 (o.h) h - o
