@@ -341,3 +341,8 @@ function(cli_status_test name status expect)
 endfunction()
 cli_status_test(validate.physical_failure_exits_1 1 "FAIL" validate --samples 20000 --material presets/dtoadq2017_typical.json)
 cli_status_test(validate.pass_exits_0 0 "PASS" validate --samples 20000 --material presets/gold.json)
+
+# --- non-finite samples are reported on stderr and in the EXR's metadata ---------------------------
+cli_status_test(preview.reports_nonfinite_samples 0 "dtoadq: warning: [1-9][0-9]* non-finite samples \\(NaN or infinite\\) were left out of the image"
+                preview --env constant:3e38,3e38,3e38 --ibl-sampling env --ground off --size 16x16 --spp 1 --quiet
+                -o ${CLI_SCRATCH}/nonfinite.exr)
