@@ -11,7 +11,7 @@ volatile std::sig_atomic_t g_requests = 0;
 int g_depth = 0;
 void (*g_previous)(int) = SIG_DFL;
 
-extern "C" void on_interrupt(int) {
+extern "C" void dtoadq_on_sigint(int) {
     if (g_requests > 0) {  // the second Ctrl-C: stop now (only async-signal-safe calls here)
         static const char message[] = "\ndtoadq: interrupted again: stopped; files already written are complete\n";
         (void)!::write(STDERR_FILENO, message, sizeof message - 1);
@@ -25,7 +25,7 @@ extern "C" void on_interrupt(int) {
 InterruptScope::InterruptScope() {
     if (g_depth++ == 0) {
         g_requests = 0;
-        g_previous = std::signal(SIGINT, on_interrupt);
+        g_previous = std::signal(SIGINT, dtoadq_on_sigint);
     }
 }
 
