@@ -13,10 +13,11 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/render_job.hpp"
-#include "render/opencl_renderer.hpp"
 #include "cli/report_groups.hpp"
 #include "common/input_error.hpp"
 #include "opencl/runtime.hpp"
+#include "render/interrupt.hpp"
+#include "render/opencl_renderer.hpp"
 #include "plots/albedo_chart.hpp"
 #include "plots/lobe_plot.hpp"
 #include "plots/output_file.hpp"
@@ -40,12 +41,22 @@ struct ReportOptions {
     std::string device;
 };
 
+// What an interrupted report says it finished.
+struct ReportProgress {
+    std::vector<std::string> finished;  // stages and presets done, in order
+    std::string partial;                // the stage Ctrl-C cut short, if any
+};
+
 // One preview per preset, each its own kernel (a preset's kernel holds only the lobes it uses).
-std::vector<std::string> write_previews(const ReportOptions& o, const std::vector<brdf::Preset>& presets, const fs::path& out) {
+// Ctrl-C ends the preview being rendered: it is written with the samples it holds (its EXR's
+// metadata says how many), and no further preset is started.
+std::vector<std::string> write_previews(const ReportOptions& o, const std::vector<brdf::Preset>& presets, const fs::path& out,
+                                        ReportProgress* progress) {
     std::vector<std::string> written;
     std::vector<plots::SheetImage> sheet;
     opencl::Runtime runtime(o.device);
     for (const brdf::Preset& p : presets) {
+        if (render::interrupt_requested()) break;
         RenderJobOptions job_options;
         job_options.material = p.source;
         job_options.env = o.env;
@@ -58,14 +69,22 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
         render::RenderLimits limits;
         limits.samples = o.preview_spp;
         limits.quiet = true;
-        render::render_progressively(renderer, limits);
+        bool interrupted = render::render_progressively(renderer, limits);
         render::RenderStatistics stats = renderer.statistics();
+        if (stats.samples_per_pixel == 0) break;  // interrupted before its first sample: nothing to keep
         render::write_render_images((out / (name + ".exr")).string(), renderer.image(), film::ToneMap::Aces, 0.0f,
                                     job_metadata(job, renderer, stats));
         render::print_render_statistics(stats, true);  // only the warnings
         written.push_back(name + ".png");
         sheet.push_back({p.name, (out / (name + ".png")).string()});
+        if (interrupted) {
+            progress->partial = "the preview of " + p.name + " (" + std::to_string(stats.samples_per_pixel) + " of " +
+                                std::to_string(o.preview_spp) + " samples per pixel, written)";
+            break;
+        }
+        progress->finished.push_back("the preview of " + p.name);
     }
+    if (sheet.empty()) return written;
     std::printf("report: preview sheet -> %s\n", (out / "previews.png").c_str());
     plots::write_preview_sheet(sheet, "Presets on the test model under " + fs::path(o.env).filename().string() + ", " +
                                           std::to_string(o.preview_spp) + " spp", (out / "previews.png").string());
@@ -73,7 +92,21 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
     return written;
 }
 
+// Ctrl-C: one line saying what was finished, and the interrupted exit status. What was written
+// stays; the index and the validation table are written only by a report that ran to its end.
+void stop_if_interrupted(const ReportProgress& progress, const std::vector<brdf::Preset>& presets) {
+    if (!render::interrupt_requested()) return;
+    std::string finished;
+    for (const std::string& f : progress.finished) finished += (finished.empty() ? "" : ", ") + f;
+    std::fprintf(stderr, "dtoadq: report interrupted; finished: %s%s%s (%zu presets in all)\n",
+                 finished.empty() ? "nothing" : finished.c_str(), progress.partial.empty() ? "" : "; cut short: ",
+                 progress.partial.c_str(), presets.size());
+    throw CLI::RuntimeError(render::kInterruptedExitStatus);
+}
+
 void run_report(const ReportOptions& o) {
+    render::InterruptScope interrupt_scope;  // Ctrl-C anywhere in the report: finish the step, say what was done
+    ReportProgress progress;
     std::vector<brdf::Preset> presets = load_preset_folder(o.presets, "--presets");
     int width = 0, height = 0;
     render::parse_image_size(o.preview_size, "--preview-size", &width, &height);
@@ -93,17 +126,22 @@ void run_report(const ReportOptions& o) {
             std::fflush(stdout);
             plots::write_lobe_plot(group.presets, theta, 0.0f, (out / name).string(), "");
             written.push_back(name);
+            stop_if_interrupted(progress, presets);
         }
     }
+    progress.finished.push_back("the lobe plots");
     std::printf("report: directional albedo of %zu presets -> %s\n", presets.size(), (out / "albedo.png").c_str());
     std::fflush(stdout);
     plots::write_albedo_chart(presets, (out / "albedo.png").string(), (out / "albedo.csv").string());
     written.push_back("albedo.png");
     written.push_back("albedo.csv");
+    progress.finished.push_back("the albedo chart");
+    stop_if_interrupted(progress, presets);
 
     if (o.preview) {
-        std::vector<std::string> previews = write_previews(o, presets, out);
+        std::vector<std::string> previews = write_previews(o, presets, out, &progress);
         written.insert(written.end(), previews.begin(), previews.end());
+        stop_if_interrupted(progress, presets);
     }
 
     validation::ValidationOptions options;
@@ -113,6 +151,8 @@ void run_report(const ReportOptions& o) {
         std::printf("report: validating %s\n", p.name.c_str());
         std::fflush(stdout);
         results.push_back(validation::validate_material(p, options));
+        progress.finished.push_back("the validation of " + p.name);
+        stop_if_interrupted(progress, presets);
     }
     std::ostringstream table;
     validation::print_validation_table(table, results);

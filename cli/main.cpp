@@ -26,8 +26,11 @@ int main(int argc, char** argv) {
     lab::cli::register_render(app);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::RuntimeError& e) {
+        return e.get_exit_code();  // a job's own failure (validate, report: a physical check failed)
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // --help is not an error; every command-line mistake is an input error: exit 2, as documented
+        return app.exit(e) == 0 ? 0 : 2;
     } catch (const lab::InputError& e) {
         std::fprintf(stderr, "dtoadq: error: %s\n", e.what());
         return 2;

@@ -7,6 +7,7 @@
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "render/host_renderer.hpp"
+#include "render/interrupt.hpp"
 #include "render/opencl_renderer.hpp"
 #include "scene/load_scene.hpp"
 #include "scene/test_model.hpp"
@@ -80,7 +81,7 @@ std::optional<ibl::Environment> load_job_environment(const RenderJobOptions& o, 
 
 }  // namespace
 
-RenderJob prepare_render_job(const RenderJobOptions& o) {
+render::RenderSettings checked_render_settings(const RenderJobOptions& o, render::LightSelection* selection) {
     render::RenderSettings settings;
     render::parse_image_size(o.size, "--size", &settings.width, &settings.height);
     settings.integrator = render::parse_integrator(o.integrator);
@@ -89,11 +90,18 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     settings.max_depth = o.max_depth;
     settings.max_steps = o.max_steps;
     settings.over_relaxation = o.over_relaxation;
-    render::check_render_settings(settings);  // before anything is loaded
-    render::LightSelection selection = render::parse_light_selection(o.light_selection);
+    render::check_render_settings(settings);
+    *selection = render::parse_light_selection(o.light_selection);
     require_within(o.env_rotation, "--env-rotation", -36000.0f, 36000.0f);
     require_within(o.env_exposure, "--env-exposure", -64.0f, 64.0f);
+    parse_on_off(o.ground, "--ground");
     settings.seed = o.seed;
+    return settings;
+}
+
+RenderJob prepare_render_job(const RenderJobOptions& o) {
+    render::LightSelection selection;
+    render::RenderSettings settings = checked_render_settings(o, &selection);  // before anything is loaded
 
     // scene::apply_options rejects, naming the scene file, a slot or object the scene does not declare
     scene::CompileOptions compile;
@@ -160,6 +168,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (!run.quiet)
         std::printf("%s on %s: kernel built in %.2f s\n", job.description.c_str(), renderer->device_description().c_str(),
                     renderer->build_seconds());
+    std::fflush(stdout);
     for (const std::string& w : renderer->compiled_scene().warnings) std::fprintf(stderr, "dtoadq: note: %s\n", w.c_str());
 
     render::RenderLimits limits;
@@ -176,8 +185,10 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     render::write_render_images(run.output, renderer->image(), tone_map, run.exposure, metadata);
     std::printf("wrote %s%s\n", run.output.c_str(), render::is_exr_path(run.output) ? (" and " + render::png_beside(run.output)).c_str() : "");
     render::print_render_statistics(stats, run.quiet);
-    if (interrupted)
+    if (interrupted) {
         std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);
+        throw CLI::RuntimeError(render::kInterruptedExitStatus);
+    }
 }
 
 }  // namespace lab::cli

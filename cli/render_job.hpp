@@ -50,6 +50,10 @@ struct RenderJob {
     std::string description;  // one line: material, scene, environment, size, integrator, sampling
 };
 
+// The render settings and light selection the options give, checked before anything is loaded
+// (sizes, words, ranges); throws lab::InputError naming the option.
+render::RenderSettings checked_render_settings(const RenderJobOptions& options, render::LightSelection* selection);
+
 // Loads and checks everything (scene, preset, environment, sizes, words); throws lab::InputError.
 RenderJob prepare_render_job(const RenderJobOptions& options);
 

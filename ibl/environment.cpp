@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <stdexcept>
 #include <utility>
 
 #include <OpenImageIO/imageio.h>
@@ -16,8 +17,6 @@
 namespace lab::ibl {
 
 namespace {
-
-constexpr int kMaxImageHeight = 16384;
 
 std::string number_text(double v) {
     char text[32];
@@ -102,6 +101,7 @@ Environment::Environment(std::vector<brdf::float4> texels, int face_size, std::s
                          const EnvironmentOptions& options)
     : texels_(std::move(texels)), source_(std::move(source)) {
     map_.face_size = face_size;
+    for (const brdf::float4& t : texels_) brightest_ = std::max({brightest_, t.x, t.y, t.z});
     set_transform(options.rotation_degrees, options.exposure_stops);
     CubemapDistribution d = build_cubemap_distribution(texels_, face_size);
     marginal_cdf_ = std::move(d.marginal_cdf);
@@ -130,8 +130,13 @@ void Environment::set_transform(float rotation_degrees, float exposure_stops) {
     options.exposure_stops = exposure_stops;
     options.origin = source_;
     validate(options);
+    float intensity = std::exp2(exposure_stops);
+    // Radiance is texel x intensity in float (ibl/environment.h): it must stay finite.
+    if (!std::isfinite(brightest_ * intensity))
+        throw InputError(source_, "exposure", "the brightest radiance, " + number_text(brightest_) + ", times 2^" +
+                                                  number_text(exposure_stops) + " overflows a 32-bit float");
     rotation(rotation_degrees, &map_.rotation_cos, &map_.rotation_sin);
-    map_.intensity = std::exp2(exposure_stops);
+    map_.intensity = intensity;
     rotation_degrees_ = rotation_degrees;
     exposure_stops_ = exposure_stops;
 }
@@ -172,12 +177,7 @@ LatLongImage read_latlong_image(const std::string& path) {
     const OIIO::ImageSpec& spec = input->spec();
     if (spec.deep) throw InputError(path, "", "deep image (expected flat pixels)");
     const int width = spec.width, height = spec.height, channels = spec.nchannels;
-    if (width != 2 * height || height <= 0)
-        throw InputError(path, "size",
-                         std::to_string(width) + " x " + std::to_string(height) +
-                             " is not 2:1 (a lat-long image is twice as wide as it is tall)");
-    if (height > kMaxImageHeight)
-        throw InputError(path, "size", std::to_string(width) + " x " + std::to_string(height) + " exceeds 32768 x 16384");
+    check_latlong_size(path, width, height);
     if (channels != 1 && channels < 3)
         throw InputError(path, "channels",
                          std::to_string(channels) + " (expected 1 for grey, or 3 or more with R, G, B first)");
@@ -189,7 +189,26 @@ LatLongImage read_latlong_image(const std::string& path) {
         throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
     }
     input->close();
+    std::vector<std::string> names;
+    for (int c = 0; c < used; ++c) names.push_back(spec.channel_name(c));
+    return latlong_from_pixels(path, width, height, pixels, names);
+}
 
+void check_latlong_size(const std::string& path, int width, int height) {
+    if (width != 2 * height || height <= 0)
+        throw InputError(path, "size",
+                         std::to_string(width) + " x " + std::to_string(height) +
+                             " is not 2:1 (a lat-long image is twice as wide as it is tall)");
+    if (height > kMaxLatLongHeight)
+        throw InputError(path, "size", std::to_string(width) + " x " + std::to_string(height) + " exceeds 32768 x 16384");
+}
+
+LatLongImage latlong_from_pixels(const std::string& path, int width, int height, const std::vector<float>& pixels,
+                                 const std::vector<std::string>& channel_names) {
+    check_latlong_size(path, width, height);
+    const int used = int(channel_names.size());
+    if ((used != 1 && used != 3) || pixels.size() != size_t(width) * height * used)
+        throw std::invalid_argument("latlong_from_pixels: pixels hold width x height x 1 or 3 floats");
     LatLongImage image;
     image.width = width;
     image.height = height;
@@ -201,7 +220,7 @@ LatLongImage read_latlong_image(const std::string& path) {
                 const int source_channel = used == 1 ? 0 : c;
                 const float v = pixels[p * used + source_channel];
                 if (!std::isfinite(v)) {
-                    std::string name = spec.channel_name(source_channel);
+                    std::string name = channel_names[source_channel];
                     if (name.empty()) name = "channel " + std::to_string(source_channel);
                     throw InputError(path, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")",
                                      name + " is " + (std::isnan(v) ? "NaN" : "infinite") + " (radiance must be finite)");

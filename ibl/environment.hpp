@@ -41,7 +41,8 @@ public:
     const std::string& source() const { return source_; }
 
     // Turns and scales the environment anew: absolute values, as EnvironmentOptions gives them
-    // (InputError naming the source for a non-finite rotation or an exposure outside [-64, 64]).
+    // (InputError naming the source for a non-finite rotation, an exposure outside [-64, 64], or one
+    // that makes the brightest radiance overflow a float).
     // Only the kernel argument map() changes: the texels and their distribution stay, since the
     // rotation turns directions and the intensity scales every texel alike.
     void set_transform(float rotation_degrees, float exposure_stops);
@@ -62,6 +63,7 @@ private:
     std::vector<float> marginal_cdf_, conditional_cdf_;
     std::string source_;
     float rotation_degrees_ = 0.0f, exposure_stops_ = 0.0f;
+    float brightest_ = 0.0f;  // the largest texel channel: an exposure must keep it finite
 };
 
 // Reads an equirectangular OpenEXR (.exr) or Radiance HDR (.hdr) file: 2:1, one channel (grey) or
@@ -69,6 +71,16 @@ private:
 // Throws lab::InputError naming the file for a missing, unreadable or corrupt file, another format,
 // a size that is not 2:1, and a NaN or infinite pixel.
 LatLongImage read_latlong_image(const std::string& path);
+
+// The largest lat-long image read: 32768 x 16384 (6 GiB of float RGB).
+constexpr int kMaxLatLongHeight = 16384;
+
+// What read_latlong_image checks of the size (2:1, at most kMaxLatLongHeight rows), and of the
+// pixels it read (width x height x 1 or 3 floats, channel_names.size() channels): each an
+// InputError naming `path` and the field. Separate so that any float data can be tested and fuzzed.
+void check_latlong_size(const std::string& path, int width, int height);
+LatLongImage latlong_from_pixels(const std::string& path, int width, int height, const std::vector<float>& pixels,
+                                 const std::vector<std::string>& channel_names);
 
 // "constant:R,G,B" (three finite non-negative numbers) or the path of a lat-long image.
 // Throws lab::InputError naming the file, or options.origin for the spec and the options.

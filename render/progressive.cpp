@@ -3,24 +3,18 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "film/progress_bar.hpp"
+#include "render/interrupt.hpp"
 
 namespace lab::render {
 
 namespace fs = std::filesystem;
-
-namespace {
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) { g_interrupted = true; }
-}  // namespace
 
 bool render_progressively(Renderer& renderer, const RenderLimits& limits) {
     bool timed = limits.seconds > 0.0;
@@ -30,10 +24,9 @@ bool render_progressively(Renderer& renderer, const RenderLimits& limits) {
     const RenderSettings& settings = renderer.settings();
     film::ProgressBar progress(timed ? film::ProgressMode::Time : film::ProgressMode::Samples, timed ? limits.seconds : double(target),
                                double(settings.width) * settings.height, progress_options);
-    g_interrupted = false;
-    auto previous = std::signal(SIGINT, on_interrupt);
+    InterruptScope interrupt_scope;
     int done = 0;
-    while (done < target && !g_interrupted) {
+    while (done < target && !interrupt_requested()) {
         if (timed && progress.elapsed_seconds() >= limits.seconds) break;
         int n = std::min(renderer.samples_per_launch(), target - done);
         auto start = std::chrono::steady_clock::now();
@@ -48,9 +41,8 @@ bool render_progressively(Renderer& renderer, const RenderLimits& limits) {
             if (fit < renderer.samples_per_launch()) renderer.set_samples_per_launch(std::max(1, fit));
         }
     }
-    std::signal(SIGINT, previous);
     progress.finish();
-    return g_interrupted;
+    return interrupt_requested();
 }
 
 film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatistics& stats) {

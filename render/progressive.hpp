@@ -23,7 +23,8 @@ struct RenderLimits {
 };
 
 // Adds samples until a limit is reached or the user interrupts (Ctrl-C ends the current launch and
-// returns true, so the caller writes the image so far). Launches grow while they take under an
+// returns true, so the caller writes the image so far; render/interrupt.hpp: a second Ctrl-C stops
+// the process at once). Launches grow while they take under an
 // eighth of a second, so the bar moves and few launches are made.
 bool render_progressively(Renderer& renderer, const RenderLimits& limits);
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "common/input_error.hpp"
+#include "scene/scene_limits.hpp"
 
 namespace lab::scene {
 
@@ -59,6 +60,9 @@ Json parse_json_document(const std::string& text, const std::string& file) {
         if (!frames.empty() && frames.back().array) ++frames.back().index;
     };
     auto callback = [&](int, Json::parse_event_t event, Json& value) {
+        if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) && frames.size() >= kMaxJsonNesting)
+            throw InputError(file, current_path(frames),
+                             "nested more than " + std::to_string(kMaxJsonNesting) + " objects and arrays deep (the limit of a scene file)");
         switch (event) {
         case Json::parse_event_t::object_start: frames.push_back(Frame{}); break;
         case Json::parse_event_t::array_start: frames.push_back(Frame{true, 0, {}, {}}); break;

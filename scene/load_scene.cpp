@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "brdf/host/parameters.hpp"
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
+#include "common/read_text_file.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/parse_node.hpp"
+#include "scene/scene_limits.hpp"
 
 namespace lab::scene {
 namespace {
@@ -170,6 +170,20 @@ void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
     }
 }
 
+size_t count_nodes(const Node& node) {
+    size_t n = 1;
+    for (const Node& child : node.children) n += count_nodes(child);
+    return n;
+}
+
+void check_shape_node_count(const std::vector<Object>& objects, const std::string& file) {
+    size_t nodes = 0;
+    for (const Object& object : objects) nodes += count_nodes(object.shape);
+    if (nodes > kMaxShapeNodes)
+        throw InputError(file, "objects", std::to_string(nodes) + " shape nodes, more than the " + std::to_string(kMaxShapeNodes) +
+                                              " a scene may hold");
+}
+
 EnvironmentSpec parse_environment(const Json& value, const std::string& file) {
     Fields f(value, "environment", file, {"file", "constant", "rotation_degrees", "exposure"});
     EnvironmentSpec env;
@@ -199,6 +213,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     scene.camera = parse_camera(top.at("camera"), file);
     if (top.has("materials")) scene.materials = parse_materials(top.at("materials"), file);
     if (top.has("objects")) scene.objects = parse_objects(top.at("objects"), file, scene.materials);
+    check_shape_node_count(scene.objects, file);
     if (top.has("emitters")) parse_emitters(top.at("emitters"), file, &scene);
     if (top.has("environment")) scene.environment = parse_environment(top.at("environment"), file);
     if (scene.objects.empty() && scene.emitters.empty())
@@ -206,12 +221,6 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     return scene;
 }
 
-Scene load_scene(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, "", "cannot open scene file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_scene(text.str(), path);
-}
+Scene load_scene(const std::string& path) { return parse_scene(read_text_file(path, kMaxSceneFileBytes, "scene"), path); }
 
 }  // namespace lab::scene

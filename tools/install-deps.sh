@@ -6,7 +6,8 @@ pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
 libopenimageio-dev openimageio-tools libopenexr-dev
 libglfw3-dev libimgui-dev libglm-dev catch2 nlohmann-json3-dev libcli11-dev
 python3 python3-matplotlib python3-numpy
-xvfb xauth libgl1-mesa-dri"
+xvfb xauth libgl1-mesa-dri
+clang-16 libclang-rt-16-dev"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

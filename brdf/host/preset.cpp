@@ -10,12 +10,19 @@
 
 #include "brdf/host/parameters.hpp"
 #include "common/input_error.hpp"
+#include "common/read_text_file.hpp"
 
 namespace brdf {
 namespace {
 
+// Far beyond any real preset (a few hundred bytes, two levels of objects): refused with a line of
+// their own instead of filling memory.
+constexpr std::uintmax_t kMaxPresetFileBytes = 1u << 20;
+constexpr int kMaxPresetNesting = 32;
+
 using nlohmann::json;
 using lab::InputError;
+using lab::read_text_file;
 
 const json* find_key(const json& doc, const std::string& key) {
     auto dot = key.find('.');
@@ -106,14 +113,17 @@ Preset parse_preset(const json& doc, const std::string& source) {
     return preset;
 }
 
-Preset load_preset(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path, "", "cannot open preset file");
+Preset load_preset(const std::string& path) { return parse_preset_text(read_text_file(path, kMaxPresetFileBytes, "preset"), path); }
+
+Preset parse_preset_text(const std::string& text, const std::string& path) {
     json doc;
     std::string last_key;  // the field being read when parsing fails
     try {
-        doc = json::parse(in, [&last_key](int, json::parse_event_t event, json& value) {
+        doc = json::parse(text, [&last_key, &path](int depth, json::parse_event_t event, json& value) {
             if (event == json::parse_event_t::key) last_key = value.get<std::string>();
+            // a preset is two levels deep (the lobes object); nothing legitimate comes near this
+            if (depth > kMaxPresetNesting)
+                throw InputError(path, last_key, "nested more than " + std::to_string(kMaxPresetNesting) + " levels deep");
             return true;
         });
     } catch (const json::exception& e) {  // syntax errors, and number overflow such as 1e999

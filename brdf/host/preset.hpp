@@ -19,6 +19,8 @@ struct Preset {
 // Throws lab::InputError naming the file and the field for an unreadable file, malformed JSON,
 // an unknown key, a wrong type, a NaN or an out-of-range value.
 Preset load_preset(const std::string& path);
+// The same from the file's text; `source` names it in messages.
+Preset parse_preset_text(const std::string& text, const std::string& source);
 Preset parse_preset(const nlohmann::json& document, const std::string& source);
 
 nlohmann::json preset_to_json(const Preset& preset);

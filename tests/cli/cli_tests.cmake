@@ -5,12 +5,13 @@ set(CLI_TEST_DIR ${CMAKE_CURRENT_LIST_DIR})
 set(CLI_SCRATCH ${CMAKE_CURRENT_BINARY_DIR}/cli_scratch)
 file(MAKE_DIRECTORY ${CLI_SCRATCH})
 
-# cli_bad_input(NAME <name> EXPECT <regex> [STDIN <file>] [ABSENT <file>] ARGS <dtoadq arguments...>)
+# cli_bad_input(NAME <name> EXPECT <regex> [STDIN <file>] [ABSENT <file>] [STATUS <exit>] ARGS <dtoadq arguments...>)
+# STATUS is the exit status required: 2 (every input error, the default) or 1 (no usable device).
 # @PNG@ in ARGS and ABSENT stands for an output path of this test's own (tests may run in parallel).
 # Runs in the source root, so presets/ and tests/cli/data/ paths are short and the messages fixed.
 # EXPECT may not hold an unbalanced "[": CMake would stop splitting the argument list there.
 function(cli_bad_input)
-  cmake_parse_arguments(T "" "NAME;EXPECT;STDIN;ABSENT" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "" "NAME;EXPECT;STDIN;ABSENT;STATUS" "ARGS" ${ARGN})
   string(REPLACE ";" "|" args "${T_ARGS}")
   string(REPLACE "@PNG@" "${CLI_SCRATCH}/${T_NAME}.png" args "${args}")
   string(REPLACE "@PNG@" "${CLI_SCRATCH}/${T_NAME}.png" T_ABSENT "${T_ABSENT}")
@@ -20,6 +21,9 @@ function(cli_bad_input)
   endif()
   if(T_ABSENT)
     list(APPEND extra -DABSENT=${T_ABSENT})
+  endif()
+  if(T_STATUS)
+    list(APPEND extra -DSTATUS=${T_STATUS})
   endif()
   add_test(NAME cli.${T_NAME}
            COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${args}" "-DEXPECT=${T_EXPECT}" ${extra}
@@ -237,7 +241,7 @@ cli_bad_input(NAME preview.output_extension EXPECT "${E}${CLI_SCRATCH}/preview\\
               ARGS preview --size 16x16 --spp 1 -o ${CLI_SCRATCH}/preview.jpg)
 cli_bad_input(NAME preview.output_folder EXPECT "${E}${CLI_SCRATCH}/absent_folder/preview\\.exr: "
               ARGS preview --size 16x16 --spp 1 -o ${CLI_SCRATCH}/absent_folder/preview.exr)
-cli_bad_input(NAME preview.no_device ABSENT ${PNG} EXPECT "${E}no OpenCL device matches \"no-such-device\""
+cli_bad_input(NAME preview.no_device ABSENT ${PNG} STATUS 1 EXPECT "${E}no OpenCL device matches \"no-such-device\""
               ARGS ${PREVIEW} --device no-such-device)
 cli_bad_input(NAME bench_preview.bad_seconds EXPECT "${E}--seconds: must be more than 0 and at most 3600$"
               ARGS bench preview --seconds 0)
@@ -268,9 +272,97 @@ set(NO_PLATFORM_ARGS_preview "preview|--size|8x8|--spp|1|-o|${CLI_SCRATCH}/no_pl
 foreach(command devices preview)
   add_test(NAME cli.${command}.no_opencl_platform
            COMMAND ${CMAKE_COMMAND} -E env OCL_ICD_VENDORS=${CLI_SCRATCH}/no_icd_vendors
-                   ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${NO_PLATFORM_ARGS_${command}}" -DABSENT=${CLI_SCRATCH}/no_platform.exr
+                   ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${NO_PLATFORM_ARGS_${command}}" -DABSENT=${CLI_SCRATCH}/no_platform.exr -DSTATUS=1
                    "-DEXPECT=${E}no OpenCL device found: no platform reports a device \\(is an OpenCL driver such as pocl-opencl-icd installed\\?\\)$"
                    -P ${CLI_TEST_DIR}/expect_error.cmake
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli.${command}.no_opencl_platform PROPERTIES LABELS cli TIMEOUT 60)
 endforeach()
+
+# --- Ctrl-C, a vanished output folder: what was rendered is kept --------------------------------
+# run_and_interrupt sends SIGINT (or removes a folder) once the command's output shows a text;
+# expect_interrupted.cmake checks the exit status, the output and that every EXR is complete and
+# says how many samples per pixel it holds.
+add_executable(run_and_interrupt ${CLI_TEST_DIR}/run_and_interrupt.cpp)
+# cli_interrupt_test(NAME <name> TRIGGER <text> DELAY <seconds> [ACTION <action>] [STATUS <exit>]
+#                    [EXRS <files>] [MIN_SPP n] [MAX_SPP n] [MAY_BE_ABSENT] [ABSENT <files>] [MKDIRS <folders>]
+#                    [SETUP <from=to...>] [ENV <VAR=value...>] EXPECT <regexes...> ARGS <dtoadq arguments...>)
+function(cli_interrupt_test)
+  cmake_parse_arguments(T "MAY_BE_ABSENT" "NAME;TRIGGER;DELAY;ACTION;STATUS;MIN_SPP;MAX_SPP" "EXRS;ABSENT;MKDIRS;SETUP;ENV;EXPECT;ARGS" ${ARGN})
+  set(work ${CLI_SCRATCH}/${T_NAME})
+  set(defines -DHELPER=$<TARGET_FILE:run_and_interrupt> -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${work} "-DTRIGGER=${T_TRIGGER}" -DDELAY=${T_DELAY})
+  foreach(list_name ARGS EXPECT EXRS ABSENT MKDIRS SETUP)
+    string(REPLACE ";" "|" joined "${T_${list_name}}")
+    string(REPLACE "@WORK@" "${work}" joined "${joined}")
+    list(APPEND defines "-D${list_name}=${joined}")
+  endforeach()
+  foreach(scalar ACTION STATUS MIN_SPP MAX_SPP)
+    if(DEFINED T_${scalar})
+      string(REPLACE "@WORK@" "${work}" value "${T_${scalar}}")
+      list(APPEND defines "-D${scalar}=${value}")
+    endif()
+  endforeach()
+  if(T_MAY_BE_ABSENT)
+    list(APPEND defines -DMAY_BE_ABSENT=1)
+  endif()
+  string(REPLACE "@WORK@" "${work}" env "${T_ENV}")
+  add_test(NAME cli.${T_NAME} COMMAND ${CMAKE_COMMAND} -E env ${env} ${CMAKE_COMMAND} ${defines} -P ${CLI_TEST_DIR}/expect_interrupted.cmake)
+  set_tests_properties(cli.${T_NAME} PROPERTIES LABELS cli TIMEOUT 500)
+endfunction()
+
+set(SRC ${PROJECT_SOURCE_DIR})
+# Ctrl-C during a preview that would take hours: the image so far is written, its header says how
+# many samples it holds, and the exit status is 130.
+cli_interrupt_test(NAME preview.ctrl_c TRIGGER "kernel built in" DELAY 2
+                   EXRS out.exr MIN_SPP 1 MAX_SPP 16777215
+                   EXPECT "interrupted after [1-9][0-9]* samples per pixel; the image so far was written"
+                   ARGS preview --material ${SRC}/presets/gold.json --env constant:1,1,1 --size 64x64 --spp 16777216 -o out.exr)
+# The same for `render`, on the OpenCL device and on the host build.
+foreach(device cpu host)
+  cli_interrupt_test(NAME render.ctrl_c_${device} TRIGGER "kernel built in" DELAY 2
+                     EXRS out.exr MIN_SPP 1 MAX_SPP 16777215
+                     EXPECT "interrupted after [1-9][0-9]* samples per pixel; the image so far was written"
+                     ARGS render ${SRC}/scenes/cornell_box.json --device ${device} --size 48x48 --spp 16777216 -o out.exr)
+endforeach()
+# A second Ctrl-C right after the first stops at once, during the write if it comes then: the EXR is
+# absent or complete, never truncated (writes are atomic).
+cli_interrupt_test(NAME preview.second_ctrl_c TRIGGER "kernel built in" DELAY 2 ACTION int,0.02
+                   EXRS out.exr MIN_SPP 1 MAX_SPP 16777215 MAY_BE_ABSENT
+                   EXPECT "interrupted"
+                   ARGS preview --material ${SRC}/presets/gold.json --env constant:1,1,1 --size 256x256 --spp 16777216 -o out.exr)
+# The output folder vanishes while the preview renders: the render goes to the temporary folder
+# and the one-line error (exit 2) says where.
+cli_interrupt_test(NAME preview.output_folder_vanishes TRIGGER "kernel built in" DELAY 0 ACTION remove=@WORK@/out STATUS 2
+                   MKDIRS out tmp ENV TMPDIR=@WORK@/tmp
+                   EXRS tmp/dtoadq-render-*.exr MIN_SPP 64 MAX_SPP 64
+                   EXPECT "dtoadq: error: out/preview\\.exr: cannot write .*; the render was saved to .*/tmp/dtoadq-render-[0-9]+\\.exr"
+                   ARGS preview --material ${SRC}/presets/gold.json --env constant:1,1,1 --size 64x64 --spp 64 -o out/preview.exr)
+# Ctrl-C during a report's second preview (its kernel build): the report stops, says what it
+# finished, and the first preview is complete.
+set(REPORT_PRESETS SETUP ${SRC}/presets/copper.json=presets/copper.json ${SRC}/presets/gold.json=presets/gold.json)
+cli_interrupt_test(NAME report.ctrl_c_between_presets TRIGGER "report: preview of gold" DELAY 0 ${REPORT_PRESETS}
+                   EXRS report/preview_copper.exr MIN_SPP 16 MAX_SPP 16 ABSENT report/preview_gold.exr report/README.md
+                   EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart, the preview of copper \\(2 presets in all\\)"
+                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr -o report --samples 20000 --theta-in 30
+                        --preview-spp 16 --preview-size 32x32)
+# Ctrl-C during a preview of a report: that preview is written with the samples it holds.
+cli_interrupt_test(NAME report.ctrl_c_during_preview TRIGGER "report: preview of copper" DELAY 4 ${REPORT_PRESETS}
+                   EXRS report/preview_copper.exr MIN_SPP 1 MAX_SPP 999999 ABSENT report/preview_gold.exr report/README.md
+                   EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart; cut short: the preview of copper \\([0-9]+ of 1000000 samples per pixel, written\\)"
+                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr -o report --samples 20000 --theta-in 30
+                        --preview-spp 1000000 --preview-size 32x32)
+
+# --- validate: a physical failure is a non-zero exit (1), a pass is 0 -----------------------------
+function(cli_status_test name status expect)
+  string(REPLACE ";" "|" args "${ARGN}")
+  add_test(NAME cli.${name} COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${args}" -DSTATUS=${status} "-DEXPECT=${expect}"
+                                    -P ${CLI_TEST_DIR}/expect_status.cmake WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.${name} PROPERTIES LABELS cli TIMEOUT 300)
+endfunction()
+cli_status_test(validate.physical_failure_exits_1 1 "FAIL" validate --samples 20000 --material presets/dtoadq2017_typical.json)
+cli_status_test(validate.pass_exits_0 0 "PASS" validate --samples 20000 --material presets/gold.json)
+
+# --- non-finite samples are reported on stderr and in the EXR's metadata ---------------------------
+cli_status_test(preview.reports_nonfinite_samples 0 "dtoadq: warning: [1-9][0-9]* non-finite samples \\(NaN or infinite\\) were left out of the image"
+                preview --env constant:3e38,3e38,3e38 --ibl-sampling env --ground off --size 16x16 --spp 1 --quiet
+                -o ${CLI_SCRATCH}/nonfinite.exr)

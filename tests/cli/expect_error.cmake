@@ -1,5 +1,5 @@
 # cmake -P driver for the command-line bad-input tests. Runs EXE with ARGS ('|'-separated), feeding
-# STDIN (a file) when given. Passes when the exit status is non-zero, standard error is exactly one
+# STDIN (a file) when given. Passes when the exit status is STATUS (default 2, every input error), standard error is exactly one
 # line, that line matches the regular expression EXPECT, and the file ABSENT (when given) was not
 # written.
 string(REPLACE "|" ";" args "${ARGS}")
@@ -13,8 +13,11 @@ endif()
 execute_process(COMMAND ${EXE} ${args} ${input} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 string(REGEX REPLACE "\n$" "" line "${err}")
 set(problems)
-if(status EQUAL 0)
-  list(APPEND problems "exit status 0")
+if(NOT DEFINED STATUS)
+  set(STATUS 2)
+endif()
+if(NOT status STREQUAL STATUS)
+  list(APPEND problems "exit status ${status}, expected ${STATUS}")
 endif()
 if(line STREQUAL "")
   list(APPEND problems "nothing on standard error")
@@ -27,8 +30,5 @@ endif()
 if(DEFINED ABSENT AND EXISTS ${ABSENT})
   list(APPEND problems "${ABSENT} was written")
 endif()
-if(problems)
-  string(REPLACE ";" ", " problems "${problems}")
-  message(FATAL_ERROR "${EXE} ${args}\nstatus ${status}: ${problems}\nstandard error:\n${err}")
-endif()
-message(STATUS "ok: ${line}")
+include(${CMAKE_CURRENT_LIST_DIR}/finish_driver.cmake)
+finish_driver("${EXE} ${args}\nstatus ${status}; standard error:\n${err}" "${line}")
