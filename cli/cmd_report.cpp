@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,6 +39,8 @@ struct ReportOptions {
     std::string env = "envmaps/courtyard.exr";
     std::string preview_size = "256x256";
     int preview_spp = 64;
+    std::string scene = "scenes/cornell_box.json";  // rendered by the render core's path tracer
+    int scene_spp = 32;
     std::string device;
 };
 
@@ -92,6 +95,37 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
     return written;
 }
 
+// The scene, rendered by the path tracer at the previews' size, written as scene_<stem>.exr/.png.
+// Ctrl-C ends the render: it is written with the samples it holds.
+std::vector<std::string> write_scene_render(const ReportOptions& o, const fs::path& out, ReportProgress* progress) {
+    RenderJobOptions job_options;
+    job_options.scene = o.scene;
+    job_options.size = o.preview_size;
+    job_options.device = o.device;
+    RenderJob job = prepare_render_job(job_options);
+    std::string name = "scene_" + fs::path(o.scene).stem().string();
+    std::printf("report: render of %s -> %s.png\n", o.scene.c_str(), (out / name).c_str());
+    std::fflush(stdout);
+    std::optional<opencl::Runtime> runtime;
+    std::unique_ptr<render::Renderer> renderer = make_renderer(job, o.device, &runtime);
+    render::RenderLimits limits;
+    limits.samples = o.scene_spp;
+    limits.quiet = true;
+    bool interrupted = render::render_progressively(*renderer, limits);
+    render::RenderStatistics stats = renderer->statistics();
+    if (stats.samples_per_pixel == 0) return {};  // interrupted before its first sample: nothing to keep
+    render::write_render_images((out / (name + ".exr")).string(), renderer->image(), film::ToneMap::Aces, 0.0f,
+                                job_metadata(job, *renderer, stats));
+    render::print_render_statistics(stats, true);  // only the warnings
+    std::string what = "the render of " + fs::path(o.scene).filename().string();
+    if (interrupted)
+        progress->partial = what + " (" + std::to_string(stats.samples_per_pixel) + " of " + std::to_string(o.scene_spp) +
+                            " samples per pixel, written)";
+    else
+        progress->finished.push_back(what);
+    return {name + ".png", name + ".exr"};
+}
+
 // Ctrl-C: one line saying what was finished, and the interrupted exit status. What was written
 // stays; the index and the validation table are written only by a report that ran to its end.
 void stop_if_interrupted(const ReportProgress& progress, const std::vector<brdf::Preset>& presets) {
@@ -113,6 +147,9 @@ void run_report(const ReportOptions& o) {
     if (o.preview_spp < 1 || o.preview_spp > 1 << 20) throw InputError("--preview-spp", "", "must be in [1, 1048576]");
     if (o.preview && !fs::exists(o.env) && o.env.rfind("constant:", 0) != 0)
         throw InputError(o.env, "", "no such file (--env; run from the repository root, or pass --env)");
+    if (o.preview && !o.scene.empty() && !fs::exists(o.scene))
+        throw InputError(o.scene, "", "no such file (--scene; run from the repository root, or pass --scene)");
+    if (o.scene_spp < 1 || o.scene_spp > 1 << 20) throw InputError("--scene-spp", "", "must be in [1, 1048576]");
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");
@@ -142,6 +179,11 @@ void run_report(const ReportOptions& o) {
         std::vector<std::string> previews = write_previews(o, presets, out, &progress);
         written.insert(written.end(), previews.begin(), previews.end());
         stop_if_interrupted(progress, presets);
+        if (!o.scene.empty()) {
+            std::vector<std::string> scene = write_scene_render(o, out, &progress);
+            written.insert(written.end(), scene.begin(), scene.end());
+            stop_if_interrupted(progress, presets);
+        }
     }
 
     validation::ValidationOptions options;
@@ -188,7 +230,9 @@ void register_report(CLI::App& app) {
     cmd->add_option("--env", options->env, "Environment of the previews: .exr/.hdr or constant:R,G,B")->capture_default_str();
     cmd->add_option("--preview-size", options->preview_size, "Preview image size WxH")->capture_default_str();
     cmd->add_option("--preview-spp", options->preview_spp, "Preview samples per pixel")->capture_default_str();
-    cmd->add_flag("!--no-preview", options->preview, "Skip the path-traced previews");
+    cmd->add_option("--scene", options->scene, "Scene rendered by the path tracer after the previews (empty: none)")->capture_default_str();
+    cmd->add_option("--scene-spp", options->scene_spp, "Samples per pixel of the scene render")->capture_default_str();
+    cmd->add_flag("!--no-preview", options->preview, "Skip the path-traced previews and the scene render");
     cmd->add_option("--device", options->device, "OpenCL device of the previews (dtoadq devices lists them)");
     cmd->callback([options] { run_report(*options); });
 }

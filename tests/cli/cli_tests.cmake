@@ -183,9 +183,10 @@ cli_output_test(albedo.writes_png_and_csv 46 albedo.png albedo.csv
 
 # --- validate and report ---------------------------------------------------------------------------
 # the main job, small: every preset's lobes, albedo, validation and preview, and the preview sheet
-cli_output_test(report.writes_everything 40 report/previews.png|report/albedo.png|report/preview_gold.png report/albedo.csv
+cli_output_test(report.writes_everything 40 report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png report/albedo.csv
                 report --presets ${PROJECT_SOURCE_DIR}/presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
-                --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96)
+                --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96
+                --scene ${PROJECT_SOURCE_DIR}/scenes/cornell_box.json --scene-spp 2)
 cli_bad_input(NAME validate.missing_preset EXPECT "${E}${D}/absent\\.json: cannot open preset file$"
               ARGS validate --material ${D}/absent.json)
 cli_bad_input(NAME validate.too_few_samples EXPECT "${E}command line: --samples: "
@@ -343,13 +344,13 @@ set(REPORT_PRESETS SETUP ${SRC}/presets/copper.json=presets/copper.json ${SRC}/p
 cli_interrupt_test(NAME report.ctrl_c_between_presets TRIGGER "report: preview of gold" DELAY 0 ${REPORT_PRESETS}
                    EXRS report/preview_copper.exr MIN_SPP 16 MAX_SPP 16 ABSENT report/preview_gold.exr report/README.md
                    EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart, the preview of copper \\(2 presets in all\\)"
-                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr -o report --samples 20000 --theta-in 30
+                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json -o report --samples 20000 --theta-in 30
                         --preview-spp 16 --preview-size 32x32)
 # Ctrl-C during a preview of a report: that preview is written with the samples it holds.
 cli_interrupt_test(NAME report.ctrl_c_during_preview TRIGGER "report: preview of copper" DELAY 4 ${REPORT_PRESETS}
                    EXRS report/preview_copper.exr MIN_SPP 1 MAX_SPP 999999 ABSENT report/preview_gold.exr report/README.md
                    EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart; cut short: the preview of copper \\([0-9]+ of 1000000 samples per pixel, written\\)"
-                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr -o report --samples 20000 --theta-in 30
+                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json -o report --samples 20000 --theta-in 30
                         --preview-spp 1000000 --preview-size 32x32)
 
 # --- validate: a physical failure is a non-zero exit (1), a pass is 0 -----------------------------
