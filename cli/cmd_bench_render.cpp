@@ -17,6 +17,7 @@
 #include "film/image_output.hpp"
 #include "render/host_renderer.hpp"
 #include "render/opencl_renderer.hpp"
+#include "scene/load_scene.hpp"
 
 namespace lab::cli {
 namespace {
@@ -35,6 +36,16 @@ struct BenchRenderCommand {
     std::string chart, csv;
 };
 
+// The job for one scene: a scene with no light of its own (no environment, no emitter) is lit by the
+// bench's default environment, so that it measures something.
+RenderJob scene_job(const RenderJobOptions& options, const std::string& file) {
+    RenderJobOptions o = options;
+    o.scene = file;
+    scene::Scene scene = scene::load_scene(file);
+    if (!scene.environment && scene.emitters.empty() && scene.point_lights.empty()) o.default_env = "envmaps/courtyard.exr";
+    return prepare_render_job(o);
+}
+
 // Renders for about `seconds` and returns the statistics.
 render::RenderStatistics measure(render::Renderer& renderer, double seconds) {
     render_for(renderer, seconds, [](double) {});
@@ -52,11 +63,10 @@ void run_bench_render(const BenchRenderCommand& c) {
     RendererFactory on_device = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
     std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());
 
+    std::printf("(a scene with no light of its own is lit by envmaps/courtyard.exr)\n");
     std::printf("%-28s %12s %12s %10s %14s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "host paths/s", "device/host");
     for (const std::string& file : c.scenes) {
-        RenderJobOptions o = c.job;
-        o.scene = file;
-        RenderJob job = prepare_render_job(o);
+        RenderJob job = scene_job(c.job, file);
         std::unique_ptr<render::Renderer> device = on_device(job.input);
         render::RenderStatistics d = measure(*device, c.throughput_seconds);
         render::HostRenderer host(job.input);
@@ -68,9 +78,7 @@ void run_bench_render(const BenchRenderCommand& c) {
 
     std::vector<plots::ConvergenceSeries> series;
     for (const std::string& file : c.compare) {
-        RenderJobOptions o = c.job;
-        o.scene = file;
-        RenderJob job = prepare_render_job(o);
+        RenderJob job = scene_job(c.job, file);
         std::string name = fs::path(file).stem().string();
         std::printf("\n%s: reference (MIS) for %.0f s\n", name.c_str(), c.reference_seconds);
         Reference reference = render_reference(on_device, job.input, c.reference_seconds);
