@@ -50,9 +50,28 @@ struct ReportProgress {
     std::string partial;                // the stage Ctrl-C cut short, if any
 };
 
+// Renders `spp` samples per pixel into `exr` (and the PNG beside it), and notes in `progress` what
+// it finished, or what Ctrl-C cut short (written with the samples it holds; its EXR's metadata
+// says how many). False when Ctrl-C came before the first sample: nothing was written.
+bool render_report_image(render::Renderer& renderer, const RenderJob& job, int spp, const fs::path& exr, const std::string& what,
+                         ReportProgress* progress) {
+    render::RenderLimits limits;
+    limits.samples = spp;
+    limits.quiet = true;
+    bool interrupted = render::render_progressively(renderer, limits);
+    render::RenderStatistics stats = renderer.statistics();
+    if (stats.samples_per_pixel == 0) return false;
+    render::write_render_images(exr.string(), renderer.image(), film::ToneMap::Aces, 0.0f, job_metadata(job, renderer, stats));
+    render::print_render_statistics(stats, true);  // only the warnings
+    if (interrupted)
+        progress->partial = what + " (" + std::to_string(stats.samples_per_pixel) + " of " + std::to_string(spp) + " samples per pixel, written)";
+    else
+        progress->finished.push_back(what);
+    return true;
+}
+
 // One preview per preset, each its own kernel (a preset's kernel holds only the lobes it uses).
-// Ctrl-C ends the preview being rendered: it is written with the samples it holds (its EXR's
-// metadata says how many), and no further preset is started.
+// Ctrl-C ends the preview being rendered, and no further preset is started.
 std::vector<std::string> write_previews(const ReportOptions& o, const std::vector<brdf::Preset>& presets, const fs::path& out,
                                         ReportProgress* progress) {
     std::vector<std::string> written;
@@ -69,23 +88,9 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
         std::printf("report: preview of %s -> %s.png\n", p.name.c_str(), (out / name).c_str());
         std::fflush(stdout);
         render::OpenClRenderer renderer(runtime, job.input);
-        render::RenderLimits limits;
-        limits.samples = o.preview_spp;
-        limits.quiet = true;
-        bool interrupted = render::render_progressively(renderer, limits);
-        render::RenderStatistics stats = renderer.statistics();
-        if (stats.samples_per_pixel == 0) break;  // interrupted before its first sample: nothing to keep
-        render::write_render_images((out / (name + ".exr")).string(), renderer.image(), film::ToneMap::Aces, 0.0f,
-                                    job_metadata(job, renderer, stats));
-        render::print_render_statistics(stats, true);  // only the warnings
+        if (!render_report_image(renderer, job, o.preview_spp, out / (name + ".exr"), "the preview of " + p.name, progress)) break;
         written.push_back(name + ".png");
         sheet.push_back({p.name, (out / (name + ".png")).string()});
-        if (interrupted) {
-            progress->partial = "the preview of " + p.name + " (" + std::to_string(stats.samples_per_pixel) + " of " +
-                                std::to_string(o.preview_spp) + " samples per pixel, written)";
-            break;
-        }
-        progress->finished.push_back("the preview of " + p.name);
     }
     if (sheet.empty()) return written;
     std::printf("report: preview sheet -> %s\n", (out / "previews.png").c_str());
@@ -96,33 +101,19 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
 }
 
 // The scene, rendered by the path tracer at the previews' size, written as scene_<stem>.exr/.png.
-// Ctrl-C ends the render: it is written with the samples it holds.
 std::vector<std::string> write_scene_render(const ReportOptions& o, const fs::path& out, ReportProgress* progress) {
     RenderJobOptions job_options;
     job_options.scene = o.scene;
     job_options.size = o.preview_size;
-    job_options.device = o.device;
     RenderJob job = prepare_render_job(job_options);
     std::string name = "scene_" + fs::path(o.scene).stem().string();
     std::printf("report: render of %s -> %s.png\n", o.scene.c_str(), (out / name).c_str());
     std::fflush(stdout);
     std::optional<opencl::Runtime> runtime;
     std::unique_ptr<render::Renderer> renderer = make_renderer(job, o.device, &runtime);
-    render::RenderLimits limits;
-    limits.samples = o.scene_spp;
-    limits.quiet = true;
-    bool interrupted = render::render_progressively(*renderer, limits);
-    render::RenderStatistics stats = renderer->statistics();
-    if (stats.samples_per_pixel == 0) return {};  // interrupted before its first sample: nothing to keep
-    render::write_render_images((out / (name + ".exr")).string(), renderer->image(), film::ToneMap::Aces, 0.0f,
-                                job_metadata(job, *renderer, stats));
-    render::print_render_statistics(stats, true);  // only the warnings
-    std::string what = "the render of " + fs::path(o.scene).filename().string();
-    if (interrupted)
-        progress->partial = what + " (" + std::to_string(stats.samples_per_pixel) + " of " + std::to_string(o.scene_spp) +
-                            " samples per pixel, written)";
-    else
-        progress->finished.push_back(what);
+    if (!render_report_image(*renderer, job, o.scene_spp, out / (name + ".exr"), "the render of " + fs::path(o.scene).filename().string(),
+                             progress))
+        return {};
     return {name + ".png", name + ".exr"};
 }
 
