@@ -114,3 +114,25 @@ TEST_CASE("Every bundled preset renders without NaN or infinity", "[preview][ope
         CHECK(lab::film::image_stats(image).mean[0] > 0.0);
     }
 }
+
+TEST_CASE("Every bundled scene renders with the path tracer without NaN or infinity", "[render][opencl]") {
+    lab::opencl::Runtime runtime("");
+    for (const auto& entry : fs::directory_iterator("scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        lab::scene::Scene scene = lab::scene::load_scene(entry.path().string());
+        lab::render::RenderInput input;
+        input.scene = scene;
+        // the scene's own environment, else the courtyard, so that every scene is lit
+        std::string env = scene.environment ? std::string() : std::string("envmaps/courtyard.exr");
+        if (!env.empty()) input.environment = lab::ibl::load_environment(env);
+        input.settings.width = input.settings.height = 24;
+        input.settings.max_depth = 8;
+        lab::render::OpenClRenderer renderer(runtime, input);
+        RenderResult r = render_samples(renderer, 2);
+        INFO(entry.path().string() << ": " << r.stats.lost_rays << " lost rays of " << r.stats.rays);
+        CHECK(r.stats.nonfinite_samples == 0);
+        CHECK(lab::film::image_stats(r.image).non_finite_pixels == 0);
+        lab::film::ImageStats stats = lab::film::image_stats(r.image);
+        CHECK(stats.mean[0] + stats.mean[1] + stats.mean[2] > 0.0);
+    }
+}
