@@ -46,6 +46,7 @@ void check_angles(const std::string& text) {
 }
 
 void check_words(const std::string& text) {
+    if (text.size() > 16) return;  // no word is longer; refusing longer text is a plain comparison
     try {
         FUZZ_REQUIRE(text == lab::ibl::ibl_sampling_name(lab::ibl::parse_ibl_sampling(text)), "a sampling word is not its name");
     } catch (const lab::InputError&) {
