@@ -33,7 +33,8 @@ void parse_angle_pair(const std::string& text, const std::string& option, float*
     char comma = 0;
     if (!(in >> theta >> comma >> phi) || comma != ',' || !(in >> std::ws).eof())
         throw InputError("command line", option, "expected THETA,PHI in degrees, got \"" + text + "\"");
-    if (!std::isfinite(theta) || !std::isfinite(phi)) throw InputError("command line", option, "angles must be finite");
+    // finite as the floats they become: 1e300 is a finite double but an infinite float
+    if (!std::isfinite(float(theta)) || !std::isfinite(float(phi))) throw InputError("command line", option, "angles must be finite");
     if (theta < 0.0 || theta > 180.0) throw InputError("command line", option, "theta must be in [0, 180] degrees");
     *theta_deg = float(theta);
     *phi_deg = float(phi);

@@ -143,8 +143,8 @@ TEST_CASE("chi-square suite covers at least 20 settings x 5 directions", "[chi_s
     CHECK(settings().size() >= 20);
 }
 
-TEST_CASE("chi-square: diffuse lobes", "[chi_square]") { run_group("diffuse"); }
-TEST_CASE("chi-square: GGX glossy lobes, isotropic and anisotropic", "[chi_square]") { run_group("glossy"); }
-TEST_CASE("chi-square: Hyper-Cauchy glossy lobes, shapes 1.6 to 8", "[chi_square]") { run_group("hyper_cauchy"); }
-TEST_CASE("chi-square: rough transmission from both sides", "[chi_square]") { run_group("transmission"); }
-TEST_CASE("chi-square: mixtures with delta lobes", "[chi_square]") { run_group("delta"); }
+TEST_CASE("chi-square: diffuse lobes", "[chi_square][sweep]") { run_group("diffuse"); }
+TEST_CASE("chi-square: GGX glossy lobes, isotropic and anisotropic", "[chi_square][sweep]") { run_group("glossy"); }
+TEST_CASE("chi-square: Hyper-Cauchy glossy lobes, shapes 1.6 to 8", "[chi_square][sweep]") { run_group("hyper_cauchy"); }
+TEST_CASE("chi-square: rough transmission from both sides", "[chi_square][sweep]") { run_group("transmission"); }
+TEST_CASE("chi-square: mixtures with delta lobes", "[chi_square][sweep]") { run_group("delta"); }

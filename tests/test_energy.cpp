@@ -77,7 +77,7 @@ TEST_CASE("furnace: diffuse lobes (retro-reflection, subsurface)", "[energy]") {
     check_sweep("diffuse", materials, FurnaceOptions());
 }
 
-TEST_CASE("furnace: glossy conductors with F0 = 1, both distributions", "[energy]") {
+TEST_CASE("furnace: glossy conductors with F0 = 1, both distributions", "[energy][sweep]") {
     std::vector<brdf::Material> materials;
     for (int distribution : {BRDF_DISTRIBUTION_GGX, BRDF_DISTRIBUTION_HYPER_CAUCHY})
         for (float shape : {1.6f, 2.0f, 4.0f, 16.0f}) {
@@ -97,7 +97,7 @@ TEST_CASE("furnace: glossy conductors with F0 = 1, both distributions", "[energy
     check_sweep("glossy", materials, FurnaceOptions());
 }
 
-TEST_CASE("furnace: dielectrics from both sides, ior 1 to 3", "[energy]") {
+TEST_CASE("furnace: dielectrics from both sides, ior 1 to 3", "[energy][sweep]") {
     std::vector<brdf::Material> materials;
     for (int distribution : {BRDF_DISTRIBUTION_GGX, BRDF_DISTRIBUTION_HYPER_CAUCHY})
         for (float ior : {1.0f, 1.01f, 1.2f, 1.5f, 2.2f, 3.0f})
@@ -112,7 +112,7 @@ TEST_CASE("furnace: dielectrics from both sides, ior 1 to 3", "[energy]") {
     check_sweep("transmission", materials, FurnaceOptions());
 }
 
-TEST_CASE("furnace: mixtures (metallic, mirror, coat, transmission)", "[energy]") {
+TEST_CASE("furnace: mixtures (metallic, mirror, coat, transmission)", "[energy][sweep]") {
     std::vector<brdf::Material> materials;
     UniformRandom rng(77);
     for (int i = 0; i < 60; ++i) {

@@ -91,7 +91,7 @@ double projected_area(const brdf::Microfacet& mf, brdf::float3 wo, double tolera
            adaptive_simpson(over_z, b, a + two_pi, 0.5 * tolerance, limits);
 }
 
-TEST_CASE("Smith normalisation: integral of G1(wo) max(0, wo.m) D(m) dm is cos theta_o", "[microfacet]") {
+TEST_CASE("Smith normalisation: integral of G1(wo) max(0, wo.m) D(m) dm is cos theta_o", "[microfacet][sweep]") {
     double worst = 0.0;
     for (const brdf::Microfacet& mf : distributions()) {
         for (float theta : {0.0f, 30.0f, 60.0f, 80.0f, 89.0f, 89.9f}) {

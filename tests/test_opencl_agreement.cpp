@@ -7,9 +7,8 @@
 // back to the original file and line. PoCL is a required dependency: no device fails, not skips.
 #include <catch2/catch.hpp>
 
-#include <cctype>
-
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

@@ -143,6 +143,9 @@ cli_bad_input(NAME brdf_eval.wi_out_of_range STDIN ${CLI_TEST_DIR}/data/bad_line
               ARGS ${EVAL_GOLD} --wi 200,0)
 cli_bad_input(NAME brdf_eval.wi_nan STDIN ${CLI_TEST_DIR}/data/bad_line.txt EXPECT "${E}command line: --wi: expected THETA,PHI in degrees, got \"nan,0\"$"
               ARGS ${EVAL_GOLD} --wi nan,0)
+# found by fuzzing: 1e300 is a finite double that becomes an infinite float
+cli_bad_input(NAME brdf_eval.wi_overflows_float STDIN ${CLI_TEST_DIR}/data/bad_line.txt EXPECT "${E}command line: --wi: angles must be finite$"
+              ARGS ${EVAL_GOLD} --wi 0,1e300)
 cli_bad_input(NAME brdf_eval.wi_missing STDIN ${CLI_TEST_DIR}/data/bad_line.txt EXPECT "${E}.*--wi is required"
               ARGS ${EVAL_GOLD})
 cli_bad_input(NAME brdf_sample.missing_preset EXPECT "${E}${D}/absent\\.json: cannot open preset file$"
