@@ -57,9 +57,8 @@ SS_FN bool rough_dielectric_sample_direction(Microfacet mf, float eta, float3 wo
     if (wo.z == 0.0f) return false;
     float3 wm = microfacet_sample_normal(mf, wo, u1, u2);
     float cos_om = dot(wo, wm);
-    /* the facet must face wo, as dielectric_half_vector() requires: a Hyper-Cauchy normal is drawn
-     * from all normals, not only the visible ones, and a back-facing one would refract with the
-     * inverted index onto a direction whose pdf counts another facet */
+    /* the facet must face wo, as dielectric_half_vector() requires; a visible normal does, up to
+     * rounding at grazing incidence */
     if (!(cos_om * wo.z > 0.0f)) return false;
     float3 n = cos_om >= 0.0f ? wm : -wm;  /* the facet normal on wo's side */
     float fr = fresnel_dielectric(cos_om, eta);

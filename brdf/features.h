@@ -28,6 +28,9 @@
 #ifndef BRDF_FEATURE_TRANSMISSION
 #define BRDF_FEATURE_TRANSMISSION 1 /* smooth and rough dielectric */
 #endif
+#ifndef BRDF_FEATURE_ENERGY_COMPENSATION
+#define BRDF_FEATURE_ENERGY_COMPENSATION 1 /* Kulla-Conty multiple scattering and its tables */
+#endif
 #ifndef BRDF_FEATURE_GGX
 #define BRDF_FEATURE_GGX 1
 #endif

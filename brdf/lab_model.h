@@ -6,8 +6,9 @@
  *     + w_t albedo rough or smooth dielectric (ior)
  * The weights are the material's lobe weights normalised by their sum, after metallic moves the
  * diffuse weight onto the glossy lobe and the transmissive weight onto the mirror (metals are
- * opaque). The sampler picks a lobe with exactly these weights, so the returned pdf is the density
- * of the whole mixture. */
+ * opaque). With energy_compensation, the glossy lobe gains Kulla and Conty's multiple-scattering
+ * lobe (brdf/energy_compensation.h). The sampler picks a lobe in proportion to an estimate of its
+ * albedo at wo (lab_lobe_choice), and the returned pdf is the density of the whole mixture. */
 #ifndef BRDF_LAB_MODEL_H
 #define BRDF_LAB_MODEL_H
 #include "bsdf_sample.h"
@@ -29,6 +30,14 @@
 #endif
 #if BRDF_FEATURE_TRANSMISSION
 #include "dielectric.h"
+#endif
+#if BRDF_FEATURE_ENERGY_COMPENSATION
+#include "energy_compensation.h"
+#if BRDF_FEATURE_TRANSMISSION
+#if BRDF_FEATURE_GGX
+#include "dielectric_compensation.h"
+#endif
+#endif
 #endif
 
 typedef struct LobeWeights {
@@ -73,6 +82,79 @@ SS_FN float lab_diffuse_brdf(const Material* m, float3 wo, float3 wi) {
 }
 #endif
 
+/* Whether the glossy lobe carries the multiple-scattering lobe. */
+SS_FN bool lab_glossy_compensated(const Material* m, Microfacet mf) {
+#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GLOSSY
+    return m->energy_compensation != 0 && !microfacet_is_smooth(mf);
+#else
+    return false;
+#endif
+}
+
+/* Whether the rough dielectric carries its multiple-scattering lobes (GGX only: Hyper-Cauchy
+ * dielectrics have no tables yet). */
+SS_FN bool lab_dielectric_compensated(const Material* m, Microfacet mf) {
+#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_TRANSMISSION && BRDF_FEATURE_GGX
+    return m->energy_compensation != 0 && mf.kind == BRDF_DISTRIBUTION_GGX && !lab_transmission_is_smooth(m, mf);
+#else
+    return false;
+#endif
+}
+
+#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GLOSSY
+/* F_ms f_ms of the glossy lobe, without its weight. */
+SS_FN float3 lab_multiple_scattering_eval(const Material* m, Microfacet mf, float3 wo, float3 wi) {
+    float3 f_ms = multiple_scattering_fresnel(lab_specular_f0(m), microfacet_energy_average(mf));
+    return f_ms * multiple_scattering_eval(mf, wo, wi);
+}
+#endif
+
+SS_FN float mean3(float3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
+
+/* Probabilities of the sampling strategies at wo: cosine-weighted (the diffuse lobe's Lambert and
+ * Disney parts, and the multiple-scattering lobe), the Henyey-Greenstein phase function (the
+ * subsurface part), the glossy lobe's visible normals or its mirror, the mirror lobe, the dielectric.
+ * Each is proportional to an estimate of what its lobe reflects at wo: the lobe weight times the
+ * albedo (diffuse, dielectric; the subsurface part's share goes to its sampler in proportion to |g|), the Schlick Fresnel reflectance at wo (glossy, mirror) or F_ms (1 - E(mu_o))
+ * (multiple scattering), so a faint lobe is rarely sampled. A floor keeps every lobe that can be non-zero
+ * sampleable. They depend on wo only, so lab_pdf() recomputes them exactly. */
+typedef struct LobeChoice {
+    float cosine, subsurface, glossy, specular, transmission;
+} LobeChoice;
+
+#define BRDF_LOBE_CHOICE_FLOOR 1e-3f
+
+SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf, float3 wo) {
+    LobeChoice c;
+    float albedo = mean3(material_albedo(m)) + BRDF_LOBE_CHOICE_FLOOR;
+    bool up = wo.z > 0.0f;
+    float reflectance = up ? mean3(fresnel_schlick(lab_specular_f0(m), wo.z)) + BRDF_LOBE_CHOICE_FLOOR : 0.0f;
+    float diffuse = up ? w.diffuse * albedo : 0.0f;
+    c.subsurface = 0.0f;
+#if BRDF_FEATURE_SUBSURFACE
+    /* the phase function's sampler pays off where the phase function is peaked; near g = 0 the lobe is
+     * close to cosine-shaped and cosine sampling matches it better */
+    c.subsurface = diffuse * m->subsurface * fabs(m->subsurface_asymmetry);
+#endif
+    c.cosine = diffuse - c.subsurface;
+    c.glossy = w.glossy * reflectance;
+#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GLOSSY
+    if (up && lab_glossy_compensated(m, mf))
+        c.cosine += w.glossy * mean3(multiple_scattering_fresnel(lab_specular_f0(m), microfacet_energy_average(mf))) *
+                    multiple_scattering_albedo(mf, wo.z);
+#endif
+    c.specular = w.specular * reflectance;
+    c.transmission = w.transmission * albedo;
+    float sum = c.cosine + c.subsurface + c.glossy + c.specular + c.transmission;
+    float scale = sum > 0.0f ? 1.0f / sum : 0.0f;
+    c.cosine *= scale;
+    c.subsurface *= scale;
+    c.glossy *= scale;
+    c.specular *= scale;
+    c.transmission *= scale;
+    return c;
+}
+
 SS_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
     LobeWeights w = lab_lobe_weights(m);
     Microfacet mf = microfacet_from_material(m);
@@ -85,10 +167,18 @@ SS_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
 #if BRDF_FEATURE_GLOSSY
         if (w.glossy > 0.0f && !smooth) f += w.glossy * microfacet_reflection_eval(mf, lab_specular_f0(m), wo, wi);
 #endif
+#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GLOSSY
+        if (w.glossy > 0.0f && lab_glossy_compensated(m, mf)) f += w.glossy * lab_multiple_scattering_eval(m, mf, wo, wi);
+#endif
     }
 #if BRDF_FEATURE_TRANSMISSION
-    if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf))
-        f += material_albedo(m) * (w.transmission * rough_dielectric_eval(mf, m->ior, wo, wi));
+    if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf)) {
+        float interface = rough_dielectric_eval(mf, m->ior, wo, wi);
+#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GGX
+        if (lab_dielectric_compensated(m, mf)) interface += dielectric_multiple_scattering_eval(mf, m->ior, wo, wi);
+#endif
+        f += material_albedo(m) * (w.transmission * interface);
+    }
 #endif
     return f;
 }
@@ -96,29 +186,41 @@ SS_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
 SS_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
     LobeWeights w = lab_lobe_weights(m);
     Microfacet mf = microfacet_from_material(m);
+    LobeChoice c = lab_lobe_choice(m, w, mf, wo);
     bool smooth = microfacet_is_smooth(mf);
     float pdf = 0.0f;
     if (wo.z > 0.0f && wi.z > 0.0f) {
-#if BRDF_FEATURE_DIFFUSE
-        pdf += w.diffuse * cosine_hemisphere_pdf(wi.z);
+        pdf += c.cosine * cosine_hemisphere_pdf(wi.z);
+#if BRDF_FEATURE_SUBSURFACE
+        if (c.subsurface > 0.0f) pdf += c.subsurface * henyey_greenstein_subsurface_pdf(wo, wi, m->subsurface_asymmetry);
 #endif
 #if BRDF_FEATURE_GLOSSY
-        if (!smooth) pdf += w.glossy * microfacet_reflection_pdf(mf, wo, wi);
+        if (!smooth) pdf += c.glossy * microfacet_reflection_pdf(mf, wo, wi);
 #endif
     }
 #if BRDF_FEATURE_TRANSMISSION
-    if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf))
-        pdf += w.transmission * rough_dielectric_pdf(mf, m->ior, wo, wi);
+    if (c.transmission > 0.0f && !lab_transmission_is_smooth(m, mf)) {
+        float interface = rough_dielectric_pdf(mf, m->ior, wo, wi);
+#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GGX
+        /* the multiple-scattering lobes are picked with their share of the white interface's albedo */
+        if (lab_dielectric_compensated(m, mf)) {
+            DielectricEnergy d = dielectric_energy(mf, m->ior, wo);
+            interface = (1.0f - d.lost_o) * interface + d.lost_o * dielectric_multiple_scattering_pdf(d, wo, wi);
+        }
+#endif
+        pdf += c.transmission * interface;
+    }
 #endif
     return pdf;
 }
 
-/* Mirror reflection with Schlick's Fresnel, as a delta sample picked with probability `weight`. */
-SS_FN BsdfSample lab_mirror_sample(const Material* m, float weight, float3 wo) {
+/* Mirror reflection with Schlick's Fresnel, as a delta sample of a lobe of weight `weight` picked with
+ * probability `probability`. */
+SS_FN BsdfSample lab_mirror_sample(const Material* m, float weight, float probability, float3 wo) {
     BsdfSample s = bsdf_sample_failed();
     if (!(wo.z > 0.0f)) return s;
     s.wi = make_float3(-wo.x, -wo.y, wo.z);
-    s.pdf = weight;
+    s.pdf = probability;
     s.f = fresnel_schlick(lab_specular_f0(m), wo.z) * (weight / wo.z);
     s.flags = BSDF_REFLECTION | BSDF_DELTA;
     return s;
@@ -127,39 +229,59 @@ SS_FN BsdfSample lab_mirror_sample(const Material* m, float weight, float3 wo) {
 SS_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
     LobeWeights w = lab_lobe_weights(m);
     Microfacet mf = microfacet_from_material(m);
+    LobeChoice c = lab_lobe_choice(m, w, mf, wo);
     bool smooth = microfacet_is_smooth(mf);
     BsdfSample s = bsdf_sample_failed();
     float3 wi;
-    /* pick a lobe with u.x, then stretch u.x back to [0, 1) for use inside the lobe */
+    /* pick a strategy with u.x, then stretch u.x back to [0, 1) for use inside the lobe */
     float uc = u.x;
-    if (uc < w.diffuse) {
+    if (uc < c.cosine) {
         if (!(wo.z > 0.0f)) return s;
         wi = square_to_cosine_hemisphere(u.y, u.z);
-    } else if ((uc -= w.diffuse) < w.glossy) {
+    } else if ((uc -= c.cosine) < c.subsurface) {
+#if BRDF_FEATURE_SUBSURFACE
+        wi = henyey_greenstein_subsurface_sample(wo, m->subsurface_asymmetry, u.y, u.z);
+#else
+        return s;
+#endif
+    } else if ((uc -= c.subsurface) < c.glossy) {
         if (!(wo.z > 0.0f)) return s;
-        if (smooth) return lab_mirror_sample(m, w.glossy, wo);
+        if (smooth) return lab_mirror_sample(m, w.glossy, c.glossy, wo);
 #if BRDF_FEATURE_GLOSSY
         if (!microfacet_reflection_sample_direction(mf, wo, u.y, u.z, &wi)) return s;
 #else
         return s;
 #endif
-    } else if ((uc -= w.glossy) < w.specular) {
-        return lab_mirror_sample(m, w.specular, wo);
-    } else if ((uc -= w.specular) < w.transmission) {
+    } else if ((uc -= c.glossy) < c.specular) {
+        return lab_mirror_sample(m, w.specular, c.specular, wo);
+    } else if ((uc -= c.specular) < c.transmission) {
 #if BRDF_FEATURE_TRANSMISSION
-        float u_interface = fmin(uc / w.transmission, 0.99999994f);
+        float u_interface = fmin(uc / c.transmission, 0.99999994f);
         if (lab_transmission_is_smooth(m, mf)) {
             s = smooth_dielectric_sample(m->ior, wo, u_interface);
             s.f = s.f * material_albedo(m) * w.transmission;
-            s.pdf *= w.transmission;
+            s.pdf *= c.transmission;
             return s;
         }
-        if (!rough_dielectric_sample_direction(mf, m->ior, wo, u_interface, u.y, u.z, &wi)) return s;
+        bool drawn = false;
+#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GGX
+        if (lab_dielectric_compensated(m, mf)) {
+            if (wo.z == 0.0f) return s;
+            DielectricEnergy d = dielectric_energy(mf, m->ior, wo);
+            if (u_interface < d.lost_o) {
+                wi = dielectric_multiple_scattering_sample(d, wo, u_interface / d.lost_o, u.y, u.z);
+                drawn = true;
+            } else {
+                u_interface = fmin((u_interface - d.lost_o) / (1.0f - d.lost_o), 0.99999994f);
+            }
+        }
+#endif
+        if (!drawn && !rough_dielectric_sample_direction(mf, m->ior, wo, u_interface, u.y, u.z, &wi)) return s;
 #else
         return s;
 #endif
     } else {
-        return s; /* all weights zero */
+        return s; /* nothing to sample */
     }
     /* a continuous lobe: value and density of the whole mixture, so the pdf equals lab_pdf() */
     s.pdf = lab_pdf(m, wo, wi);

@@ -30,6 +30,7 @@ typedef struct Material {
     float ior;                  /* index of refraction of the transmissive lobe */
     int model;                  /* BRDF_MODEL_* */
     int distribution;           /* BRDF_DISTRIBUTION_*, used by glossy and rough transmission */
+    int energy_compensation;    /* 1: microfacet lobes get Kulla-Conty multiple scattering; 0: single scattering only */
 } Material;
 
 SS_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }

@@ -71,12 +71,11 @@ SS_FN float microfacet_g2(Microfacet mf, float3 wo, float3 wi) {
     return 1.0f / (1.0f + microfacet_lambda(mf, wo) + microfacet_lambda(mf, wi));
 }
 
-/* Samples a microfacet normal on the upper side: visible normals of wo for GGX, the distribution
- * of normals (exact inversion) for Hyper-Cauchy. */
+/* Samples a microfacet normal on the upper side from the visible normals of wo (either distribution). */
 SS_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, float u2) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
-        return hyper_cauchy_sample_normal(mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, u1, u2);
+        return hyper_cauchy_sample_visible_normal(wo, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, u1, u2);
 #endif
 #if BRDF_FEATURE_GGX
     return ggx_sample_visible_normal(wo, mf.ax, mf.ay, u1, u2);
@@ -85,11 +84,10 @@ SS_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, float 
 #endif
 }
 
-/* Density of microfacet_sample_normal() over solid angle of m. The caller passes wo_m = |wo . m|:
+/* Density of microfacet_sample_normal() over solid angle of m, G1(wo) |wo.m| D(m) / |cos theta_o|. The caller passes wo_m = |wo . m|:
  * where m is a half vector it knows this more accurately than a dot product of nearly
  * perpendicular vectors would give it. */
 SS_FN float microfacet_normal_pdf(Microfacet mf, float3 wo, float3 m, float wo_m) {
-    if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) return microfacet_d(mf, m) * fmax(m.z, 0.0f);
     float cos_o = fabs(wo.z);
     if (!(wo_m > 0.0f) || !(cos_o > 0.0f)) return 0.0f;
     return microfacet_g1(mf, wo) * wo_m * microfacet_d(mf, m) / cos_o;

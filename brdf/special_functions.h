@@ -33,15 +33,22 @@ SS_FN float incomplete_beta_fraction(float a, float b, float x) {
     return h;
 }
 
-/* Regularised incomplete beta function I_x(a, b), a, b > 0, x in [0, 1]. */
-SS_FN float incomplete_beta(float a, float b, float x) {
+/* log(1 / B(a, b)), the normalising constant of I_x(a, b): hoisted out of loops that evaluate I many
+ * times with the same a and b. */
+SS_FN float incomplete_beta_log_norm(float a, float b) { return lgamma(a + b) - lgamma(a) - lgamma(b); }
+
+/* Regularised incomplete beta function I_x(a, b), a, b > 0, x in [0, 1], given incomplete_beta_log_norm(a, b). */
+SS_FN float incomplete_beta_normed(float a, float b, float x, float log_norm) {
     if (x <= 0.0f) return 0.0f;
     if (x >= 1.0f) return 1.0f;
-    float log_front = lgamma(a + b) - lgamma(a) - lgamma(b) + a * log(x) + b * log(1.0f - x);
-    float front = exp(log_front);
+    float front = exp(log_norm + a * log(x) + b * log(1.0f - x));
     if (x < (a + 1.0f) / (a + b + 2.0f)) return front * incomplete_beta_fraction(a, b, x) / a;
     /* symmetry I_x(a, b) = 1 - I_{1-x}(b, a) keeps the fraction in its fast region */
     return 1.0f - front * incomplete_beta_fraction(b, a, 1.0f - x) / b;
+}
+
+SS_FN float incomplete_beta(float a, float b, float x) {
+    return incomplete_beta_normed(a, b, x, incomplete_beta_log_norm(a, b));
 }
 
 #endif

@@ -15,6 +15,7 @@ namespace {
 
 struct AlbedoOptions {
     std::vector<std::string> materials;
+    std::string compensation = "preset";
     std::string png;
     std::string csv;
     double phi_in = 0.0;
@@ -29,7 +30,7 @@ void run_albedo(const AlbedoOptions& o) {
     if (o.strata < 1 || o.strata > 4096) throw InputError("command line", "--strata", "must be in [1, 4096]");
     plots::require_writable(o.png, "-o");
     if (!o.csv.empty()) plots::require_writable(o.csv, "--csv");
-    std::vector<brdf::Preset> presets = load_presets(o.materials);
+    std::vector<brdf::Preset> presets = with_compensation(load_presets(o.materials), o.compensation);
     plots::AlbedoCurveOptions options;
     options.angles = o.angles;
     options.strata = o.strata;
@@ -44,6 +45,7 @@ void register_albedo(CLI::App& app) {
     auto options = std::make_shared<AlbedoOptions>();
     auto* cmd = app.add_subcommand("albedo", "Chart directional albedo against incident angle (r, g, b) to a PNG");
     cmd->add_option("--material", options->materials, "Material preset (JSON); repeat for several")->required();
+    cmd->add_option("--compensation", options->compensation, kCompensationHelp)->capture_default_str();
     cmd->add_option("-o,--output", options->png, "PNG file to write")->required();
     cmd->add_option("--csv", options->csv, "Also write material,theta,a_r,a_g,a_b,se_r,se_g,se_b");
     cmd->add_option("--phi-in", options->phi_in, "Incident azimuth from the tangent, degrees")->capture_default_str();

@@ -16,6 +16,7 @@ namespace {
 
 struct LobeOptions {
     std::vector<std::string> materials;
+    std::string compensation = "preset";
     double theta_in = 0.0;
     double phi_in = 0.0;
     std::string png;
@@ -35,7 +36,7 @@ void run_lobe(const LobeOptions& o) {
     // fail on a bad output path before loading and computing anything
     plots::require_writable(o.png, "-o");
     if (!o.csv.empty()) plots::require_writable(o.csv, "--csv");
-    std::vector<brdf::Preset> presets = load_presets(o.materials);
+    std::vector<brdf::Preset> presets = with_compensation(load_presets(o.materials), o.compensation);
     plots::LobePlotOptions options;
     options.csv_theta_step_deg = float(o.resolution);
     options.scale = o.scale == "log" ? plots::RadialScale::log : o.scale == "linear" ? plots::RadialScale::linear : plots::RadialScale::automatic;
@@ -48,6 +49,7 @@ void register_lobe(CLI::App& app) {
     auto options = std::make_shared<LobeOptions>();
     auto* cmd = app.add_subcommand("lobe", "Plot BSDF lobes (plane-of-incidence polar view and 3D view) to a PNG");
     cmd->add_option("--material", options->materials, "Material preset (JSON); repeat to overlay several")->required();
+    cmd->add_option("--compensation", options->compensation, kCompensationHelp)->capture_default_str();
     cmd->add_option("--theta-in", options->theta_in, "Incident angle from the normal, degrees in [0, 90)")->required();
     cmd->add_option("--phi-in", options->phi_in, "Incident azimuth from the tangent, degrees")->capture_default_str();
     cmd->add_option("-o,--output", options->png, "PNG file to write")->required();

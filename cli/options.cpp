@@ -15,6 +15,24 @@ std::vector<brdf::Preset> load_presets(const std::vector<std::string>& paths) {
     return presets;
 }
 
+std::vector<brdf::Preset> with_compensation(const std::vector<brdf::Preset>& presets, const std::string& mode) {
+    if (mode != "preset" && mode != "on" && mode != "off" && mode != "both")
+        throw InputError("command line", "--compensation", "expected preset, on, off or both, got \"" + mode + "\"");
+    if (mode == "preset") return presets;
+    std::vector<brdf::Preset> out;
+    for (const brdf::Preset& p : presets) {
+        for (int on : {1, 0}) {
+            if ((mode == "on" && !on) || (mode == "off" && on)) continue;
+            brdf::Preset copy = p;
+            copy.material.energy_compensation = on;
+            if (mode == "both" && p.material.model == BRDF_MODEL_LAB) copy.name += on ? " (compensated)" : " (single scattering)";
+            out.push_back(copy);
+            if (mode == "both" && p.material.model != BRDF_MODEL_LAB) break;  // the 2017 model has no such switch
+        }
+    }
+    return out;
+}
+
 std::vector<brdf::Preset> load_preset_folder(const std::string& folder, const std::string& option) {
     std::error_code error;
     if (!std::filesystem::is_directory(folder, error))

@@ -6,7 +6,7 @@ namespace {
 
 struct Needs {
     bool lab = false, dtoadq2017 = false, diffuse = false, retroreflection = false, subsurface = false, glossy = false,
-         transmission = false, ggx = false, hyper_cauchy = false;
+         transmission = false, energy_compensation = false, ggx = false, hyper_cauchy = false;
 };
 
 void add_distribution(const Microfacet& mf, Needs* needs) {
@@ -33,10 +33,12 @@ void add_material(const Material& input, Needs* needs) {
     if (w.glossy > 0.0f) {
         needs->glossy = true;
         if (!microfacet_is_smooth(mf)) add_distribution(mf, needs);
+        needs->energy_compensation = needs->energy_compensation || lab_glossy_compensated(&m, mf);
     }
     if (w.transmission > 0.0f) {
         needs->transmission = true;
         if (!lab_transmission_is_smooth(&m, mf)) add_distribution(mf, needs);
+        needs->energy_compensation = needs->energy_compensation || lab_dielectric_compensated(&m, mf);
     }
 }
 
@@ -52,6 +54,7 @@ std::vector<std::pair<std::string, bool>> used_features(const std::vector<Materi
             {"BRDF_FEATURE_SUBSURFACE", n.subsurface},
             {"BRDF_FEATURE_GLOSSY", n.glossy},
             {"BRDF_FEATURE_TRANSMISSION", n.transmission},
+            {"BRDF_FEATURE_ENERGY_COMPENSATION", n.energy_compensation},
             {"BRDF_FEATURE_GGX", n.ggx},
             {"BRDF_FEATURE_HYPER_CAUCHY", n.hyper_cauchy}};
 }

@@ -18,6 +18,7 @@ Material default_material() {
     }
     m.model = BRDF_MODEL_LAB;
     m.distribution = BRDF_DISTRIBUTION_GGX;
+    m.energy_compensation = 1;
     return m;
 }
 

@@ -61,7 +61,7 @@ int parse_enum(const json& doc, const std::string& source, const std::string& ke
 }
 
 void reject_unknown_keys(const json& doc, const std::string& source) {
-    std::set<std::string> top = {"name", "description", "model", "distribution", "lobes"};
+    std::set<std::string> top = {"name", "description", "model", "distribution", "energy_compensation", "lobes"};
     std::set<std::string> lobes;
     for (const ScalarParameter& p : scalar_parameters()) {
         std::string key = p.key;
@@ -97,6 +97,12 @@ Preset parse_preset(const json& doc, const std::string& source) {
     preset.material.model = parse_enum(doc, source, "model", "lab", BRDF_MODEL_LAB, "dtoadq2017", BRDF_MODEL_DTOADQ2017, BRDF_MODEL_LAB);
     preset.material.distribution = parse_enum(doc, source, "distribution", "ggx", BRDF_DISTRIBUTION_GGX, "hyper_cauchy",
                                               BRDF_DISTRIBUTION_HYPER_CAUCHY, BRDF_DISTRIBUTION_GGX);
+    if (doc.contains("energy_compensation")) {
+        const json& value = doc.at("energy_compensation");
+        if (!value.is_boolean())
+            throw InputError(source, "energy_compensation", std::string("expected true or false, got ") + value.type_name());
+        preset.material.energy_compensation = value.get<bool>() ? 1 : 0;
+    }
     for (const ScalarParameter& p : scalar_parameters()) {
         const json* value = find_key(doc, p.key);
         if (!value) continue;
@@ -141,6 +147,7 @@ json preset_to_json(const Preset& preset) {
     if (!preset.description.empty()) doc["description"] = preset.description;
     doc["model"] = model_name(preset.material.model);
     doc["distribution"] = distribution_name(preset.material.distribution);
+    doc["energy_compensation"] = preset.material.energy_compensation != 0;
     for (const ScalarParameter& p : scalar_parameters()) {
         json value;
         if (p.field)

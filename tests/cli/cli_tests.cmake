@@ -111,6 +111,10 @@ cli_bad_input(NAME albedo.strata ABSENT ${PNG} EXPECT "${E}command line: --strat
               ARGS ${GOLD} --strata 0 -o ${PNG})
 cli_bad_input(NAME albedo.angles ABSENT ${PNG} EXPECT "${E}command line: --angles: must be in \\[2, 1000\\]$"
               ARGS ${GOLD} --angles 1 -o ${PNG})
+cli_bad_input(NAME albedo.compensation ABSENT ${PNG} EXPECT "${E}command line: --compensation: expected preset, on, off or both, got .sometimes.$"
+              ARGS ${GOLD} --compensation sometimes -o ${PNG})
+cli_bad_input(NAME albedo.compensation_type ABSENT ${PNG} EXPECT "${E}${D}/compensation_number\\.json: energy_compensation: expected true or false, got number$"
+              ARGS ${ALBEDO} ${D}/compensation_number.json)
 cli_bad_input(NAME albedo.phi_in_nan ABSENT ${PNG} EXPECT "${E}command line: --phi-in: must be a finite angle in degrees$"
               ARGS ${GOLD} --phi-in nan -o ${PNG})
 cli_bad_input(NAME albedo.output_folder_missing EXPECT "${E}/nonexistent-dtoadq/albedo\\.png: -o: cannot write"

@@ -1,0 +1,61 @@
+/* The grid of the energy-compensation tables (brdf/energy_table_*.h, written by
+ * validation/generate_energy_tables.cpp): directional albedo E(mu) of the single-scattering
+ * microfacet reflection with F = 1 over mu = cos theta, perceptual roughness and (Hyper-Cauchy) shape,
+ * and its cosine-weighted average. Lookups interpolate linearly between the nodes. */
+#ifndef BRDF_ENERGY_GRID_H
+#define BRDF_ENERGY_GRID_H
+#include "single_source/vocabulary.h"
+#include "material.h"
+
+#define ENERGY_GRID_MU 32        /* nodes at mu = j / 31; the node at 0 holds E(1e-3) */
+#define ENERGY_GRID_ROUGHNESS 32 /* nodes at roughness = i / 31 */
+#define ENERGY_GRID_SHAPE 8      /* nodes even in t = 1 / (g - 1) over [1/15, 1/0.6] */
+
+SS_FN float energy_grid_mu(int j) { return (float)j / (float)(ENERGY_GRID_MU - 1); }
+SS_FN float energy_grid_roughness(int i) { return (float)i / (float)(ENERGY_GRID_ROUGHNESS - 1); }
+
+SS_FN float energy_grid_shape_t(float g) { return 1.0f / (g - 1.0f); }
+SS_FN float energy_grid_shape(int k) {
+    float t_lo = energy_grid_shape_t(BRDF_HC_SHAPE_MAX), t_hi = energy_grid_shape_t(BRDF_HC_SHAPE_MIN);
+    return 1.0f + 1.0f / (t_lo + (t_hi - t_lo) * (float)k / (float)(ENERGY_GRID_SHAPE - 1));
+}
+
+/* The dielectric's tables (brdf/energy_table_dielectric.h, GGX): E over [side][ior][roughness][mu],
+ * nodes even in 1 / ior over [1/3, 1] (denser where glass and water are), in roughness and in mu over
+ * [0, 1]. The node at ior 1 holds the rough interface of ior 1.01: an index-matched one is smooth. */
+#define DIELECTRIC_GRID_IOR 10
+#define DIELECTRIC_GRID_ROUGHNESS 16
+#define DIELECTRIC_GRID_MU 24
+
+/* Node k of n even nodes over [lo, hi], and the fractional node coordinate of v, clamped to the grid. */
+SS_FN float energy_grid_node(int k, float lo, float hi, int n) { return lo + (hi - lo) * (float)k / (float)(n - 1); }
+SS_FN float energy_grid_node_coordinate(float v, float lo, float hi, int n) {
+    return clamp((v - lo) / (hi - lo) * (float)(n - 1), 0.0f, (float)(n - 1));
+}
+
+SS_FN float energy_grid_ior(int k) {
+    return 1.0f / energy_grid_node(DIELECTRIC_GRID_IOR - 1 - k, 1.0f / BRDF_IOR_MAX, 1.0f / BRDF_IOR_MIN, DIELECTRIC_GRID_IOR);
+}
+SS_FN float energy_grid_ior_coordinate(float eta) {
+    return (float)(DIELECTRIC_GRID_IOR - 1) -
+           energy_grid_node_coordinate(1.0f / eta, 1.0f / BRDF_IOR_MAX, 1.0f / BRDF_IOR_MIN, DIELECTRIC_GRID_IOR);
+}
+
+SS_FN float energy_grid_mu_coordinate(float mu) { return energy_grid_node_coordinate(mu, 0.0f, 1.0f, ENERGY_GRID_MU); }
+SS_FN float energy_grid_roughness_coordinate(float roughness) {
+    return energy_grid_node_coordinate(roughness, 0.0f, 1.0f, ENERGY_GRID_ROUGHNESS);
+}
+SS_FN float energy_grid_shape_coordinate(float g) {
+    float t_lo = energy_grid_shape_t(BRDF_HC_SHAPE_MAX), t_hi = energy_grid_shape_t(BRDF_HC_SHAPE_MIN);
+    return clamp((energy_grid_shape_t(g) - t_lo) / (t_hi - t_lo) * (float)(ENERGY_GRID_SHAPE - 1), 0.0f,
+                 (float)(ENERGY_GRID_SHAPE - 1));
+}
+
+/* Linear interpolation of a row of n values at fractional index x in [0, n - 1]. */
+SS_FN float energy_grid_lerp(CONSTANT_MEM const float* row, int n, float x) {
+    int i = min((int)x, n - 2);
+    float t = x - (float)i;
+    return mix(row[i], row[i + 1], t);
+}
+
+#endif

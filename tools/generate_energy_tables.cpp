@@ -1,0 +1,40 @@
+// Writes brdf/energy_table_ggx.h, brdf/energy_table_hyper_cauchy.h and brdf/energy_table_dielectric.h, the energy-compensation
+// tables, from the lab model's own single-scattering lobes:
+//   ./build/tools/generate_energy_tables brdf [--strata N] [--threads N]
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "validation/energy_tables.hpp"
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: %s OUTPUT_DIR [--strata N] [--threads N]\n", argv[0]);
+        return 2;
+    }
+    std::string dir = argv[1];
+    int strata = lab::validation::kEnergyTableStrata, threads = 2;
+    for (int k = 2; k + 1 < argc; k += 2) {
+        std::string key = argv[k];
+        int value = std::atoi(argv[k + 1]);
+        if (key == "--strata" && value > 0) strata = value;
+        else if (key == "--threads" && value > 0) threads = value;
+        else {
+            std::fprintf(stderr, "%s: error: %s: expected --strata N or --threads N (N > 0)\n", argv[0], key.c_str());
+            return 2;
+        }
+    }
+    lab::validation::EnergyTables tables = lab::validation::compute_energy_tables(strata, threads);
+    for (const auto& [name, text] : {std::pair<std::string, std::string>{"energy_table_ggx.h", lab::validation::ggx_table_header(tables, strata)},
+                                     {"energy_table_hyper_cauchy.h", lab::validation::hyper_cauchy_table_header(tables, strata)},
+                                     {"energy_table_dielectric.h", lab::validation::dielectric_table_header(tables, strata)}}) {
+        std::ofstream out(dir + "/" + name);
+        if (!out) {
+            std::fprintf(stderr, "%s: error: %s/%s: cannot write\n", argv[0], dir.c_str(), name.c_str());
+            return 1;
+        }
+        out << text;
+    }
+    return 0;
+}

@@ -1,0 +1,51 @@
+// The energy-compensation tables (brdf/energy_grid.h): the directional albedo E(mu) of the
+// single-scattering microfacet reflection with F = 1, and its cosine-weighted average, at every
+// node of the grid. tools/generate_energy_tables writes them to brdf/energy_table_*.h; the tests
+// compare entries with an independent estimate and with a regeneration.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "brdf/brdf.hpp"
+
+namespace lab::validation {
+
+// The strata x strata of the committed tables: the generator's default. The dielectric's estimator
+// (the lab's sampler, weights up to 1 but less evenly spread) gets twice as many per side.
+inline constexpr int kEnergyTableStrata = 64;
+inline constexpr int kDielectricStrataFactor = 2;
+
+// E(mu) of the lab model's glossy lobe with F0 = 1 and compensation off, isotropic, by the lobe's
+// own visible-normal sampler over a strata x strata midpoint grid (the weight f cos / pdf is at most
+// 1, so the grid converges fast). 1 where the lobe is a mirror; mu below 1e-3 is taken as 1e-3.
+double single_scattering_albedo(int distribution, float shape, float roughness, float mu, int strata);
+
+// E_avg = 2 int_0^1 E(mu) mu dmu of one row of the table, integrating the interpolant the lookup uses.
+float average_albedo(const float* row, int n = ENERGY_GRID_MU);
+
+// E_s(mu) of the white rough GGX dielectric, reflection plus transmission, seen from side 0 (outside)
+// or 1 (inside), compensation off: the lab's own estimator (validation/albedo.hpp) at strata x strata.
+double dielectric_single_scattering_albedo(int side, float roughness, float ior, float mu, int strata);
+
+// F_avg = 2 int_0^1 F(mu) mu dmu of the exact dielectric Fresnel reflectance, from outside.
+float dielectric_fresnel_average_of(float ior);
+
+struct EnergyTables {
+    std::vector<float> ggx_albedo;           // [roughness][mu]
+    std::vector<float> ggx_average;          // [roughness]
+    std::vector<float> hyper_cauchy_albedo;  // [shape][roughness][mu]
+    std::vector<float> hyper_cauchy_average; // [shape][roughness]
+    std::vector<float> dielectric_albedo;    // [side][ior][roughness][mu]
+    std::vector<float> dielectric_average;   // [side][ior][roughness]
+    std::vector<float> dielectric_fresnel;   // [ior]
+};
+
+EnergyTables compute_energy_tables(int strata, int threads);
+
+// The single-source headers brdf/energy_table_ggx.h and brdf/energy_table_hyper_cauchy.h.
+std::string ggx_table_header(const EnergyTables& tables, int strata);
+std::string hyper_cauchy_table_header(const EnergyTables& tables, int strata);
+std::string dielectric_table_header(const EnergyTables& tables, int strata);
+
+}  // namespace lab::validation
