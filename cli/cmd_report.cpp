@@ -58,12 +58,14 @@ bool render_report_image(render::Renderer& renderer, const RenderJob& job, int s
     render::RenderLimits limits;
     limits.samples = spp;
     limits.quiet = true;
-    bool interrupted = render::render_progressively(renderer, limits);
+    render::ProgressiveOutcome outcome = render::render_progressively(renderer, limits);
     render::RenderStatistics stats = renderer.statistics();
+    if (!outcome.failure.empty() && stats.samples_per_pixel == 0) render::fail_after_writing(outcome, 0, "");
     if (stats.samples_per_pixel == 0) return false;
     render::write_render_images(exr.string(), renderer.image(), film::ToneMap::Aces, 0.0f, job_metadata(job, renderer, stats));
+    if (!outcome.failure.empty()) render::fail_after_writing(outcome, stats.samples_per_pixel, exr.string());
     render::print_render_statistics(stats, true);  // only the warnings
-    if (interrupted)
+    if (outcome.interrupted)
         progress->partial = what + " (" + std::to_string(stats.samples_per_pixel) + " of " + std::to_string(spp) + " samples per pixel, written)";
     else
         progress->finished.push_back(what);

@@ -176,16 +176,18 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     limits.samples_given = run.spp_given;
     limits.seconds = run.time_seconds;
     limits.quiet = run.quiet;
-    bool interrupted = render::render_progressively(*renderer, limits);
+    render::ProgressiveOutcome outcome = render::render_progressively(*renderer, limits);
     render::RenderStatistics stats = renderer->statistics();
+    if (!outcome.failure.empty() && stats.samples_per_pixel == 0) render::fail_after_writing(outcome, 0, "");
     film::ImageMetadata metadata = job_metadata(job, *renderer, stats);
     for (const auto& [key, value] : extra.values) metadata.values[key] = value;
     metadata.set("tonemap", run.tone_map);
     metadata.set("exposure", run.exposure);
     render::write_render_images(run.output, renderer->image(), tone_map, run.exposure, metadata);
     std::printf("wrote %s%s\n", run.output.c_str(), render::is_exr_path(run.output) ? (" and " + render::png_beside(run.output)).c_str() : "");
+    if (!outcome.failure.empty()) render::fail_after_writing(outcome, stats.samples_per_pixel, run.output);
     render::print_render_statistics(stats, run.quiet);
-    if (interrupted) {
+    if (outcome.interrupted) {
         std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);
         throw CLI::RuntimeError(render::kInterruptedExitStatus);
     }

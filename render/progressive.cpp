@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
@@ -16,7 +17,7 @@ namespace lab::render {
 
 namespace fs = std::filesystem;
 
-bool render_progressively(Renderer& renderer, const RenderLimits& limits) {
+ProgressiveOutcome render_progressively(Renderer& renderer, const RenderLimits& limits) {
     bool timed = limits.seconds > 0.0;
     int target = timed && !limits.samples_given ? (1 << 24) : limits.samples;
     film::ProgressOptions progress_options;
@@ -25,12 +26,18 @@ bool render_progressively(Renderer& renderer, const RenderLimits& limits) {
     film::ProgressBar progress(timed ? film::ProgressMode::Time : film::ProgressMode::Samples, timed ? limits.seconds : double(target),
                                double(settings.width) * settings.height, progress_options);
     InterruptScope interrupt_scope;
+    ProgressiveOutcome outcome;
     int done = 0;
     while (done < target && !interrupt_requested()) {
         if (timed && progress.elapsed_seconds() >= limits.seconds) break;
         int n = std::min(renderer.samples_per_launch(), target - done);
         auto start = std::chrono::steady_clock::now();
-        renderer.add_samples(n);
+        try {
+            renderer.add_samples(n);
+        } catch (const std::exception& e) {
+            outcome.failure = e.what();
+            break;
+        }
         double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         done += n;
         progress.update(done);
@@ -42,7 +49,14 @@ bool render_progressively(Renderer& renderer, const RenderLimits& limits) {
         }
     }
     progress.finish();
-    return interrupt_requested();
+    outcome.interrupted = interrupt_requested();
+    return outcome;
+}
+
+void fail_after_writing(const ProgressiveOutcome& outcome, int samples_per_pixel, const std::string& written_to) {
+    if (samples_per_pixel == 0) throw std::runtime_error(outcome.failure + " (before the first sample: nothing to keep)");
+    throw std::runtime_error(outcome.failure + "; the " + std::to_string(samples_per_pixel) +
+                             " samples per pixel rendered before it were written to " + written_to);
 }
 
 film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatistics& stats) {

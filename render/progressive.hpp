@@ -22,11 +22,22 @@ struct RenderLimits {
     bool quiet = false;  // no progress bar
 };
 
-// Adds samples until a limit is reached or the user interrupts (Ctrl-C ends the current launch and
-// returns true, so the caller writes the image so far; render/interrupt.hpp: a second Ctrl-C stops
-// the process at once). Launches grow while they take under an
-// eighth of a second, so the bar moves and few launches are made.
-bool render_progressively(Renderer& renderer, const RenderLimits& limits);
+// How a progressive render ended.
+struct ProgressiveOutcome {
+    bool interrupted = false;  // Ctrl-C ended it
+    std::string failure;       // a launch failed (an OpenCL error: out of device memory, a lost device)
+};
+
+// Adds samples until a limit is reached, the user interrupts, or a launch fails. Ctrl-C ends the
+// current launch (render/interrupt.hpp: a second Ctrl-C stops the process at once). A failed launch
+// is not rethrown: the caller writes the samples of the launches before it (the renderer counts
+// only completed launches), then reports the failure (fail_after_writing). Launches grow while
+// they take under an eighth of a second, so the bar moves and few launches are made.
+ProgressiveOutcome render_progressively(Renderer& renderer, const RenderLimits& limits);
+
+// After a failed render's image was written: throws the failure as one line that says where the
+// samples rendered before it went.
+[[noreturn]] void fail_after_writing(const ProgressiveOutcome& outcome, int samples_per_pixel, const std::string& written_to);
 
 // What every render's metadata holds: samples, time, device, seed, non-finite samples, lost rays,
 // the settings. Callers add what they know besides (material, scene, environment, tone map).
