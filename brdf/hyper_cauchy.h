@@ -135,7 +135,8 @@ SS_FN float hyper_cauchy_sample_student_t(float nu, float u) {
 /* Visible normals of w (flipped to the upper side) by stretching to unit width, sampling the visible
  * slopes there and stretching back. pdf(m) = G1(w) max(0, w.m) D(m) / |cos theta_w|, as for GGX. */
 SS_FN float3 hyper_cauchy_sample_visible_normal(float3 w, float sx, float sy, float g, float u1, float u2) {
-    float3 ws = make_float3(sx * w.x, sy * w.y, fabs(w.z));
+    if (w.z < 0.0f) w = -w; /* the normals visible from below are those of the mirrored direction */
+    float3 ws = make_float3(sx * w.x, sy * w.y, w.z);
     float tangential = sqrt(ws.x * ws.x + ws.y * ws.y);
     float cos_phi = tangential > 0.0f ? ws.x / tangential : 1.0f;
     float sin_phi = tangential > 0.0f ? ws.y / tangential : 0.0f;

@@ -145,13 +145,14 @@ SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf
 #endif
     c.specular = w.specular * reflectance;
     c.transmission = w.transmission * albedo;
+    /* divided rather than multiplied by 1 / sum: a lone lobe then gets probability 1 exactly */
     float sum = c.cosine + c.subsurface + c.glossy + c.specular + c.transmission;
-    float scale = sum > 0.0f ? 1.0f / sum : 0.0f;
-    c.cosine *= scale;
-    c.subsurface *= scale;
-    c.glossy *= scale;
-    c.specular *= scale;
-    c.transmission *= scale;
+    if (!(sum > 0.0f)) return c;
+    c.cosine /= sum;
+    c.subsurface /= sum;
+    c.glossy /= sum;
+    c.specular /= sum;
+    c.transmission /= sum;
     return c;
 }
 

@@ -48,10 +48,10 @@ const float kThetas[] = {0.0f, 30.0f, 50.0f, 65.0f, 75.0f, 80.0f, 85.0f};
 // bsdf_eval(), f_on - f_off, over wi. That difference depends on cos theta_i only, so a midpoint rule in
 // mu_i integrates it to 1e-6; sampling it instead would leave the rare large weights of a nearly smooth
 // lobe's grazing multiple scattering in the figure.
-AlbedoEstimate furnace_albedo(const brdf::Material& m, brdf::float3 wo) {
+AlbedoEstimate furnace_albedo(const brdf::Material& m, brdf::float3 wo, int strata = 64) {
     brdf::Material single = m;
     single.energy_compensation = 0;
-    AlbedoEstimate a = directional_albedo(single, wo, 64, 3);
+    AlbedoEstimate a = directional_albedo(single, wo, strata, 3);
     if (!m.energy_compensation) return a;
     const int n = 4000;
     double added = 0.0;
@@ -239,7 +239,9 @@ double dielectric_furnace_deviation(int compensation, bool print) {
         for (float r : {0.1f, 0.3f, 0.5f, 0.7f, 1.0f}) {
             if (print) std::printf("  ior %.2f r %.2f:", double(ior), double(r));
             for (float theta : {0.0f, 30.0f, 60.0f, 75.0f, 85.0f, 95.0f, 105.0f, 120.0f, 150.0f, 180.0f}) {
-                AlbedoEstimate a = furnace_albedo(white_dielectric(r, ior, compensation), brdf::direction_from_degrees(theta, 0.0f));
+                // the interface's weights spread more than a conductor's: more strata keep the estimate's noise
+                // (about 0.4 / strata) well inside the 1 % being checked
+                AlbedoEstimate a = furnace_albedo(white_dielectric(r, ior, compensation), brdf::direction_from_degrees(theta, 0.0f), 160);
                 INFO("ior " << ior << " roughness " << r << " theta " << theta << ": " << a.value.x << " +- " << a.std_error.x);
                 worst = std::fmax(worst, std::fabs(double(a.value.x) - 1.0));
                 if (print) std::printf(" %.4f", double(a.value.x));

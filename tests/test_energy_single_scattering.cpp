@@ -64,6 +64,7 @@ brdf::Material white_ggx_conductor(float roughness, float albedo = 1.0f) {
     m.distribution = BRDF_DISTRIBUTION_GGX;
     m.roughness = roughness;  // alpha = roughness^2
     m.anisotropic = 0.0f;
+    m.energy_compensation = 0;  // the single-scattering lobe: what the independent quadrature computes
     return m;
 }
 

@@ -39,6 +39,7 @@ brdf::Material white_conductor(int distribution, float roughness) {
     m.roughness = roughness;
     m.distribution = distribution;
     m.hc_shape = 3.0f;
+    m.energy_compensation = 0;  // single scattering: the loss these tests check (compensation: tests/test_energy_compensation.cpp)
     return m;
 }
 
