@@ -43,19 +43,17 @@ void HostRenderer::clear_film() {
 }
 
 void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
-    static const std::vector<brdf::float4> no_texels(1, brdf::float4(0.0f));
-    static const std::vector<float> no_cdf(2, 0.0f);
-    const ibl::Environment* env = input_.environment ? &*input_.environment : nullptr;
+    const ibl::Environment& env = bound_environment();
     kernel::RenderScene scene;
     scene.materials = compiled_.materials.data();
     scene.emission = emission_.data();
     scene.lights = lights_.lights.data();
     scene.light_cdf = lights_.selection_cdf.data();
     scene.light_of_slot = lights_.light_of_slot.data();
-    scene.env = env ? env->map() : ::ibl::EnvironmentMap{1, 1.0f, 0.0f, 0.0f};
-    scene.env_buffers.texels = env ? env->texels().data() : no_texels.data();
-    scene.env_buffers.marginal_cdf = env ? env->marginal_cdf().data() : no_cdf.data();
-    scene.env_buffers.conditional_cdf = env ? env->conditional_cdf().data() : no_cdf.data();
+    scene.env = env.map();
+    scene.env_buffers.texels = env.texels().data();
+    scene.env_buffers.marginal_cdf = env.marginal_cdf().data();
+    scene.env_buffers.conditional_cdf = env.conditional_cdf().data();
 
     int pixels = input_.settings.width * input_.settings.height;
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());

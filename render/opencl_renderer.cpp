@@ -61,12 +61,10 @@ void OpenClRenderer::build_kernel() {
 }
 
 void OpenClRenderer::upload_scene() {
-    static const std::vector<brdf::float4> no_texels(1, brdf::float4(0.0f));
-    static const std::vector<float> no_cdf(2, 0.0f);
-    const ibl::Environment* env = input_.environment ? &*input_.environment : nullptr;
-    texels_ = upload(runtime_, env ? env->texels() : no_texels);
-    marginal_ = upload(runtime_, env ? env->marginal_cdf() : no_cdf);
-    conditional_ = upload(runtime_, env ? env->conditional_cdf() : no_cdf);
+    const ibl::Environment& env = bound_environment();
+    texels_ = upload(runtime_, env.texels());
+    marginal_ = upload(runtime_, env.marginal_cdf());
+    conditional_ = upload(runtime_, env.conditional_cdf());
     materials_ = upload(runtime_, compiled_.materials);
     emission_buffer_ = upload(runtime_, emission_);
     lights_buffer_ = upload(runtime_, lights_.lights);
@@ -91,11 +89,10 @@ void OpenClRenderer::clear_film() {
 }
 
 void OpenClRenderer::launch(const kernel::RenderKernelSettings& k) {
-    static const ::ibl::EnvironmentMap no_environment{1, 1.0f, 0.0f, 0.0f};
     cl_uint a = 0;
     opencl::set_kernel_arg(kernel_, a++, k);
     opencl::set_kernel_arg(kernel_, a++, camera_);
-    opencl::set_kernel_arg(kernel_, a++, input_.environment ? input_.environment->map() : no_environment);
+    opencl::set_kernel_arg(kernel_, a++, bound_environment().map());
     for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &emission_buffer_, &lights_buffer_, &light_cdf_,
                                           &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
         opencl::set_kernel_arg(kernel_, a++, *b);

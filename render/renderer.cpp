@@ -89,6 +89,16 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     return k;
 }
 
+const ibl::Environment& Renderer::bound_environment() const {
+    if (input_.environment) return *input_.environment;
+    static const ibl::Environment black = [] {
+        ibl::EnvironmentOptions options;
+        options.face_size = 1;
+        return ibl::Environment::constant(brdf::float3(0.0f), "none", options);
+    }();
+    return black;
+}
+
 int Renderer::add_samples(int max_samples, double budget_seconds) {
     Clock::time_point start = Clock::now();
     int added = 0;
