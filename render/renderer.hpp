@@ -58,10 +58,8 @@ public:
     virtual std::string device_description() const = 0;
     const RenderSettings& settings() const { return input_.settings; }
     const scene::CompiledScene& compiled_scene() const { return compiled_; }
-    const LightSet& lights() const { return lights_; }
     double build_seconds() const { return build_seconds_; }
     LightSelection light_selection() const { return input_.light_selection; }
-    const std::optional<ibl::Environment>& environment() const { return input_.environment; }
 
     // Adds samples per pixel, in launches of samples_per_launch(), until `max_samples` were added or
     // `budget_seconds` have passed; returns how many were added (at least one launch when
