@@ -6,6 +6,7 @@
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
+#include "render/film_file.hpp"
 #include "render/host_renderer.hpp"
 #include "render/interrupt.hpp"
 #include "render/opencl_renderer.hpp"
@@ -119,6 +120,9 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     job.scene_name = o.scene.empty() ? std::string("test model") : o.scene;
     job.material_name = sample ? sample->name : std::string("the scene's materials");
     job.environment_name = env_name;
+    job.env_rotation = o.env_rotation;
+    job.env_exposure = o.env_exposure;
+    job.ground = parse_on_off(o.ground, "--ground");
     job.input.scene = std::move(scene);
     job.input.environment = std::move(environment);
     job.input.settings = settings;
@@ -142,6 +146,9 @@ film::ImageMetadata job_metadata(const RenderJob& job, const render::Renderer& r
     m.set("material", job.material_name);
     m.set("scene", job.scene_name);
     m.set("environment", job.environment_name);
+    m.set("env_rotation", job.env_rotation);
+    m.set("env_exposure", job.env_exposure);
+    m.set("ground", job.ground ? "on" : "off");
     return m;
 }
 
@@ -153,7 +160,37 @@ void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOption
     cmd.add_option("--tonemap", run->tone_map, "Tone map of the PNG: aces, reinhard or clamp")->capture_default_str();
     cmd.add_option("--exposure", run->exposure, "Exposure of the PNG in stops")->capture_default_str();
     cmd.add_flag("--quiet", run->quiet, "No progress bar or statistics");
+    cmd.add_option("--samples", run->samples,
+                   "A:B renders exactly the sample indices A to B-1 of every pixel: a part of a render that dtoadq merge combines");
+    cmd.add_option("--resume", run->resume, "An EXR this command wrote: continue it (to --spp samples per pixel in all, or for --time more)");
 }
+
+namespace {
+
+// How many samples this run adds, and from where: --samples A:B, --resume (up to --spp), or --spp/--time.
+render::RenderLimits run_limits(const RenderRunOptions& run, const std::optional<render::SampleRanges>& range,
+                                const std::optional<render::FilmFile>& resumed) {
+    render::RenderLimits limits;
+    limits.samples = run.spp;
+    limits.samples_given = run.spp_given;
+    limits.seconds = run.time_seconds;
+    limits.quiet = run.quiet;
+    if (range) {
+        limits.samples = int(range->count());
+        limits.samples_given = true;
+    }
+    if (resumed) {
+        int held = int(resumed->ranges.count());
+        if (!run.time_seconds && held >= run.spp)
+            throw InputError("--spp", "", std::to_string(run.spp) + " samples per pixel in all, but " + resumed->path + " already holds " +
+                                              std::to_string(held) + ": ask for more to resume");
+        limits.samples = run.spp - held;
+        if (run.time_seconds > 0.0 && !run.spp_given) limits.samples_given = false;
+    }
+    return limits;
+}
+
+}  // namespace
 
 void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra) {
     // Everything that can be wrong with the input is found before the first sample.
@@ -162,28 +199,42 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (!(run.time_seconds >= 0.0) || run.time_seconds > 1e6) throw InputError("--time", "", "must be in [0, 1e6] seconds");
     if (run.spp < 1 || run.spp > 1 << 24) throw InputError("--spp", "", "must be in [1, 16777216]");
     if (!(run.exposure >= -64.0f && run.exposure <= 64.0f)) throw InputError("--exposure", "", "must be a number of stops in [-64, 64]");
+    std::optional<render::SampleRanges> range;
+    if (!run.samples.empty()) {
+        range = render::SampleRanges::parse_range(run.samples, "--samples");
+        if (run.spp_given || run.time_seconds > 0.0) throw InputError("--samples", "", "gives the sample count itself: leave out --spp and --time");
+        if (!run.resume.empty()) throw InputError("--samples", "", "cannot be used with --resume (a resumed render continues where it stopped)");
+    }
+    std::optional<render::FilmFile> resumed;
+    if (!run.resume.empty()) resumed = render::read_film_file(run.resume);
+    render::RenderLimits limits = run_limits(run, range, resumed);
     RenderJob job = prepare_render_job(options);
     std::optional<opencl::Runtime> runtime;
     std::unique_ptr<render::Renderer> renderer = make_renderer(job, options.device, &runtime);
+    auto metadata_now = [&] {
+        film::ImageMetadata m = job_metadata(job, *renderer, renderer->statistics());
+        for (const auto& [key, value] : extra.values) m.values[key] = value;
+        m.set("tonemap", run.tone_map);
+        m.set("exposure", run.exposure);
+        return m;
+    };
+    if (range) renderer->set_first_sample(int(range->ranges().front().first));
+    if (resumed) {
+        render::check_same_render("this render", metadata_now(), renderer->settings().width, renderer->settings().height, *resumed);
+        renderer->restore_film(resumed->film, resumed->ranges);
+    }
     if (!run.quiet)
         std::printf("%s on %s: kernel built in %.2f s\n", job.description.c_str(), renderer->device_description().c_str(),
                     renderer->build_seconds());
     std::fflush(stdout);
     for (const std::string& w : renderer->compiled_scene().warnings) std::fprintf(stderr, "dtoadq: note: %s\n", w.c_str());
 
-    render::RenderLimits limits;
-    limits.samples = run.spp;
-    limits.samples_given = run.spp_given;
-    limits.seconds = run.time_seconds;
-    limits.quiet = run.quiet;
     render::ProgressiveOutcome outcome = render::render_progressively(*renderer, limits);
     render::RenderStatistics stats = renderer->statistics();
     if (!outcome.failure.empty() && stats.samples_per_pixel == 0) render::fail_after_writing(outcome, 0, "");
-    film::ImageMetadata metadata = job_metadata(job, *renderer, stats);
-    for (const auto& [key, value] : extra.values) metadata.values[key] = value;
-    metadata.set("tonemap", run.tone_map);
-    metadata.set("exposure", run.exposure);
-    render::write_render_images(run.output, renderer->image(), tone_map, run.exposure, metadata);
+    film::ImageMetadata metadata = metadata_now();
+    const render::FilmReadback film = renderer->film();
+    render::write_render_images(run.output, renderer->image(), tone_map, run.exposure, metadata, &film);
     std::printf("wrote %s%s\n", run.output.c_str(), render::is_exr_path(run.output) ? (" and " + render::png_beside(run.output)).c_str() : "");
     if (!outcome.failure.empty()) render::fail_after_writing(outcome, stats.samples_per_pixel, run.output);
     render::print_render_statistics(stats, run.quiet);

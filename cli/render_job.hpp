@@ -47,6 +47,8 @@ void add_preview_options(CLI::App& cmd, RenderJobOptions* options);
 struct RenderJob {
     render::RenderInput input;
     std::string scene_name, material_name, environment_name;
+    float env_rotation = 0.0f, env_exposure = 0.0f;  // the options' (a scene's own are in its file)
+    bool ground = true;
     std::string description;  // one line: material, scene, environment, size, integrator, sampling
 };
 
@@ -74,12 +76,15 @@ struct RenderRunOptions {
     std::string tone_map = "aces";
     float exposure = 0.0f;
     bool quiet = false;
+    std::string samples;  // --samples A:B: exactly the sample indices A to B-1 (a part of a render to merge)
+    std::string resume;   // --resume FILE.exr: continue that render (its film) up to --spp in all, or for --time more
 };
 void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOptions>& run);
 
 // The whole command: checks the output and the limits, prepares the job, renders progressively
-// (Ctrl-C writes the image so far), writes the EXR with metadata and the PNG, prints statistics.
-// `extra` is added to the metadata.
+// (Ctrl-C writes the image so far), writes the EXR with metadata and the film (render/film_file.hpp)
+// and the PNG, prints statistics. `extra` is added to the metadata. With --samples it renders one
+// sample range; with --resume it first checks that the file is a part of this same render.
 void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra = {});
 
 }  // namespace lab::cli

@@ -94,6 +94,16 @@ void encode_and_write(const std::string& path, const char* format, const OIIO::I
     write_file_atomically(path, bytes.data(), bytes.size());
 }
 
+std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    if (!in) {
+        std::error_code ec;
+        if (!fs::exists(path, ec)) throw InputError(path, "", "cannot read: no such file");
+        throw InputError(path, "", "cannot read: " + OIIO::geterror());
+    }
+    return in;
+}
+
 }  // namespace
 
 void check_output_path(const std::string& path) {
@@ -113,14 +123,28 @@ void write_image(const std::string& path, const ImageRgb& image, ToneMap tone_ma
         write_png(path, image, tone_map, exposure_stops, metadata);
 }
 
-void write_exr(const std::string& path, const ImageRgb& image, const ImageMetadata& metadata) {
+void write_exr(const std::string& path, const ImageRgb& image, const ImageMetadata& metadata, const std::vector<ImageChannel>& extra) {
     check_image(image, "write_exr");
     check_writable(path);
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+    const size_t pixels = image.pixel_count(), channels = 3 + extra.size();
+    for (const ImageChannel& c : extra)
+        if (c.values.size() != pixels || c.name.empty())
+            throw std::invalid_argument("write_exr: channel \"" + c.name + "\" has " + std::to_string(c.values.size()) + " values for " +
+                                        std::to_string(pixels) + " pixels");
+    OIIO::ImageSpec spec(image.width, image.height, int(channels), OIIO::TypeDesc::FLOAT);
+    spec.channelnames.resize(3);  // the constructor names them R, G, B, A, channel4...
+    spec.alpha_channel = -1;
+    for (const ImageChannel& c : extra) spec.channelnames.push_back(c.name);
     spec.attribute("oiio:ColorSpace", "Linear");
     spec.attribute("compression", "zip");
     add_metadata(spec, metadata, false);
-    encode_and_write(path, "openexr", spec, image.rgb.data());
+    if (extra.empty()) return encode_and_write(path, "openexr", spec, image.rgb.data());
+    std::vector<float> interleaved(pixels * channels);
+    for (size_t p = 0; p < pixels; ++p) {
+        for (size_t c = 0; c < 3; ++c) interleaved[p * channels + c] = image.rgb[p * 3 + c];
+        for (size_t c = 0; c < extra.size(); ++c) interleaved[p * channels + 3 + c] = extra[c].values[p];
+    }
+    encode_and_write(path, "openexr", spec, interleaved.data());
 }
 
 void write_png(const std::string& path, const ImageRgb& image, ToneMap tone_map, float exposure_stops, const ImageMetadata& metadata) {
@@ -134,12 +158,7 @@ void write_png(const std::string& path, const ImageRgb& image, ToneMap tone_map,
 }
 
 ImageRgb read_image(const std::string& path, ImageMetadata* metadata) {
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
-    if (!in) {
-        std::error_code ec;
-        if (!fs::exists(path, ec)) throw InputError(path, "", "cannot read: no such file");
-        throw InputError(path, "", "cannot read: " + OIIO::geterror());
-    }
+    std::unique_ptr<OIIO::ImageInput> in = open_image(path);
     const std::string format = in->format_name();
     if (format != "openexr" && format != "png") throw InputError(path, "", "is a " + format + " image; only OpenEXR and PNG are read");
     const OIIO::ImageSpec& spec = in->spec();
@@ -178,6 +197,31 @@ ImageRgb read_image(const std::string& path, ImageMetadata* metadata) {
         }
     }
     return image;
+}
+
+std::vector<ImageChannel> read_exr_channels(const std::string& path, const std::vector<std::string>& names, int* width, int* height) {
+    std::unique_ptr<OIIO::ImageInput> in = open_image(path);
+    if (std::string(in->format_name()) != "openexr") throw InputError(path, "", "is not an OpenEXR file");
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<int> index;
+    for (const std::string& name : names) {
+        index.push_back(spec.channelindex(name));
+        if (index.back() < 0) throw InputError(path, name, "no such channel");
+    }
+    if (spec.width <= 0 || spec.height <= 0) throw InputError(path, "", "is empty");
+    const size_t pixels = size_t(spec.width) * size_t(spec.height), channels = size_t(spec.nchannels);
+    std::vector<float> all(pixels * channels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
+        throw InputError(path, "", "cannot read: " + in->geterror());
+    std::vector<ImageChannel> out;
+    for (size_t c = 0; c < names.size(); ++c) {
+        ImageChannel channel{names[c], std::vector<float>(pixels)};
+        for (size_t p = 0; p < pixels; ++p) channel.values[p] = all[p * channels + size_t(index[c])];
+        out.push_back(std::move(channel));
+    }
+    *width = spec.width;
+    *height = spec.height;
+    return out;
 }
 
 }  // namespace lab::film

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "film/image.hpp"
 #include "film/image_metadata.hpp"
@@ -19,8 +20,16 @@ void check_output_path(const std::string& path);
 // tone-mapped, the EXR ignores tone_map and exposure_stops (but they belong in the metadata).
 void write_image(const std::string& path, const ImageRgb& image, ToneMap tone_map, float exposure_stops, const ImageMetadata& metadata);
 
-// Linear float32 RGB OpenEXR (zip compression), every value as it is, NaN and infinity included.
-void write_exr(const std::string& path, const ImageRgb& image, const ImageMetadata& metadata);
+// A channel besides R, G, B in an EXR: one float per pixel, named as OpenEXR names layers
+// ("film.sum.R"). A render keeps the film it was resolved from this way (render/film_file.hpp).
+struct ImageChannel {
+    std::string name;
+    std::vector<float> values;
+};
+
+// Linear float32 RGB OpenEXR (zip compression), every value as it is, NaN and infinity included,
+// with the `extra` channels after R, G, B (each one float per pixel).
+void write_exr(const std::string& path, const ImageRgb& image, const ImageMetadata& metadata, const std::vector<ImageChannel>& extra = {});
 
 // 8-bit sRGB PNG: to_srgb8(image, tone_map, exposure_stops), non-finite pixels magenta.
 void write_png(const std::string& path, const ImageRgb& image, ToneMap tone_map, float exposure_stops, const ImageMetadata& metadata);
@@ -35,5 +44,9 @@ void write_png(const std::string& path, const ImageRgb& image, ToneMap tone_map,
 // linear with srgb_decode (the tone curve is not undone). metadata, when given, receives the
 // "dtoadq:*" attributes and "Software". Errors throw lab::InputError naming the file.
 ImageRgb read_image(const std::string& path, ImageMetadata* metadata = nullptr);
+
+// The named channels of an OpenEXR file, bit for bit, in the order asked, and its size. Throws
+// lab::InputError(path, name, ...) for the first channel the file lacks, and as read_image does.
+std::vector<ImageChannel> read_exr_channels(const std::string& path, const std::vector<std::string>& names, int* width, int* height);
 
 }  // namespace lab::film

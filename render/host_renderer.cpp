@@ -74,6 +74,8 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
 
 FilmReadback HostRenderer::read_film() const { return film_; }
 
+void HostRenderer::write_film(const FilmReadback& film) { film_ = film; }
+
 void HostRenderer::read_ray_counts(uint64_t* rays, uint64_t* lost) const {
     *rays = *lost = 0;
     for (size_t p = 0; p < rays_.size(); ++p) {

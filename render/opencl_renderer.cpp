@@ -110,6 +110,11 @@ FilmReadback OpenClRenderer::read_film() const {
     return film;
 }
 
+void OpenClRenderer::write_film(const FilmReadback& film) {
+    runtime_.write(accumulation_, film.accumulation.data(), film.accumulation.size() * sizeof(float));
+    runtime_.write(splat_, film.splat.data(), film.splat.size() * sizeof(float));  // the splat's words hold float bits
+}
+
 void OpenClRenderer::read_ray_counts(uint64_t* rays, uint64_t* lost) const {
     size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
     std::vector<cl_uint> r(pixels), l(pixels);

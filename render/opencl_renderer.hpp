@@ -22,6 +22,7 @@ private:
     void clear_film() override;
     void launch(const kernel::RenderKernelSettings& k) override;
     FilmReadback read_film() const override;
+    void write_film(const FilmReadback& film) override;
     void read_ray_counts(uint64_t* rays, uint64_t* lost) const override;
 
     const opencl::Runtime& runtime_;

@@ -11,6 +11,7 @@
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "film/progress_bar.hpp"
+#include "render/film_file.hpp"
 #include "render/interrupt.hpp"
 
 namespace lab::render {
@@ -63,12 +64,19 @@ film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatis
     const RenderSettings& s = renderer.settings();
     film::ImageMetadata m;
     m.set("spp", stats.samples_per_pixel);
+    m.set("sample_ranges", renderer.sample_ranges().to_string());
     m.set("seconds", stats.render_seconds);
     m.set("integrator", integrator_name(s.integrator));
     m.set("light_sampling", light_sampling_name(s.light_sampling));
     m.set("light_selection", light_selection_name(renderer.light_selection()));
     m.set("max_depth", s.max_depth);
+    m.set("roulette_depth", s.roulette_depth);
+    m.set("max_steps", s.max_steps);
+    m.set("max_distance", s.max_distance);
+    m.set("over_relaxation", s.over_relaxation);
+    m.set("show_background", s.show_background ? 1 : 0);
     m.set("normals", normal_method_name(s.normals));
+    m.set("normal_step", s.normal_step);
     m.set("seed", std::to_string(s.seed));
     m.set("device", renderer.device_description());
     m.set("nonfinite_samples", std::to_string(stats.nonfinite_samples));
@@ -89,17 +97,18 @@ void check_render_output(const std::string& output) {
 }
 
 void write_render_images(const std::string& output, const film::ImageRgb& image, film::ToneMap tone_map, float exposure_stops,
-                         const film::ImageMetadata& metadata) {
+                         const film::ImageMetadata& metadata, const FilmReadback* film) {
+    const std::vector<film::ImageChannel> channels = film ? film_channels(*film) : std::vector<film::ImageChannel>();
     try {
         if (is_exr_path(output)) {
-            film::write_exr(output, image, metadata);
+            film::write_exr(output, image, metadata, channels);
             film::write_png(png_beside(output), image, tone_map, exposure_stops, metadata);
         } else {
             film::write_png(output, image, tone_map, exposure_stops, metadata);
         }
     } catch (const InputError& e) {
         fs::path rescue = fs::temp_directory_path() / ("dtoadq-render-" + std::to_string(::getpid()) + ".exr");
-        film::write_exr(rescue.string(), image, metadata);
+        film::write_exr(rescue.string(), image, metadata, channels);
         throw InputError(output, "", std::string("cannot write (") + e.what() + "); the render was saved to " + rescue.string());
     }
 }

@@ -39,8 +39,8 @@ ProgressiveOutcome render_progressively(Renderer& renderer, const RenderLimits& 
 // samples rendered before it went.
 [[noreturn]] void fail_after_writing(const ProgressiveOutcome& outcome, int samples_per_pixel, const std::string& written_to);
 
-// What every render's metadata holds: samples, time, device, seed, non-finite samples, lost rays,
-// the settings. Callers add what they know besides (material, scene, environment, tone map).
+// What every render's metadata holds: samples and the sample indices, time, device, seed,
+// non-finite samples, lost rays, the settings. Callers add what they know besides (material, scene, environment, tone map).
 film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatistics& stats);
 
 // Whether `path` names an OpenEXR file (.exr, any case), and the PNG that goes beside it.
@@ -52,9 +52,10 @@ void check_render_output(const std::string& output);
 
 // An .exr output gets the linear EXR and the tone-mapped PNG beside it; a .png only the PNG. When
 // they cannot be written the EXR goes to the temporary folder instead, and the InputError thrown
-// says where: a finished render is never lost to a bad path.
+// says where: a finished render is never lost to a bad path. With `film`, the EXR holds the film's
+// buffers too (render/film_file.hpp), so it can be merged with other parts or resumed.
 void write_render_images(const std::string& output, const film::ImageRgb& image, film::ToneMap tone_map, float exposure_stops,
-                         const film::ImageMetadata& metadata);
+                         const film::ImageMetadata& metadata, const FilmReadback* film = nullptr);
 
 // Samples, time, paths/s, rays/s and rays that ran out of steps; non-finite samples, if any, on
 // stderr as a warning even when quiet (they are never silently dropped).

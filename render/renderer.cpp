@@ -102,10 +102,14 @@ const ibl::Environment& Renderer::bound_environment() const {
 int Renderer::add_samples(int max_samples, double budget_seconds) {
     Clock::time_point start = Clock::now();
     int added = 0;
+    if (max_samples > 0 && int64_t(next_sample_) + max_samples > SampleRanges::kMaxEnd)
+        throw std::invalid_argument("Renderer::add_samples: sample indices past " + std::to_string(SampleRanges::kMaxEnd));
     while (added < max_samples) {
         int n = std::min(max_samples - added, samples_per_launch_);
-        launch(kernel_settings(samples_, n));
+        launch(kernel_settings(next_sample_, n));
+        next_sample_ += n;
         samples_ += n;
+        run_samples_ += n;
         added += n;
         if (seconds_since(start) >= budget_seconds) break;
     }
@@ -115,7 +119,30 @@ int Renderer::add_samples(int max_samples, double budget_seconds) {
 
 void Renderer::reset() {
     clear_film();
-    samples_ = 0;
+    restored_ = SampleRanges();
+    run_first_ = next_sample_ = first_sample_;
+    samples_ = run_samples_ = 0;
+    render_seconds_ = 0.0;
+}
+
+void Renderer::set_first_sample(int first) {
+    if (first < 0) throw std::invalid_argument("Renderer::set_first_sample: a sample index is >= 0");
+    first_sample_ = first;
+    reset();
+}
+
+SampleRanges Renderer::sample_ranges() const { return restored_.joined(SampleRanges(run_first_, next_sample_)); }
+
+void Renderer::restore_film(const FilmReadback& film, const SampleRanges& ranges) {
+    size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
+    if (film.accumulation.size() != 4 * pixels || film.splat.size() != 3 * pixels)
+        throw std::invalid_argument("Renderer::restore_film: the film's buffers do not match the image size");
+    if (ranges.end() > SampleRanges::kMaxEnd) throw std::invalid_argument("Renderer::restore_film: sample indices out of range");
+    write_film(film);
+    restored_ = ranges;
+    run_first_ = next_sample_ = int(ranges.end());
+    samples_ = int(ranges.count());
+    run_samples_ = 0;
     render_seconds_ = 0.0;
 }
 
@@ -177,7 +204,8 @@ RenderStatistics Renderer::statistics() const {
     RenderStatistics s;
     s.samples_per_pixel = samples_;
     s.render_seconds = render_seconds_;
-    s.paths = uint64_t(samples_) * uint64_t(input_.settings.width) * uint64_t(input_.settings.height);
+    // this run's paths: render_seconds counts this run's time only
+    s.paths = uint64_t(run_samples_) * uint64_t(input_.settings.width) * uint64_t(input_.settings.height);
     read_ray_counts(&s.rays, &s.lost_rays);
     for (size_t p = 3; p < film.accumulation.size(); p += 4) s.nonfinite_samples += uint64_t(film.accumulation[p]);
     return s;

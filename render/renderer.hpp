@@ -20,6 +20,7 @@
 #include "kernels/host.hpp"
 #include "render/light_set.hpp"
 #include "render/render_settings.hpp"
+#include "render/sample_ranges.hpp"
 #include "scene/compile.hpp"
 #include "scene/scene.hpp"
 
@@ -71,6 +72,16 @@ public:
 
     // Drops every sample so far.
     void reset();
+    // Renders from sample index `first` on (--samples A:B renders indices A to B-1); resets.
+    void set_first_sample(int first);
+    // The sample indices the film holds.
+    SampleRanges sample_ranges() const;
+    // The film's buffers as they are now (render/film_file.hpp writes them beside the image).
+    FilmReadback film() const { return read_film(); }
+    // Continues a render from its film (--resume): the film's buffers, of this renderer's size, and
+    // the sample indices they hold; the next sample is the one after the last of them. Own-pixel
+    // accumulation continues in sample order, so the result is bit-identical to one run.
+    void restore_film(const FilmReadback& film, const SampleRanges& ranges);
     // A new image size (check_render_settings' limits); resets.
     void resize(int width, int height);
     // New materials for the scene's slots (one per slot, in slot order); resets. Rebuilds the
@@ -104,6 +115,8 @@ protected:
     // Adds k.sample_count samples to every pixel, the first keyed by k.first_sample; blocks.
     virtual void launch(const kernel::RenderKernelSettings& k) = 0;
     virtual FilmReadback read_film() const = 0;
+    // Replaces the film's buffers (restore_film has checked their sizes).
+    virtual void write_film(const FilmReadback& film) = 0;
     virtual void read_ray_counts(uint64_t* rays, uint64_t* lost) const = 0;
 
     kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
@@ -121,7 +134,12 @@ protected:
 private:
     void rebuild_lights();
 
-    int samples_ = 0;
+    int first_sample_ = 0;    // where a reset film starts
+    SampleRanges restored_;   // the samples restore_film put on the film
+    int run_first_ = 0;       // the first sample of this run (after the restored ones)
+    int next_sample_ = 0;     // the index of the next sample to add
+    int samples_ = 0;         // samples per pixel on the film, restored ones included
+    int run_samples_ = 0;     // samples per pixel added since the last reset or restore
     int samples_per_launch_ = 1;
     double render_seconds_ = 0.0;
 };

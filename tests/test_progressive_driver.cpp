@@ -33,6 +33,7 @@ private:
             for (size_t c = 0; c < 3; ++c) film_.accumulation[p + c] += 0.25f * float(k.sample_count);
     }
     lab::render::FilmReadback read_film() const override { return film_; }
+    void write_film(const lab::render::FilmReadback& film) override { film_ = film; }
     void read_ray_counts(uint64_t* rays, uint64_t* lost) const override { *rays = *lost = 0; }
 
     int fail_at_, launches_ = 0;

@@ -273,6 +273,12 @@ add_test(NAME cli.render.writes_exr_and_png
                  -P ${CLI_TEST_DIR}/expect_render_output.cmake)
 set_tests_properties(cli.render.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT 120)
 
+# --- a render split by sample range (render --samples A:B), merged (dtoadq merge) and resumed ----
+add_test(NAME cli.render.split_merge_resume
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/split_render -DSOURCE=${PROJECT_SOURCE_DIR}
+                 -P ${CLI_TEST_DIR}/expect_split_render.cmake)
+set_tests_properties(cli.render.split_merge_resume PROPERTIES LABELS cli TIMEOUT 120)
+
 # --- no OpenCL platform at all: the ICD loader is pointed at an empty vendor folder ---------------
 file(MAKE_DIRECTORY ${CLI_SCRATCH}/no_icd_vendors)
 set(NO_PLATFORM_ARGS_devices "devices")
