@@ -23,6 +23,9 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
     cmd.add_option("--light-selection", o->light_selection, "How a light is chosen for next-event estimation: power or uniform")
         ->capture_default_str();
     cmd.add_option("--normals", o->normals, "Surface normals: tetrahedral, central or analytic")->capture_default_str();
+    cmd.add_option("--object-bounds", o->object_bounds,
+                   "Box tests that skip objects far from the point being marched: on or off (same image; off to compare speed)")
+        ->capture_default_str();
     cmd.add_option("--max-depth", o->max_depth, "Scattering events per path")->capture_default_str();
     cmd.add_option("--max-steps", o->max_steps, "Sphere-tracing steps per ray before it counts as lost")->capture_default_str();
     cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain)")->capture_default_str();
@@ -96,6 +99,7 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     require_within(o.env_rotation, "--env-rotation", -36000.0f, 36000.0f);
     require_within(o.env_exposure, "--env-exposure", -64.0f, 64.0f);
     parse_on_off(o.ground, "--ground");
+    settings.object_bounds = parse_on_off(o.object_bounds, "--object-bounds");
     settings.seed = o.seed;
     return settings;
 }

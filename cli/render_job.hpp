@@ -32,6 +32,7 @@ struct RenderJobOptions {
     std::string light_sampling_option = "--light-sampling";  // the flag that gave it, for errors
     std::string light_selection = "power";
     std::string normals = "tetrahedral";
+    std::string object_bounds = "on";
     int max_depth = 16;
     int max_steps = 1024;
     float over_relaxation = 1.0f;

@@ -75,6 +75,7 @@ film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatis
     m.set("max_distance", s.max_distance);
     m.set("over_relaxation", s.over_relaxation);
     m.set("show_background", s.show_background ? 1 : 0);
+    m.set("object_bounds", s.object_bounds ? "on" : "off");
     m.set("normals", normal_method_name(s.normals));
     m.set("normal_step", s.normal_step);
     m.set("seed", std::to_string(s.seed));

@@ -39,6 +39,7 @@ struct RenderSettings {
     int max_steps = 1024;
     float max_distance = 100.0f;
     bool show_background = true;   // false: escaping camera rays see black (lighting unchanged)
+    bool object_bounds = true;     // box tests skip far objects (scene::CompileOptions; the field is unchanged)
     uint64_t seed = 0;
     std::string extra_build_options;  // appended to the OpenCL build options (e.g. a -D forcing a cold build)
 };

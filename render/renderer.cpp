@@ -50,7 +50,7 @@ std::vector<brdf::float4> emission_table(const scene::CompiledScene& scene) {
 
 Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     check_render_settings(input_.settings);
-    compiled_ = scene::compile_scene(input_.scene);
+    compiled_ = scene::compile_scene(input_.scene, compile_options());
     if (compiled_.materials.empty()) throw std::invalid_argument("Renderer: a scene has at least one material slot");
     // Everything about the scene is checked before the (slow) build.
     camera_ = make_camera(compiled_.camera, input_.settings.width, input_.settings.height, compiled_.file);
@@ -66,6 +66,12 @@ void Renderer::initialize() {
 
 void Renderer::rebuild_lights() {
     lights_ = build_light_set(compiled_, input_.environment ? &*input_.environment : nullptr, input_.light_selection);
+}
+
+scene::CompileOptions Renderer::compile_options() const {
+    scene::CompileOptions options;  // the scene's own options were applied to input_.scene already
+    options.object_bounds = input_.settings.object_bounds;
+    return options;
 }
 
 kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int count) const {
@@ -163,7 +169,7 @@ bool Renderer::set_materials(const std::vector<brdf::Material>& materials) {
     bool rebuild = brdf::used_features(materials) != brdf::used_features(compiled_.materials);
     for (size_t k = 0; k < materials.size(); ++k) input_.scene.materials[k].material = materials[k];
     if (rebuild) {
-        compiled_ = scene::compile_scene(input_.scene);
+        compiled_ = scene::compile_scene(input_.scene, compile_options());
         build_kernel();
     } else {
         compiled_.materials = materials;

@@ -120,6 +120,7 @@ protected:
     virtual void read_ray_counts(uint64_t* rays, uint64_t* lost) const = 0;
 
     kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
+    scene::CompileOptions compile_options() const;
     // The environment the kernels bind: the input's, or a black one when there is none (the kernels
     // take its map and buffers either way; without an environment light nothing reads them).
     const ibl::Environment& bound_environment() const;

@@ -11,6 +11,7 @@
 #include "common/input_error.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/lipschitz.hpp"
+#include "scene/object_tree.hpp"
 #include "scene/rotation.hpp"
 
 namespace lab::scene {
@@ -176,17 +177,108 @@ std::string emit_normal(const Node& node, const std::string& p, FunctionWriter* 
     return emit_normal(child, w->point(p + " / " + float_literal(s->factor)), w);
 }
 
+// A rough cost of evaluating the node, in primitive evaluations: where an object costs more than its
+// box test (about one and a half primitives), the test pays when it skips the object.
+float evaluation_cost(const Node& node) {
+    if (primitive_call(node.kind)) return std::holds_alternative<Cone>(node.kind) ? 2.0f : 1.0f;
+    float cost = 0.0f;
+    for (const Node& child : node.children) cost += evaluation_cost(child);
+    if (std::holds_alternative<Translate>(node.kind) || std::holds_alternative<Scale>(node.kind)) return cost;
+    if (std::holds_alternative<Displace>(node.kind)) return cost + 3.0f;  // three sines
+    return cost + 1.0f;                                                    // a rotation, a repetition, a blend
+}
+
+constexpr float kBoundedObjectCost = 2.5f;
+
+// Whether an object is worth a box test of its own: it costs more than the test, and its box
+// bounds it along some axis (with f >= dist(p, box), which a broken repetition does not keep).
+bool worth_bounding(const Object& object, const ShapeAnalysis& a) {
+    bool any_bounded = std::isfinite(a.box_half.x) || std::isfinite(a.box_half.y) || std::isfinite(a.box_half.z);
+    return any_bounded && a.broken.empty() && evaluation_cost(object.shape) >= kBoundedObjectCost;
+}
+
+// The body of scene_nearest: the nearest object or emitter (index: objects in file order, then
+// emitters) and its distance. Unbounded objects come first, then the bounded ones through the
+// object tree (scene/object_tree.hpp), then the emitters; a tie goes to the lower index whatever
+// the order, and a box test skips only what is strictly farther than the nearest so far, so the
+// result is the one of evaluating everything in file order.
+class NearestWriter {
+public:
+    NearestWriter(const Scene& scene, bool object_bounds, std::set<std::string>* headers) : headers_(headers) {
+        std::vector<ObjectBox> boxes;
+        std::vector<ShapeAnalysis> analyses;
+        for (const Object& object : scene.objects) analyses.push_back(analyse_shape(object.shape));
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            const ShapeAnalysis& a = analyses[i];
+            bool finite = std::isfinite(a.box_half.x) && std::isfinite(a.box_half.y) && std::isfinite(a.box_half.z);
+            bool own = object_bounds && worth_bounding(scene.objects[i], a);
+            if (object_bounds && finite && a.broken.empty())
+                boxes.push_back(ObjectBox{int(i), a.box_center - a.box_half, a.box_center + a.box_half, own});
+            else
+                object(int(i), own ? &a : nullptr, "    ");
+        }
+        std::vector<ObjectTreeNode> tree = build_object_tree(boxes);
+        for (const ObjectBox& box : boxes) own_test_[box.object] = box.own_test ? analyses[size_t(box.object)] : std::optional<ShapeAnalysis>();
+        if (!tree.empty()) node(tree, 0, "    ");
+    }
+
+    // A surface at distance `expression`, index `index`.
+    void candidate(const std::string& expression, int index, const std::string& indent) {
+        body_ << indent << "e = " << expression << ";\n"
+              << indent << "if (e < d || (e == d && " << index << " < k)) { d = e; k = " << index << "; }\n";
+    }
+    const std::string body() const { return body_.str(); }
+    int box_tests() const { return box_tests_; }
+
+private:
+    void object(int i, const ShapeAnalysis* own_test, const std::string& indent) {
+        std::string call = "scene_object_" + std::to_string(i) + "(p)";
+        if (!own_test) return candidate(call, i, indent);
+        open_test(own_test->box_center, own_test->box_half, indent);
+        candidate(call, i, indent + "    ");
+        body_ << indent << "}\n";
+    }
+
+    void node(const std::vector<ObjectTreeNode>& tree, int k, const std::string& indent) {
+        const ObjectTreeNode& n = tree[size_t(k)];
+        if (n.object >= 0) {
+            const std::optional<ShapeAnalysis>& own = own_test_[n.object];
+            return object(n.object, own ? &*own : nullptr, indent);
+        }
+        open_test(0.5f * (n.lo + n.hi), 0.5f * (n.hi - n.lo), indent);
+        node(tree, n.left, indent + "    ");
+        node(tree, n.right, indent + "    ");
+        body_ << indent << "}\n";
+    }
+
+    // "if the box is not strictly farther than the nearest surface so far {"; an unbounded axis gets
+    // a half extent of 3e38, which fBox treats as infinite.
+    void open_test(Vec3 center, Vec3 half, const std::string& indent) {
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(half[i])) half[i] = 3.0e38f;
+        headers_->insert("sdf/primitives/box.h");
+        body_ << indent << "b = fBox(p - " << vec3_literal(center) << ", " << vec3_literal(half) << ");\n"
+              << indent << "if (!(b > 0.0f && b > d)) {\n";
+        ++box_tests_;
+    }
+
+    std::set<std::string>* headers_;
+    std::ostringstream body_;
+    std::map<int, std::optional<ShapeAnalysis>> own_test_;
+    int box_tests_ = 0;
+};
+
 std::string list_names(const std::vector<std::string>& names) {
     std::string out;
     for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
     return out.empty() ? "none" : out;
 }
 
-std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, const std::vector<brdf::Material>& materials) {
+std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, const std::vector<brdf::Material>& materials,
+                            bool object_bounds) {
     std::set<std::string> headers;
     std::ostringstream functions;
-    // The nearest surface: objects in file order, then emitters; a tie keeps the earlier one.
-    std::ostringstream nearest, normals, slot_cases, normal_cases;
+    std::ostringstream normals, slot_cases, normal_cases;
     size_t index = 0;
     for (const Object& object : scene.objects) {
         FunctionWriter w(&headers);
@@ -200,18 +292,15 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
             functions << "SS_FN float3 " << name << "_normal(float3 p) {\n" << wn.body() << "    return " << n << ";\n}\n\n";
             normal_cases << "    case " << index << ": *n = " << name << "_normal(p); return 1;\n";
         }
-        nearest << (index == 0 ? "    float d = " : "    e = ") << name << "(p);\n";
         slot_cases << "    case " << index << ": return " << object.material << ";\n";
-        if (index > 0) nearest << "    if (e < d) { d = e; k = " << index << "; }\n";
         ++index;
     }
+    NearestWriter nearest(scene, object_bounds, &headers);
     for (size_t i = 0; i < scene.emitters.size(); ++i) {
         const EmitterSphere& e = scene.emitters[i];
         headers.insert("sdf/primitives/sphere.h");
         std::string local = "p - " + vec3_literal(e.center);
-        nearest << (index == 0 ? "    float d = " : "    e = ") << "fSphere(" << local << ", " << float_literal(e.radius) << "); /* emitters["
-                << i << "] */\n";
-        if (index > 0) nearest << "    if (e < d) { d = e; k = " << index << "; }\n";
+        nearest.candidate("fSphere(" + local + ", " + float_literal(e.radius) + ")", int(index), "    ");
         slot_cases << "    case " << index << ": return " << e.material << ";\n";
         normal_cases << "    case " << index << ": *n = nSphere(" << local << ", " << float_literal(e.radius) << "); return 1;\n";
         ++index;
@@ -220,7 +309,7 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
     std::ostringstream out;
     out << "/* Generated by the dtoadq scene compiler from " << scene.file << "; do not edit.\n"
         << " * Objects: " << scene.objects.size() << ", emitters: " << scene.emitters.size()
-        << ". Lipschitz bound " << format_number(analysis.lipschitz)
+        << " (" << nearest.box_tests() << " box tests). Lipschitz bound " << format_number(analysis.lipschitz)
         << (analysis.is_distance_bound ? "" : "; NOT a distance bound (a repetition breaks it)") << ". */\n"
         << "#ifndef SCENE_GENERATED_H\n#define SCENE_GENERATED_H\n\n"
         << "#define SCENE_LIPSCHITZ " << float_literal(analysis.lipschitz) << "\n"
@@ -232,9 +321,9 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
     for (const std::string& h : headers) out << "#include \"" << h << "\"\n";
     out << "\n" << functions.str();
     out << "/* The nearest object or emitter (index: objects, then emitters) and its distance. */\n"
-        << "SS_FN float scene_nearest(float3 p, int* nearest) {\n    int k = 0;\n";
-    if (index > 1) out << "    float e;\n";
-    out << nearest.str() << "    *nearest = k;\n    return d;\n}\n\n"
+        << "SS_FN float scene_nearest(float3 p, int* nearest) {\n    int k = 0;\n    float d = INFINITY, e;\n";
+    if (nearest.box_tests()) out << "    float b; /* a box test */\n";
+    out << nearest.body() << "    *nearest = k;\n    return d;\n}\n\n"
         << "SS_FN int scene_material_slot(int nearest) {\n    switch (nearest) {\n"
         << slot_cases.str() << "    default: return 0;\n    }\n}\n\n"
         << "SS_FN float scene_distance(float3 p) {\n    int k;\n    return scene_nearest(p, &k);\n}\n\n"
@@ -331,7 +420,7 @@ CompiledScene compile_scene(const Scene& input, const CompileOptions& options) {
     out.warnings = analysis.warnings;
     out.camera = scene.camera;
     out.environment = scene.environment;
-    out.source = generate_source(scene, analysis, out.materials);
+    out.source = generate_source(scene, analysis, out.materials, options.object_bounds);
     return out;
 }
 

@@ -17,6 +17,9 @@ namespace lab::scene {
 struct CompileOptions {
     std::map<std::string, brdf::Material> material_overrides;  // declared material name -> its replacement
     std::vector<std::string> disabled_objects;                 // object names to leave out
+    // Skip, at each point, an object whose bounding box is no nearer than the nearest surface found
+    // so far (the field is unchanged; docs/scenes.md, "Object bounds"). Off for comparisons.
+    bool object_bounds = true;
 };
 
 // The scene with the options applied. Throws lab::InputError naming the scene file for a name the

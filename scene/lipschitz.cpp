@@ -12,7 +12,34 @@ namespace {
 constexpr float kUnbounded = std::numeric_limits<float>::infinity();
 const char* const kAxisNames[3] = {"x", "y", "z"};
 
-ShapeAnalysis primitive(Vec3 extent, std::array<bool, 3> symmetric) { return ShapeAnalysis{1.0f, extent, symmetric, {}}; }
+ShapeAnalysis primitive(Vec3 extent, std::array<bool, 3> symmetric) {
+    ShapeAnalysis a{1.0f, extent, symmetric, {}};
+    a.box_half = extent;  // about the primitive's own centre, the origin
+    return a;
+}
+
+// The centred box [lo, hi] as centre and half extents; an infinite axis gets centre 0.
+void set_box(Vec3 lo, Vec3 hi, ShapeAnalysis* a) {
+    for (int i = 0; i < 3; ++i) {
+        bool bounded = std::isfinite(lo[i]) && std::isfinite(hi[i]);
+        a->box_center[i] = bounded ? 0.5f * (lo[i] + hi[i]) : 0.0f;
+        a->box_half[i] = bounded ? 0.5f * (hi[i] - lo[i]) : kUnbounded;
+    }
+}
+
+Vec3 box_lo(const ShapeAnalysis& a) { return a.box_center - a.box_half; }
+Vec3 box_hi(const ShapeAnalysis& a) { return a.box_center + a.box_half; }
+
+// Fewer unbounded axes first, then the smaller volume: which of two boxes an intersection keeps.
+bool smaller_box(const ShapeAnalysis& a, const ShapeAnalysis& b) {
+    int unbounded_a = 0, unbounded_b = 0;
+    double volume_a = 1.0, volume_b = 1.0;
+    for (int i = 0; i < 3; ++i) {
+        if (std::isfinite(a.box_half[i])) volume_a *= a.box_half[i]; else ++unbounded_a;
+        if (std::isfinite(b.box_half[i])) volume_b *= b.box_half[i]; else ++unbounded_b;
+    }
+    return unbounded_a != unbounded_b ? unbounded_a < unbounded_b : volume_a < volume_b;
+}
 
 // Primitives are exact distances (sdf/primitives/), so f(p) = dist(p, solid) >= dist(p, B) for any
 // box B holding the solid.
@@ -105,15 +132,23 @@ ShapeAnalysis analyse_combine(const Combine& c, const std::vector<ShapeAnalysis>
         // min(a, b) where both are >= r). Every intersection variant is >= each operand outside that
         // operand's box, so either operand's box will do (the smaller one is kept); a subtraction
         // variant is >= its first operand there.
+        float grow = c.op == Combinator::smooth_union ? 0.25f * c.radius : (c.op == Combinator::union_ ? 0.0f : c.radius);
         switch (c.op) {
-        case Combinator::union_: out.extent = glm::max(out.extent, b.extent); break;
-        case Combinator::smooth_union: out.extent = glm::max(out.extent, b.extent) + Vec3(0.25f * c.radius); break;
+        case Combinator::union_:
+        case Combinator::smooth_union:
         case Combinator::round_union:
-        case Combinator::chamfer_union: out.extent = glm::max(out.extent, b.extent) + Vec3(c.radius); break;
+        case Combinator::chamfer_union:
+            out.extent = glm::max(out.extent, b.extent) + Vec3(grow);
+            set_box(glm::min(box_lo(out), box_lo(b)) - Vec3(grow), glm::max(box_hi(out), box_hi(b)) + Vec3(grow), &out);
+            break;
         case Combinator::intersection:
         case Combinator::round_intersection:
         case Combinator::chamfer_intersection:
             if (inside_box(b.extent, out.extent)) out.extent = b.extent;
+            if (smaller_box(b, out)) {
+                out.box_center = b.box_center;
+                out.box_half = b.box_half;
+            }
             break;
         case Combinator::subtraction:
         case Combinator::round_subtraction:
@@ -134,21 +169,28 @@ ShapeAnalysis analyse_shape(const Node& node) {
     ShapeAnalysis out = children[0];
     if (auto* t = std::get_if<Translate>(&node.kind)) {
         out.extent += glm::abs(t->offset);
+        for (int i = 0; i < 3; ++i)
+            if (std::isfinite(out.box_half[i])) out.box_center[i] += t->offset[i];
         for (int i = 0; i < 3; ++i) out.mirror_symmetric[i] = out.mirror_symmetric[i] && t->offset[i] == 0.0f;
     } else if (auto* r = std::get_if<Rotate>(&node.kind)) {
         out.extent = rotated_extent(r->rotation, out.extent);
+        // R c holds the box's rotated centre; an axis the rotation mixes an unbounded one into is unbounded
+        Vec3 center = r->rotation * out.box_center, half = rotated_extent(r->rotation, out.box_half);
+        set_box(center - half, center + half, &out);
         out.mirror_symmetric = rotated_symmetry(r->rotation, out.mirror_symmetric);
     } else if (auto* s = std::get_if<Scale>(&node.kind)) {
         out.extent *= s->factor;  // s f(p / s) keeps f's gradient (at p / s), so its bound too
+        set_box(s->factor * box_lo(out), s->factor * box_hi(out), &out);
     } else if (auto* d = std::get_if<Displace>(&node.kind)) {
         out.lipschitz = sdf::lipschitz_displace_sine(out.lipschitz, d->amplitude, d->frequency);
         out.extent += Vec3(d->amplitude);              // f + A s >= f - A
+        set_box(box_lo(out) - Vec3(d->amplitude), box_hi(out) + Vec3(d->amplitude), &out);
         out.mirror_symmetric = {false, false, false};  // the sine product is odd in every coordinate
     } else if (auto* r = std::get_if<Repeat>(&node.kind)) {
         std::array<bool, 3> repeated = {r->period.x > 0.0f, r->period.y > 0.0f, r->period.z > 0.0f};
         check_repetition(node, r->period, repeated, children[0], &out);
         for (int i = 0; i < 3; ++i)
-            if (repeated[i]) out.extent[i] = kUnbounded;
+            if (repeated[i]) out.extent[i] = out.box_half[i] = kUnbounded, out.box_center[i] = 0.0f;
         // the cell map is odd in each coordinate, so the child's symmetries survive
     } else if (auto* r = std::get_if<RepeatLimited>(&node.kind)) {
         std::array<bool, 3> repeated{};
@@ -156,6 +198,11 @@ ShapeAnalysis analyse_shape(const Node& node) {
             repeated[i] = r->period[i] > 0.0f && r->count_min[i] < r->count_max[i];
             // the farthest copy's offset: each copy is the child translated by period * k
             out.extent[i] += r->period[i] * std::fmax(std::fabs(r->count_min[i]), std::fabs(r->count_max[i]));
+            // copies at period * k for k in [count_min, count_max]
+            if (std::isfinite(out.box_half[i])) {
+                out.box_center[i] += 0.5f * r->period[i] * (r->count_min[i] + r->count_max[i]);
+                out.box_half[i] += 0.5f * r->period[i] * (r->count_max[i] - r->count_min[i]);
+            }
             out.mirror_symmetric[i] = out.mirror_symmetric[i] && (r->period[i] == 0.0f || r->count_min[i] == -r->count_max[i]);
         }
         check_repetition(node, r->period, repeated, children[0], &out);

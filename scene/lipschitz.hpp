@@ -21,6 +21,12 @@ struct ShapeAnalysis {
     std::array<bool, 3> mirror_symmetric{false, false, false};
     // Why the field is not a distance bound: "PATH: reason", one per offending repetition.
     std::vector<std::string> broken;
+    // A tighter box of the same kind, not about the origin: centre box_center, half extents
+    // box_half (infinite along unbounded axes, where the centre is 0), with f(p) >= dist(p, box)
+    // outside it. The scene compiler skips an object whose box is no nearer than the nearest
+    // surface found so far, which leaves the minimum, and so the field, as it was.
+    Vec3 box_center{0.0f};
+    Vec3 box_half{0.0f};
 };
 
 ShapeAnalysis analyse_shape(const Node& node);
