@@ -239,6 +239,7 @@ void register_bench(CLI::App& app) {
     brdf_cmd->callback([options] { run_bench_brdf(*options); });
     register_bench_preview(*bench);
     register_bench_render(*bench);
+    register_bench_objects(*bench);
 }
 
 }  // namespace lab::cli

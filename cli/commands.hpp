@@ -19,5 +19,7 @@ void register_merge(CLI::App& app);
 void register_bench_preview(CLI::App& bench);
 // `bench render`, likewise
 void register_bench_render(CLI::App& bench);
+// `bench objects`, likewise
+void register_bench_objects(CLI::App& bench);
 
 }  // namespace lab::cli

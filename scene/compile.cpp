@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -198,7 +199,7 @@ bool worth_bounding(const Object& object, const ShapeAnalysis& a) {
 }
 
 // The body of scene_nearest: the nearest object or emitter (index: objects in file order, then
-// emitters) and its distance. Unbounded objects come first, then the bounded ones through the
+// emitters) and its distance. Unbounded and large objects come first, then the others through the
 // object tree (scene/object_tree.hpp), then the emitters; a tie goes to the lower index whatever
 // the order, and a box test skips only what is strictly farther than the nearest so far, so the
 // result is the one of evaluating everything in file order.
@@ -208,11 +209,19 @@ public:
         std::vector<ObjectBox> boxes;
         std::vector<ShapeAnalysis> analyses;
         for (const Object& object : scene.objects) analyses.push_back(analyse_shape(object.shape));
+        // An object whose box spans much of the scene (a wall, a floor slab) is near every point:
+        // a group holding it would rarely be skipped, so it goes with the unbounded ones.
+        Vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+        auto finite = [](const ShapeAnalysis& a) {
+            return std::isfinite(a.box_half.x) && std::isfinite(a.box_half.y) && std::isfinite(a.box_half.z) && a.broken.empty();
+        };
+        for (const ShapeAnalysis& a : analyses)
+            if (finite(a)) lo = glm::min(lo, a.box_center - a.box_half), hi = glm::max(hi, a.box_center + a.box_half);
+        float large = 0.5f * glm::length(hi - lo);
         for (size_t i = 0; i < scene.objects.size(); ++i) {
             const ShapeAnalysis& a = analyses[i];
-            bool finite = std::isfinite(a.box_half.x) && std::isfinite(a.box_half.y) && std::isfinite(a.box_half.z);
             bool own = object_bounds && worth_bounding(scene.objects[i], a);
-            if (object_bounds && finite && a.broken.empty())
+            if (object_bounds && finite(a) && 2.0f * glm::length(a.box_half) <= large)
                 boxes.push_back(ObjectBox{int(i), a.box_center - a.box_half, a.box_center + a.box_half, own});
             else
                 object(int(i), own ? &a : nullptr, "    ");

@@ -1,0 +1,145 @@
+// dtoadq bench objects: what the object bounds (scene/object_tree.hpp) buy. A march step of the
+// plain field evaluates every object; with the box tests it evaluates the objects near the point
+// and the tests on the way down the tree. The bench renders generated scenes of N objects (on a
+// grid, under a constant sky) with the box tests off and on, fits the
+// cost per path as a + b N to each, and prints b(on) / b(off): how much less each added object
+// costs. Then the same on/off ratio of paths/s for the bundled scenes. Figures, not timed tests:
+// every ratio is measured within the one run, the two modes interleaved.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/bench_convergence.hpp"
+#include "cli/commands.hpp"
+#include "cli/render_job.hpp"
+#include "common/input_error.hpp"
+#include "render/opencl_renderer.hpp"
+#include "scene/load_scene.hpp"
+
+namespace lab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BenchObjectsCommand {
+    RenderJobOptions job;
+    std::vector<int> counts{1, 2, 4, 8, 16, 32, 64};
+    std::vector<std::string> scenes{"scenes/shader_ball.json", "scenes/cornell_box.json", "scenes/veach_mis.json", "scenes/metaballs.json",
+                                    "scenes/repetition.json", "scenes/primitives.json"};
+    double seconds = 1.5;
+};
+
+// `count` objects on a square grid (spacing 1.2), cycling through a costly blend (a turned rounded
+// box smoothly joined to a torus), a sphere and a capsule; a camera above that sees them all; a
+// constant sky. No floor: rays grazing a plane take hundreds of steps whatever the objects, which
+// would hide what the objects cost.
+scene::Scene grid_scene(int count) {
+    using nlohmann::json;
+    int side = 1;
+    while (side * side < count) ++side;
+    float extent = 0.6f * float(side);
+    json objects = json::array();
+    for (int i = 0; i < count; ++i) {
+        float x = 1.2f * float(i % side) - extent + 0.6f, z = 1.2f * float(i / side) - extent + 0.6f;
+        json shape;
+        if (i % 3 == 0)
+            shape = {{"type", "smooth_union"}, {"radius", 0.1},
+                     {"children", {{{"type", "rotate"}, {"axis", {0, 1, 0}}, {"degrees", 30},
+                                    {"child", {{"type", "round_box"}, {"half_size", {0.25, 0.25, 0.25}}, {"radius", 0.05}}}},
+                                   {{"type", "translate"}, {"offset", {0, 0.3, 0}},
+                                    {"child", {{"type", "torus"}, {"major_radius", 0.3}, {"minor_radius", 0.07}}}}}}};
+        else if (i % 3 == 1)
+            shape = {{"type", "sphere"}, {"radius", 0.35}};
+        else
+            shape = {{"type", "capsule"}, {"radius", 0.2}, {"half_height", 0.2}};
+        objects.push_back({{"name", "object" + std::to_string(i)},
+                           {"material", i % 2 ? "red" : "grey"},
+                           {"shape", {{"type", "translate"}, {"offset", {x, 0.4, z}}, {"child", shape}}}});
+    }
+    json scene = {
+        {"camera", {{"type", "pinhole"}, {"position", {0.0, 1.0 + 1.6 * extent, 2.2 * extent + 1.0}}, {"look_at", {0, 0, 0}}, {"fov_degrees", 50}}},
+        {"environment", {{"constant", {0.8, 0.85, 1.0}}}},
+        {"materials",
+         {{"grey", {{"albedo", {0.6, 0.6, 0.6}}, {"roughness", 0.3}, {"lobes", {{"diffuse", 0.7}, {"glossy", 0.3}}}}},
+          {"red", {{"albedo", {0.7, 0.2, 0.1}}, {"lobes", {{"diffuse", 1}}}}}}},
+        {"objects", objects}};
+    return scene::parse_scene(scene.dump(), "bench grid of " + std::to_string(count) + " objects");
+}
+
+double paths_per_second(const opencl::Runtime& runtime, render::RenderInput input, bool bounds, double seconds) {
+    input.settings.object_bounds = bounds;
+    render::OpenClRenderer renderer(runtime, input);
+    renderer.add_samples(1);  // PoCL compiles the work-group function at the first launch: not part of the figure
+    renderer.reset();
+    render_for(renderer, seconds, [](double) {});
+    return renderer.statistics().paths_per_second();
+}
+
+// Least-squares slope of y against x.
+double slope(const std::vector<double>& x, const std::vector<double>& y) {
+    double mx = 0.0, my = 0.0;
+    for (size_t i = 0; i < x.size(); ++i) mx += x[i] / double(x.size()), my += y[i] / double(x.size());
+    double sxy = 0.0, sxx = 0.0;
+    for (size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
+    return sxx > 0.0 ? sxy / sxx : 0.0;
+}
+
+void run_bench_objects(const BenchObjectsCommand& c) {
+    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
+    for (int n : c.counts)
+        if (n < 1 || n > 4096) throw InputError("--counts", "", "each count must be in [1, 4096]");
+    opencl::Runtime runtime(c.job.device);
+    render::LightSelection selection;
+    render::RenderSettings settings = checked_render_settings(c.job, &selection);
+    std::printf("bench objects: %s, pt with MIS, %.1f s per figure; device %s\n\n", c.job.size.c_str(), c.seconds,
+                runtime.device().description().c_str());
+    std::printf("%8s %16s %16s %10s %18s %18s\n", "objects", "paths/s (off)", "paths/s (on)", "on/off", "us/path (off)", "us/path (on)");
+    std::vector<double> n, cost_off, cost_on;
+    for (int count : c.counts) {
+        render::RenderInput input;
+        input.scene = grid_scene(count);
+        input.environment = ibl::Environment::constant(brdf::float3(0.8f, 0.85f, 1.0f), "constant", ibl::EnvironmentOptions{});
+        input.settings = settings;
+        input.light_selection = selection;
+        double off = paths_per_second(runtime, input, false, c.seconds), on = paths_per_second(runtime, input, true, c.seconds);
+        n.push_back(double(count));
+        cost_off.push_back(1e6 / off);
+        cost_on.push_back(1e6 / on);
+        std::printf("%8d %16.3g %16.3g %9.2fx %18.3f %18.3f\n", count, off, on, on / off, cost_off.back(), cost_on.back());
+        std::fflush(stdout);
+    }
+    double b_off = slope(n, cost_off), b_on = slope(n, cost_on);
+    std::printf("\ncost per added object: %.4f us/path without the box tests, %.4f with them: %.2f of it (target: below 1/3)\n\n", b_off,
+                b_on, b_on / b_off);
+
+    std::printf("%-28s %16s %16s %10s\n", "scene", "paths/s (off)", "paths/s (on)", "on/off");
+    for (const std::string& file : c.scenes) {
+        RenderJobOptions o = c.job;
+        o.scene = file;
+        scene::Scene scene = scene::load_scene(file);
+        if (!scene.environment && scene.emitters.empty() && scene.point_lights.empty()) o.default_env = "envmaps/courtyard.exr";
+        RenderJob job = prepare_render_job(o);
+        double off = paths_per_second(runtime, job.input, false, c.seconds), on = paths_per_second(runtime, job.input, true, c.seconds);
+        std::printf("%-28s %16.3g %16.3g %9.2fx\n", fs::path(file).filename().string().c_str(), off, on, on / off);
+        std::fflush(stdout);
+    }
+}
+
+}  // namespace
+
+void register_bench_objects(CLI::App& bench) {
+    auto c = std::make_shared<BenchObjectsCommand>();
+    c->job.size = "96x96";
+    auto* cmd = bench.add_subcommand("objects", "Paths/s with and without the object bounds, against the number of objects and per bundled scene");
+    add_render_options(*cmd, &c->job);
+    cmd->add_option("--counts", c->counts, "Object counts of the generated grid scenes")->capture_default_str();
+    cmd->add_option("--scenes", c->scenes, "Bundled scenes to compare with the box tests off and on")->capture_default_str();
+    cmd->add_option("--seconds", c->seconds, "Render time of each figure")->capture_default_str();
+    cmd->callback([c] { run_bench_objects(*c); });
+}
+
+}  // namespace lab::cli
