@@ -240,6 +240,7 @@ void register_bench(CLI::App& app) {
     register_bench_preview(*bench);
     register_bench_render(*bench);
     register_bench_objects(*bench);
+    register_bench_compare(*bench);
 }
 
 }  // namespace lab::cli

@@ -21,5 +21,7 @@ void register_bench_preview(CLI::App& bench);
 void register_bench_render(CLI::App& bench);
 // `bench objects`, likewise
 void register_bench_objects(CLI::App& bench);
+// `bench compare`, likewise
+void register_bench_compare(CLI::App& bench);
 
 }  // namespace lab::cli

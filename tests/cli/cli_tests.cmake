@@ -273,6 +273,9 @@ add_test(NAME cli.render.writes_exr_and_png
                  -P ${CLI_TEST_DIR}/expect_render_output.cmake)
 set_tests_properties(cli.render.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT 120)
 
+cli_bad_input(NAME bench.compare_to_missing EXPECT "${E}${D}/absent_binary: is not an executable file$"
+              ARGS bench compare --to ${D}/absent_binary)
+
 # --- a render split by sample range (render --samples A:B), merged (dtoadq merge) and resumed ----
 add_test(NAME cli.render.split_merge_resume
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/split_render -DSOURCE=${PROJECT_SOURCE_DIR}

@@ -1,0 +1,122 @@
+// dtoadq bench compare --to OLD_BINARY: paths/s of this build against another build of dtoadq on the
+// same scenes in one run, as a ratio. Each build renders each scene with `render --time` as a
+// child process, the two interleaved and repeated, and the paths/s come from what every render
+// writes into its EXR (dtoadq:spp and dtoadq:seconds, in every build since the render core), so
+// an older build needs no new option to be measured. The median of the repeats is reported.
+// Figures, not timed tests.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "common/input_error.hpp"
+#include "film/image_metadata.hpp"
+#include "film/image_output.hpp"
+
+namespace lab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BenchCompareCommand {
+    std::string other;
+    std::vector<std::string> scenes{"scenes/shader_ball.json", "scenes/cornell_box.json", "scenes/repetition.json", "scenes/primitives.json"};
+    std::string size = "128x128";
+    double seconds = 3.0;
+    int repeats = 3;
+    std::vector<std::string> extra;  // more arguments for both builds' render
+};
+
+// Runs `argv` with standard output and error sent to /dev/null; its exit status, or -1.
+int run_quietly(const std::vector<std::string>& argv) {
+    pid_t pid = ::fork();
+    if (pid < 0) return -1;
+    if (pid == 0) {
+        std::FILE* null = std::fopen("/dev/null", "w");
+        if (null) {
+            ::dup2(::fileno(null), 1);
+            ::dup2(::fileno(null), 2);
+        }
+        std::vector<char*> args;
+        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        ::execv(args[0], args.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    if (::waitpid(pid, &status, 0) < 0) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+int metadata_int(const film::ImageMetadata& m, const std::string& key, const std::string& file) {
+    const film::MetadataValue* v = m.find(key);
+    if (!v) throw InputError(file, "dtoadq:" + key, "missing: not a render of dtoadq");
+    if (const int* i = std::get_if<int>(v)) return *i;
+    return std::stoi(film::metadata_text(*v));
+}
+
+// paths/s of one `render --time` of `exe`, from its EXR's metadata.
+double render_paths_per_second(const std::string& exe, const BenchCompareCommand& c, const std::string& scene, const fs::path& out) {
+    std::vector<std::string> argv = {exe, "render", scene, "--size", c.size, "--time", std::to_string(c.seconds), "--quiet", "-o", out.string()};
+    argv.insert(argv.end(), c.extra.begin(), c.extra.end());
+    fs::remove(out);
+    int status = run_quietly(argv);
+    if (status != 0) throw InputError(exe, "", "render " + scene + " failed (exit status " + std::to_string(status) + ")");
+    film::ImageMetadata m;
+    film::ImageRgb image = film::read_image(out.string(), &m);
+    int spp = metadata_int(m, "spp", out.string());
+    const film::MetadataValue* seconds = m.find("seconds");
+    double s = seconds && std::holds_alternative<float>(*seconds) ? double(std::get<float>(*seconds)) : 0.0;
+    if (!(s > 0.0)) throw InputError(out.string(), "dtoadq:seconds", "missing or not positive");
+    return double(spp) * double(image.width) * double(image.height) / s;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+void run_bench_compare(const BenchCompareCommand& c) {
+    if (::access(c.other.c_str(), X_OK) != 0) throw InputError(c.other, "", "is not an executable file");
+    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
+    if (c.repeats < 1 || c.repeats > 100) throw InputError("--repeats", "", "must be in [1, 100]");
+    std::string self = fs::read_symlink("/proc/self/exe").string();
+    fs::path folder = fs::temp_directory_path() / ("dtoadq-bench-compare-" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::printf("bench compare: this build (%s) against %s; %s, render --time %.1f s, median of %d, interleaved\n\n", self.c_str(),
+                c.other.c_str(), c.size.c_str(), c.seconds, c.repeats);
+    std::printf("%-28s %16s %16s %10s\n", "scene", "paths/s (this)", "paths/s (other)", "this/other");
+    for (const std::string& scene : c.scenes) {
+        std::vector<double> mine, theirs;
+        for (int r = 0; r < c.repeats; ++r) {
+            theirs.push_back(render_paths_per_second(c.other, c, scene, folder / "other.exr"));
+            mine.push_back(render_paths_per_second(self, c, scene, folder / "this.exr"));
+        }
+        double a = median(mine), b = median(theirs);
+        std::printf("%-28s %16.3g %16.3g %9.2fx\n", fs::path(scene).filename().string().c_str(), a, b, a / b);
+        std::fflush(stdout);
+    }
+    fs::remove_all(folder);
+}
+
+}  // namespace
+
+void register_bench_compare(CLI::App& bench) {
+    auto c = std::make_shared<BenchCompareCommand>();
+    auto* cmd = bench.add_subcommand("compare", "Paths/s of this build against another dtoadq binary on the same scenes, as a ratio");
+    cmd->add_option("--to", c->other, "The other dtoadq binary (an older build)")->required();
+    cmd->add_option("--scenes", c->scenes, "Scene files to render")->capture_default_str();
+    cmd->add_option("--size", c->size, "Image size WxH")->capture_default_str();
+    cmd->add_option("--seconds", c->seconds, "Render time of each figure")->capture_default_str();
+    cmd->add_option("--repeats", c->repeats, "Renders per build and scene (the median is reported)")->capture_default_str();
+    cmd->add_option("--render-args", c->extra, "More arguments for both builds' render (e.g. --device host)")->allow_extra_args(false);
+    cmd->callback([c] { run_bench_compare(*c); });
+}
+
+}  // namespace lab::cli
