@@ -1,0 +1,57 @@
+// Welch's t-test (validation/welch_t_test.hpp) against closed forms of Student's t, and its error
+// rates on samples of known distribution: a level-alpha test rejects equal means in about alpha of
+// the trials (binomial noise) and a real difference in nearly all.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "validation/uniform_random.hpp"
+#include "validation/welch_t_test.hpp"
+
+using lab::validation::student_t_two_sided;
+using lab::validation::welch_t_test;
+
+namespace {
+
+// A standard normal by Box-Muller.
+double normal(lab::validation::UniformRandom& rng) {
+    double u1 = std::fmax(double(rng.uniform(0.0f, 1.0f)), 1e-12), u2 = rng.uniform(0.0f, 1.0f);
+    return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);
+}
+
+}  // namespace
+
+TEST_CASE("Student's t two-sided tail matches its closed forms", "[validation][welch]") {
+    // dof 1 is the Cauchy distribution: P(|T| >= t) = 1 - (2 / pi) atan(t)
+    for (double t : {0.0, 0.5, 1.0, 3.0, 40.0}) CHECK(student_t_two_sided(t, 1.0) == Approx(1.0 - 2.0 / M_PI * std::atan(t)).epsilon(1e-10));
+    // dof 2: P(|T| >= t) = 1 - t / sqrt(2 + t^2)
+    for (double t : {0.1, 1.0, 2.5, 10.0}) CHECK(student_t_two_sided(t, 2.0) == Approx(1.0 - t / std::sqrt(2.0 + t * t)).epsilon(1e-10));
+    // large dof: the normal's two-sided tail, erfc(t / sqrt 2), to O(1/dof)
+    CHECK(student_t_two_sided(1.959963985, 1e7) == Approx(0.05).epsilon(1e-5));
+    CHECK(student_t_two_sided(-2.0, 2.0) == student_t_two_sided(2.0, 2.0));
+}
+
+TEST_CASE("Welch's t-test rejects equal means at its level and finds a real difference", "[validation][welch]") {
+    lab::validation::UniformRandom rng(99);
+    const int trials = 2000, n_a = 8, n_b = 12;
+    const double alpha = 0.05;
+    int false_rejections = 0, detections = 0;
+    for (int k = 0; k < trials; ++k) {
+        std::vector<double> a(n_a), b(n_b), c(n_b);
+        for (double& x : a) x = 1.0 + 0.1 * normal(rng);
+        for (double& x : b) x = 1.0 + 0.3 * normal(rng);    // the same mean, another variance
+        for (double& x : c) x = 1.25 + 0.3 * normal(rng);   // a mean 0.25 higher: about 2.6 standard errors
+        false_rejections += welch_t_test(a, b).p_value < alpha;
+        detections += welch_t_test(a, c).p_value < alpha;
+    }
+    // Binomial(2000, 0.05): mean 100, standard deviation 9.7; four of them either way. Welch's test
+    // is approximate (its dof is estimated), so its size is near, not exactly, alpha.
+    INFO("false rejections " << false_rejections << " of " << trials << ", detections " << detections);
+    CHECK(std::abs(false_rejections - 100) <= 39);
+    CHECK(detections > trials * 0.6);
+    // exact cases
+    CHECK(welch_t_test({1, 1, 1}, {1, 1}).p_value == 1.0);
+    CHECK(welch_t_test({1, 1, 1}, {2, 2}).p_value == 0.0);
+    CHECK_THROWS(welch_t_test({1}, {1, 2}));
+}

@@ -1,0 +1,34 @@
+// Two renderers compared region by region with Welch's t-test (validation/welch_t_test.hpp): each
+// gives several independent renders of the same image (other seeds); the mean of a region in one
+// render is one estimate, so each region has as many estimates per renderer as renders. A renderer
+// with a bias somewhere shows as a region whose means differ by more than their noise allows. Needs
+// no converged reference.
+#pragma once
+
+#include <vector>
+
+#include "film/image.hpp"
+#include "validation/welch_t_test.hpp"
+
+namespace lab::validation {
+
+struct RegionTest {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixels [x0, x1) x [y0, y1)
+    int channel = 0;                     // 0, 1, 2: r, g, b
+    WelchResult result;
+};
+
+struct RegionComparison {
+    std::vector<RegionTest> regions;  // every region and channel
+    double level = 0.0;               // the per-test level (Sidak-corrected from the family's)
+    int rejected = 0;                 // regions whose p-value is below `level`
+    const RegionTest* worst() const;  // the smallest p-value
+};
+
+// Splits the image into `columns` x `rows` regions and tests each channel's region mean of `a`
+// against that of `b` at a family-wise level `significance` over all regions and channels. Every
+// image has the same size; at least two of each.
+RegionComparison compare_by_region(const std::vector<film::ImageRgb>& a, const std::vector<film::ImageRgb>& b, int columns, int rows,
+                                   double significance);
+
+}  // namespace lab::validation
