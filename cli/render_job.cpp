@@ -28,7 +28,7 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
         ->capture_default_str();
     cmd.add_option("--max-depth", o->max_depth, "Scattering events per path")->capture_default_str();
     cmd.add_option("--max-steps", o->max_steps, "Sphere-tracing steps per ray before it counts as lost")->capture_default_str();
-    cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain)")->capture_default_str();
+    cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain; a scene that is not a distance bound uses 1)")->capture_default_str();
     cmd.add_option("--seed", o->seed, "Seed of the random numbers (same seed, same image)")->capture_default_str();
     cmd.add_option("--device", o->device,
                    "OpenCL device: P:D, gpu, cpu or part of its name (dtoadq devices lists them); host: the C++ build on the CPU's threads");

@@ -35,7 +35,7 @@ struct RenderJobOptions {
     std::string object_bounds = "on";
     int max_depth = 16;
     int max_steps = 1024;
-    float over_relaxation = 1.0f;
+    float over_relaxation = render::RenderSettings{}.over_relaxation;
     unsigned long long seed = 0;
     std::string device;
 };

@@ -54,6 +54,11 @@ Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     if (compiled_.materials.empty()) throw std::invalid_argument("Renderer: a scene has at least one material slot");
     // Everything about the scene is checked before the (slow) build.
     camera_ = make_camera(compiled_.camera, input_.settings.width, input_.settings.height, compiled_.file);
+    // Over-relaxation's step back is safe only where the field bounds the distance (sdf/march.h).
+    if (!compiled_.is_distance_bound && input_.settings.over_relaxation > 1.0f) {
+        input_.settings.over_relaxation = 1.0f;
+        compiled_.warnings.push_back(compiled_.file + ": the field is not a distance bound, so sphere tracing is not over-relaxed (1)");
+    }
     emission_ = emission_table(compiled_);
     rebuild_lights();
 }

@@ -122,9 +122,13 @@ TEST_CASE("Every bundled scene renders with the path tracer without NaN or infin
         lab::scene::Scene scene = lab::scene::load_scene(entry.path().string());
         lab::render::RenderInput input;
         input.scene = scene;
-        // the scene's own environment, else the courtyard, so that every scene is lit
-        std::string env = scene.environment ? std::string() : std::string("envmaps/courtyard.exr");
-        if (!env.empty()) input.environment = lab::ibl::load_environment(env);
+        // the scene's own environment (a file or a constant), else the courtyard, so that every scene is lit
+        if (!scene.environment)
+            input.environment = lab::ibl::load_environment("envmaps/courtyard.exr");
+        else if (!scene.environment->file.empty())
+            input.environment = lab::ibl::load_environment(scene.environment->file);
+        else
+            input.environment = lab::ibl::Environment::constant(scene.environment->constant, "constant", lab::ibl::EnvironmentOptions{});
         input.settings.width = input.settings.height = 24;
         input.settings.max_depth = 8;
         lab::render::OpenClRenderer renderer(runtime, input);
