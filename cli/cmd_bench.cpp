@@ -241,6 +241,7 @@ void register_bench(CLI::App& app) {
     register_bench_render(*bench);
     register_bench_objects(*bench);
     register_bench_compare(*bench);
+    register_bench_vectorization(*bench);
 }
 
 }  // namespace lab::cli

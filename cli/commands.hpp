@@ -23,5 +23,7 @@ void register_bench_render(CLI::App& bench);
 void register_bench_objects(CLI::App& bench);
 // `bench compare`, likewise
 void register_bench_compare(CLI::App& bench);
+// `bench vectorization`, likewise
+void register_bench_vectorization(CLI::App& bench);
 
 }  // namespace lab::cli
