@@ -1,0 +1,117 @@
+// dtoadq view: the live viewer (viewer/, docs/viewer.md). This file turns the options into a
+// render job (cli/render_job, as `preview` does), checks everything a script asks for before the
+// window opens, and hands the viewer its renderer factory.
+#include <memory>
+#include <optional>
+
+#include "brdf/host/preset.hpp"
+#include "cli/commands.hpp"
+#include "cli/render_job.hpp"
+#include "common/input_error.hpp"
+#include "scene/test_model.hpp"
+#include "viewer/app.hpp"
+#include "viewer/material_edit.hpp"
+#include "viewer/scene_export.hpp"
+
+namespace lab::cli {
+
+namespace {
+
+struct ViewOptions {
+    RenderJobOptions job;
+    std::string slot, screenshot, save_preset, export_to, tone_map = "aces";
+    std::vector<std::string> sets;
+    int frames = 0, max_spp = 1 << 16;
+    double chunk_ms = 33.0;
+    float exposure = 0.0f;
+    bool stats = false;
+};
+
+int find_slot(const scene::Scene& scene, const std::string& name) {
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].name == name) return int(i);
+    return -1;
+}
+
+void run_view(const ViewOptions& o) {
+    film::ToneMap tone_map = film::parse_tone_map(o.tone_map);
+    if (o.frames < 0 || o.frames > 10000000) throw InputError("--frames", "", "must be in [0, 10000000]");
+    if (o.max_spp < 1 || o.max_spp > 1 << 24) throw InputError("--max-spp", "", "must be in [1, 16777216]");
+    if (!(o.chunk_ms >= 1.0 && o.chunk_ms <= 10000.0)) throw InputError("--chunk-ms", "", "must be in [1, 10000] ms");
+    if (!(o.exposure >= -64.0f && o.exposure <= 64.0f)) throw InputError("--exposure", "", "must be a number of stops in [-64, 64]");
+    std::vector<viewer::ScriptedSet> sets;
+    for (const std::string& s : o.sets) sets.push_back(viewer::parse_scripted_set(s));
+    if (!sets.empty() && o.frames == 0) throw InputError("--set", "", "needs --frames (a scripted run)");
+    if (!o.screenshot.empty()) render::check_render_output(o.screenshot);
+    std::string export_scene, export_name;
+    if (!o.export_to.empty()) viewer::parse_export_target(o.export_to, &export_scene, &export_name);
+
+    auto job = std::make_shared<RenderJob>(prepare_render_job(o.job));  // a bad preset, scene or environment stops here
+    const scene::Scene& scene = job->input.scene;
+    viewer::ViewerConfig config;
+    config.edited_slot = find_slot(scene, o.slot.empty() ? scene::kSampleMaterialSlot : o.slot);
+    if (config.edited_slot < 0) {
+        if (!o.slot.empty()) throw InputError(scene.file, "materials", "no material \"" + o.slot + "\" (--slot)");
+        config.edited_slot = 0;
+    }
+    config.preset.name = o.job.material.empty() ? scene.materials[size_t(config.edited_slot)].name : job->material_name;
+    config.preset.source = o.job.material.empty() ? scene.file : o.job.material;
+    for (const scene::MaterialSlot& slot : scene.materials) config.initial.materials.push_back(slot.material);
+    config.preset.material = config.initial.materials[size_t(config.edited_slot)];
+    config.initial.camera = scene.camera;
+    if (job->input.environment) {
+        config.initial.env_rotation_degrees = job->input.environment->rotation_degrees();
+        config.initial.env_exposure_stops = job->input.environment->exposure_stops();
+    }
+    // Every scripted change is tried once now, so a bad key or value stops before the window opens.
+    brdf::Preset trial = config.preset;
+    for (const viewer::ScriptedSet& s : sets) trial = viewer::with_parameter(trial, s.key, s.value, "--set " + s.key);
+
+    config.width = job->input.settings.width;
+    config.height = job->input.settings.height;
+    config.title = "dtoadq view: " + job->description;
+    config.max_samples = o.max_spp;
+    config.chunk_seconds = o.chunk_ms * 1e-3;
+    config.tone_map = tone_map;
+    config.display_exposure = o.exposure;
+    config.frames = o.frames;
+    config.sets = sets;
+    config.screenshot = o.screenshot;
+    config.save_preset = o.save_preset;
+    config.export_scene = export_scene;
+    config.export_name = export_name;
+    config.stats = o.stats;
+    const std::string device = o.job.device;
+    // Made on the render worker's thread: the kernel build never holds up the window.
+    auto runtime = std::make_shared<std::optional<opencl::Runtime>>();
+    config.make_renderer = [job, device, runtime] { return make_renderer(*job, device, runtime.get()); };
+    int status = viewer::run_viewer(config);
+    if (status != 0) throw CLI::RuntimeError(status);
+}
+
+}  // namespace
+
+void register_view(CLI::App& app) {
+    auto o = std::make_shared<ViewOptions>();
+    o->job.default_env = "constant:1,1,1";
+    o->job.size = "384x384";
+    auto* cmd = app.add_subcommand("view", "Live viewer: tune a material on the test model (or a scene) under an environment");
+    cmd->add_option("scene", o->job.scene, "Scene file (docs/scenes.md); default: the built-in test model");
+    cmd->add_option("--material", o->job.material, "Material preset for the edited slot (the scene's \"sample\")");
+    cmd->add_option("--slot", o->slot, "The scene material the panel edits (default: \"sample\", else the first)");
+    cmd->add_option("--ground", o->job.ground, "Ground plane of the test model: on or off")->capture_default_str();
+    add_render_options(*cmd, &o->job);
+    cmd->add_option("--frames", o->frames, "Headless: close after N frames (and once the image shows every --set)");
+    cmd->add_option("--set", o->sets, "Headless: KEY=VALUE@FRAME, a material parameter changed at a frame (repeatable)");
+    cmd->add_option("--screenshot", o->screenshot, "Headless: the window as a PNG at the last frame");
+    cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
+    cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");
+    cmd->add_flag("--stats", o->stats, "Print interface frame times, samples/s and change-to-frame latency on exit");
+    cmd->add_option("--max-spp", o->max_spp, "Stop accumulating at this many samples per pixel")->capture_default_str();
+    cmd->add_option("--chunk-ms", o->chunk_ms, "Render time per chunk between published images, ms")->capture_default_str();
+    cmd->add_option("--tonemap", o->tone_map, "Display tone map: aces, reinhard or clamp")->capture_default_str();
+    cmd->add_option("--exposure", o->exposure, "Display exposure in stops")->capture_default_str();
+    cmd->callback([o] { run_view(*o); });
+}
+
+}  // namespace lab::cli

@@ -1,0 +1,44 @@
+// The viewer's window and its frame loop: a GLFW window with Dear ImGui, the progressive render
+// (RenderWorker) shown through an OpenGL texture, and the panels. The same loop runs the headless
+// automation (--frames, --set, --screenshot, --save-preset, --export-to, --stats).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "brdf/host/preset.hpp"
+#include "film/tone_map.hpp"
+#include "viewer/render_worker.hpp"
+#include "viewer/script.hpp"
+#include "viewer/view_state.hpp"
+
+namespace lab::viewer {
+
+struct ViewerConfig {
+    RenderWorker::RendererFactory make_renderer;
+    ViewState initial;
+    int width = 256, height = 256;     // of the render; the window adds the panel beside it
+    int edited_slot = 0;               // the slot the material panel edits
+    brdf::Preset preset;               // its material as loaded: what "reset" returns to
+    std::string title;
+    int max_samples = 1 << 16;
+    double chunk_seconds = 1.0 / 30.0; // the render worker's budget per chunk
+    film::ToneMap tone_map = film::ToneMap::Aces;
+    float display_exposure = 0.0f;
+
+    // Headless automation: with frames > 0 the viewer closes itself after that many frames and
+    // once the image shows every scripted change.
+    int frames = 0;
+    std::vector<ScriptedSet> sets;
+    std::string screenshot;            // PNG of the whole window at the last frame
+    std::string save_preset;           // written on exit
+    std::string export_scene, export_name;  // written on exit
+    bool stats = false;                // print frame times, samples/s and change latency on exit
+};
+
+// Runs until the window closes (or the script ends); returns the exit status. Throws
+// lab::InputError for a scripted change or an output the viewer cannot apply or write, and
+// std::runtime_error when no window can be opened.
+int run_viewer(const ViewerConfig& config);
+
+}  // namespace lab::viewer

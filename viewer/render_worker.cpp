@@ -1,0 +1,153 @@
+#include "viewer/render_worker.hpp"
+
+#include <cstring>
+#include <exception>
+
+namespace lab::viewer {
+
+namespace {
+
+bool same_materials(const std::vector<brdf::Material>& a, const std::vector<brdf::Material>& b) {
+    // Material is plain data written once per field: comparing the bytes is comparing the fields.
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(brdf::Material)) == 0);
+}
+
+bool same_camera(const scene::Camera& a, const scene::Camera& b) {
+    return a.type == b.type && a.position == b.position && a.look_at == b.look_at && a.up == b.up && a.fov_degrees == b.fov_degrees &&
+           a.aperture_radius == b.aperture_radius && a.focus_distance == b.focus_distance;
+}
+
+}  // namespace
+
+RenderWorker::RenderWorker(RendererFactory factory, const ViewState& initial, double chunk_seconds, int max_samples)
+    : factory_(std::move(factory)), chunk_seconds_(chunk_seconds), max_samples_(max_samples), pending_(initial) {
+    thread_ = std::thread([this] { run(); });
+}
+
+RenderWorker::~RenderWorker() {
+    stop_.store(true);
+    wake_.notify_all();
+    thread_.join();  // waits for at most one chunk
+}
+
+uint64_t RenderWorker::submit(const ViewState& state) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pending_ = state;
+    ++pending_generation_;
+    wake_.notify_all();
+    return pending_generation_;
+}
+
+bool RenderWorker::take_frame(RenderFrame* out) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (published_.sequence <= out->sequence) return false;
+    *out = published_;
+    return true;
+}
+
+std::string RenderWorker::status() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return status_;
+}
+
+std::string RenderWorker::error() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return error_;
+}
+
+std::string RenderWorker::device_description() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return device_;
+}
+
+// Only what differs from the state already applied is set: each setter resets the film, and a
+// material with new BRDF features rebuilds the kernel.
+void RenderWorker::apply(render::Renderer& renderer, const ViewState& s, const ViewState* applied) {
+    if (!applied || !same_materials(s.materials, applied->materials)) renderer.set_materials(s.materials);
+    if (!applied || !same_camera(s.camera, applied->camera)) renderer.set_camera(s.camera);
+    if (!applied || s.env_rotation_degrees != applied->env_rotation_degrees || s.env_exposure_stops != applied->env_exposure_stops)
+        renderer.set_environment_transform(s.env_rotation_degrees, s.env_exposure_stops);
+    if (!applied || s.show_background != applied->show_background) renderer.set_show_background(s.show_background);
+    renderer.reset();  // a state equal to the applied one still restarts: the user asked for it
+}
+
+void RenderWorker::run() {
+    std::unique_ptr<render::Renderer> renderer;
+    try {
+        renderer = factory_();
+    } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        status_ = "no renderer";
+        error_ = e.what();
+        return;
+    }
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        device_ = renderer->device_description();
+        status_ = "rendering on " + device_;
+    }
+    ready_.store(true);
+    renderer->set_samples_per_launch(1);  // small launches keep a chunk close to its budget
+
+    ViewState good;              // the last state the renderer accepted
+    bool have_good = false;
+    uint64_t generation = 0, sequence = 0;
+    while (!stop_.load()) {
+        ViewState next;
+        uint64_t next_generation = 0;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            // Rendered out: sleep until something changes.
+            if (generation == pending_generation_ && renderer->statistics().samples_per_pixel >= max_samples_)
+                wake_.wait(lock, [&] { return stop_.load() || generation != pending_generation_; });
+            if (stop_.load()) break;
+            if (generation != pending_generation_) {
+                next = pending_;
+                next_generation = pending_generation_;
+            }
+        }
+        if (next_generation != 0) {
+            try {
+                apply(*renderer, next, have_good ? &good : nullptr);
+                good = next;
+                have_good = true;
+                std::lock_guard<std::mutex> lock(mutex_);
+                error_.clear();
+            } catch (const std::exception& e) {
+                // Keep what was shown: back to the last good state (or stop, when there is none).
+                std::lock_guard<std::mutex> lock(mutex_);
+                error_ = e.what();
+                if (!have_good) {
+                    status_ = "no renderer";
+                    return;
+                }
+                try {
+                    apply(*renderer, good, nullptr);
+                } catch (const std::exception&) {
+                    status_ = "no renderer";
+                    return;
+                }
+            }
+            generation = next_generation;
+        }
+        try {
+            int left = max_samples_ - renderer->statistics().samples_per_pixel;
+            if (left > 0) renderer->add_samples(left, chunk_seconds_.load());
+        } catch (const std::exception& e) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            error_ = std::string("render failed: ") + e.what();
+            status_ = "stopped";
+            return;
+        }
+        film::ImageRgb image = renderer->image();  // outside the lock: the interface keeps drawing
+        render::RenderStatistics stats = renderer->statistics();
+        std::lock_guard<std::mutex> lock(mutex_);
+        published_.image = std::move(image);
+        published_.samples_per_pixel = stats.samples_per_pixel;
+        published_.samples_per_second = stats.paths_per_second();
+        published_.generation = generation;
+        published_.sequence = ++sequence;
+    }
+}
+
+}  // namespace lab::viewer
