@@ -21,7 +21,7 @@ struct ViewOptions {
     RenderJobOptions job;
     std::string slot, screenshot, save_preset, export_to, tone_map = "aces";
     std::vector<std::string> sets;
-    int frames = 0, max_spp = 1 << 16;
+    int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
     bool stats = false;
@@ -36,6 +36,7 @@ int find_slot(const scene::Scene& scene, const std::string& name) {
 void run_view(const ViewOptions& o) {
     film::ToneMap tone_map = film::parse_tone_map(o.tone_map);
     if (o.frames < 0 || o.frames > 10000000) throw InputError("--frames", "", "must be in [0, 10000000]");
+    if (o.min_spp < 1 || o.min_spp > o.max_spp) throw InputError("--min-spp", "", "must be in [1, --max-spp]");
     if (o.max_spp < 1 || o.max_spp > 1 << 24) throw InputError("--max-spp", "", "must be in [1, 16777216]");
     if (!(o.chunk_ms >= 1.0 && o.chunk_ms <= 10000.0)) throw InputError("--chunk-ms", "", "must be in [1, 10000] ms");
     if (!(o.exposure >= -64.0f && o.exposure <= 64.0f)) throw InputError("--exposure", "", "must be a number of stops in [-64, 64]");
@@ -65,7 +66,7 @@ void run_view(const ViewOptions& o) {
     }
     // Every scripted change is tried once now, so a bad key or value stops before the window opens.
     brdf::Preset trial = config.preset;
-    for (const viewer::ScriptedSet& s : sets) trial = viewer::with_parameter(trial, s.key, s.value, "--set " + s.key);
+    for (const viewer::ScriptedSet& s : sets) trial = viewer::with_parameter(trial, s.key, s.value, "--set");
 
     config.width = job->input.settings.width;
     config.height = job->input.settings.height;
@@ -76,6 +77,7 @@ void run_view(const ViewOptions& o) {
     config.display_exposure = o.exposure;
     config.frames = o.frames;
     config.sets = sets;
+    config.min_samples = o.min_spp;
     config.screenshot = o.screenshot;
     config.save_preset = o.save_preset;
     config.export_scene = export_scene;
@@ -102,6 +104,7 @@ void register_view(CLI::App& app) {
     cmd->add_option("--ground", o->job.ground, "Ground plane of the test model: on or off")->capture_default_str();
     add_render_options(*cmd, &o->job);
     cmd->add_option("--frames", o->frames, "Headless: close after N frames (and once the image shows every --set)");
+    cmd->add_option("--min-spp", o->min_spp, "Headless: and once the image has at least this many samples per pixel")->capture_default_str();
     cmd->add_option("--set", o->sets, "Headless: KEY=VALUE@FRAME, a material parameter changed at a frame (repeatable)");
     cmd->add_option("--screenshot", o->screenshot, "Headless: the window as a PNG at the last frame");
     cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");

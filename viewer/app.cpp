@@ -138,7 +138,7 @@ int run_viewer(const ViewerConfig& config) {
             bool changed = false;
             for (const ScriptedSet& s : config.sets) {
                 if (s.frame != n) continue;
-                ui.preset = with_parameter(ui.preset, s.key, s.value, "--set " + s.key);
+                ui.preset = with_parameter(ui.preset, s.key, s.value, "--set");
                 ui.view.materials[size_t(config.edited_slot)] = ui.preset.material;
                 changed = true;
             }
@@ -206,8 +206,8 @@ int run_viewer(const ViewerConfig& config) {
             if (n > 0) stats.frame_seconds.push_back(seconds_between(last, now));
             last = now;
             if (headless && n + 1 >= config.frames) {
-                // Done when the image shows the last state with at least one sample.
-                const bool current = frame.generation >= submitted && frame.samples_per_pixel > 0;
+                // Done when the image shows the last state with enough samples.
+                const bool current = frame.generation >= submitted && frame.samples_per_pixel >= config.min_samples;
                 if (script_end == Clock::time_point{}) script_end = now;
                 if (current || !worker.error().empty() || worker.status() == "no renderer") {
                     if (!config.screenshot.empty()) write_screenshot(config.screenshot, fb_width, fb_height);

@@ -29,6 +29,7 @@ struct ViewerConfig {
     // Headless automation: with frames > 0 the viewer closes itself after that many frames and
     // once the image shows every scripted change.
     int frames = 0;
+    int min_samples = 1;               // ... and the image has at least this many samples per pixel
     std::vector<ScriptedSet> sets;
     std::string screenshot;            // PNG of the whole window at the last frame
     std::string save_preset;           // written on exit
