@@ -19,7 +19,7 @@ namespace {
 
 struct ViewOptions {
     RenderJobOptions job;
-    std::string slot, screenshot, save_preset, export_to, tone_map = "aces";
+    std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces";
     std::vector<std::string> sets;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
@@ -64,6 +64,7 @@ void run_view(const ViewOptions& o) {
         config.initial.env_rotation_degrees = job->input.environment->rotation_degrees();
         config.initial.env_exposure_stops = job->input.environment->exposure_stops();
     }
+    config.compare = o.compare.empty() ? config.preset : brdf::load_preset(o.compare);
     // Every scripted change is tried once now, so a bad key or value stops before the window opens.
     brdf::Preset trial = config.preset;
     for (const viewer::ScriptedSet& s : sets) trial = viewer::with_parameter(trial, s.key, s.value, "--set");
@@ -100,6 +101,7 @@ void register_view(CLI::App& app) {
     auto* cmd = app.add_subcommand("view", "Live viewer: tune a material on the test model (or a scene) under an environment");
     cmd->add_option("scene", o->job.scene, "Scene file (docs/scenes.md); default: the built-in test model");
     cmd->add_option("--material", o->job.material, "Material preset for the edited slot (the scene's \"sample\")");
+    cmd->add_option("--compare", o->compare, "Material B of the lobe panel's A/B overlay (default: the edited material as loaded)");
     cmd->add_option("--slot", o->slot, "The scene material the panel edits (default: \"sample\", else the first)");
     cmd->add_option("--ground", o->job.ground, "Ground plane of the test model: on or off")->capture_default_str();
     add_render_options(*cmd, &o->job);

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <thread>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -12,9 +13,11 @@
 #include "common/input_error.hpp"
 #include "viewer/frame_stats.hpp"
 #include "viewer/gl_image.hpp"
+#include "viewer/lobe_panel.hpp"
 #include "viewer/material_edit.hpp"
 #include "viewer/material_panel.hpp"
 #include "viewer/scene_export.hpp"
+#include "viewer/validation_badges.hpp"
 
 namespace lab::viewer {
 
@@ -125,6 +128,10 @@ int run_viewer(const ViewerConfig& config) {
 
     int exit_status = 0;
     FrameStats stats;
+    LobePanel lobes;
+    ValidationBadges checks;
+    lobes.set_materials(ui.preset, config.compare);
+    checks.set_material(ui.preset);
     {
         GlTexture texture;
         RenderWorker worker(config.make_renderer, ui.view, config.chunk_seconds, config.max_samples);
@@ -145,6 +152,8 @@ int run_viewer(const ViewerConfig& config) {
             if (changed) {
                 submitted = worker.submit(ui.view);
                 waiting.emplace_back(submitted, Clock::now());
+                lobes.set_materials(ui.preset, config.compare);
+                checks.set_material(ui.preset);
                 changed = false;
             }
             if (worker.take_frame(&frame) || retone) {
@@ -185,9 +194,13 @@ int run_viewer(const ViewerConfig& config) {
             if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
                 if (material_panel(&ui.preset.material, config.preset.material)) {
                     ui.view.materials[size_t(config.edited_slot)] = ui.preset.material;
+                    lobes.set_materials(ui.preset, config.compare);
+                    checks.set_material(ui.preset);
                     changed = true;
                 }
             }
+            if (ImGui::CollapsingHeader("Checks", ImGuiTreeNodeFlags_DefaultOpen)) checks.draw();
+            if (ImGui::CollapsingHeader("Lobe")) lobes.draw();
             if (ImGui::CollapsingHeader("Environment")) environment_panel(&ui, &changed, &retone);
             if (ImGui::CollapsingHeader("Presets")) preset_panel(&ui);
             if (ImGui::CollapsingHeader("Help")) help_panel();
@@ -228,6 +241,13 @@ int run_viewer(const ViewerConfig& config) {
         if (!error.empty()) {
             std::fprintf(stderr, "dtoadq: error: %s\n", error.c_str());
             exit_status = exit_status ? exit_status : 1;
+        }
+        if (config.stats) {
+            // The checks of the last material, waited for (a run takes about a second).
+            const Clock::time_point wait_start = Clock::now();
+            while (checks.running() && seconds_between(wait_start, Clock::now()) < kScriptTimeoutSeconds)
+                std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            std::printf("checks: %s\n", checks.summary().c_str());
         }
         if (config.stats) std::printf("%ssamples/s in the viewer: %.4g (at %d spp)\n", describe(stats).c_str(), frame.samples_per_second, frame.samples_per_pixel);
     }

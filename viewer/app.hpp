@@ -20,6 +20,7 @@ struct ViewerConfig {
     int width = 256, height = 256;     // of the render; the window adds the panel beside it
     int edited_slot = 0;               // the slot the material panel edits
     brdf::Preset preset;               // its material as loaded: what "reset" returns to
+    brdf::Preset compare;              // B of the lobe panel's A/B overlay
     std::string title;
     int max_samples = 1 << 16;
     double chunk_seconds = 1.0 / 30.0; // the render worker's budget per chunk
