@@ -1,6 +1,7 @@
 // dtoadq view: the live viewer (viewer/, docs/viewer.md). This file turns the options into a
 // render job (cli/render_job, as `preview` does), checks everything a script asks for before the
 // window opens, and hands the viewer its renderer factory.
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -20,7 +21,7 @@ namespace {
 struct ViewOptions {
     RenderJobOptions job;
     std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces";
-    std::vector<std::string> sets;
+    std::vector<std::string> sets, inspect;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
@@ -60,6 +61,7 @@ void run_view(const ViewOptions& o) {
     for (const scene::MaterialSlot& slot : scene.materials) config.initial.materials.push_back(slot.material);
     config.preset.material = config.initial.materials[size_t(config.edited_slot)];
     config.initial.camera = scene.camera;
+    config.scene = scene;
     if (job->input.environment) {
         config.initial.env_rotation_degrees = job->input.environment->rotation_degrees();
         config.initial.env_exposure_stops = job->input.environment->exposure_stops();
@@ -79,6 +81,14 @@ void run_view(const ViewOptions& o) {
     config.frames = o.frames;
     config.sets = sets;
     config.min_samples = o.min_spp;
+    for (const std::string& text : o.inspect) {
+        int x = -1, y = -1;
+        char tail = 0;
+        if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &tail) != 2 || x < 0 || y < 0 || x >= config.width || y >= config.height)
+            throw InputError("--inspect", "", "expected X,Y inside the " + std::to_string(config.width) + "x" + std::to_string(config.height) +
+                                                  " image, got \"" + text + "\"");
+        config.inspect.push_back({x, y});
+    }
     config.screenshot = o.screenshot;
     config.save_preset = o.save_preset;
     config.export_scene = export_scene;
@@ -111,6 +121,7 @@ void register_view(CLI::App& app) {
     cmd->add_option("--screenshot", o->screenshot, "Headless: the window as a PNG at the last frame");
     cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
     cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");
+    cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
     cmd->add_flag("--stats", o->stats, "Print interface frame times, samples/s and change-to-frame latency on exit");
     cmd->add_option("--max-spp", o->max_spp, "Stop accumulating at this many samples per pixel")->capture_default_str();
     cmd->add_option("--chunk-ms", o->chunk_ms, "Render time per chunk between published images, ms")->capture_default_str();

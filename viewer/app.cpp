@@ -1,6 +1,8 @@
 #include "viewer/app.hpp"
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <thread>
@@ -11,11 +13,14 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include "common/input_error.hpp"
+#include "render/camera_setup.hpp"
+#include "viewer/camera_controller.hpp"
 #include "viewer/frame_stats.hpp"
 #include "viewer/gl_image.hpp"
 #include "viewer/lobe_panel.hpp"
 #include "viewer/material_edit.hpp"
 #include "viewer/material_panel.hpp"
+#include "viewer/pixel_probe.hpp"
 #include "viewer/scene_export.hpp"
 #include "viewer/validation_badges.hpp"
 
@@ -90,8 +95,86 @@ void preset_panel(UiState* ui) {
     }
 }
 
+// Mouse over the render: orbit, pan, zoom, turn the environment, pick a pixel to inspect.
+// Returns whether the view changed.
+bool mouse_on_render(UiState* ui, int width, int height, int* picked_x, int* picked_y) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse || io.MousePos.x < 0 || io.MousePos.x >= float(width) || io.MousePos.y < 0 || io.MousePos.y >= float(height))
+        return false;
+    bool changed = false;
+    const ImVec2 d = io.MouseDelta;
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (d.x != 0.0f || d.y != 0.0f)) {
+        if (io.KeyCtrl)
+            ui->view.env_rotation_degrees = std::fmod(ui->view.env_rotation_degrees + d.x * 0.5f + 540.0f, 360.0f) - 180.0f;
+        else if (io.KeyShift)
+            pan(&ui->view.camera, d.x, d.y, width);
+        else
+            orbit(&ui->view.camera, d.x, d.y);
+        changed = true;
+    }
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f) && (d.x != 0.0f || d.y != 0.0f)) {
+        pan(&ui->view.camera, d.x, d.y, width);
+        changed = true;
+    }
+    if (io.MouseWheel != 0.0f) {
+        zoom(&ui->view.camera, io.MouseWheel);
+        changed = true;
+    }
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
+        *picked_x = int(io.MousePos.x);
+        *picked_y = int(io.MousePos.y);
+    }
+    return changed;
+}
+
+// The inspector's lines for pixel (x, y): film radiance and samples, then the probe's geometry.
+std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x,
+                                       int y) {
+    std::vector<std::string> lines;
+    char line[256];
+    std::snprintf(line, sizeof line, "pixel %d,%d", x, y);
+    lines.push_back(line);
+    if (frame.image.valid() && x >= 0 && y >= 0 && x < frame.image.width && y < frame.image.height) {
+        std::array<float, 3> L = frame.image.at(x, y);
+        std::snprintf(line, sizeof line, "radiance %.4g %.4g %.4g (%d samples)", L[0], L[1], L[2], frame.samples_per_pixel);
+        lines.push_back(line);
+    }
+    kernel::RenderKernelSettings k;
+    if (!worker.kernel_settings(&k)) return lines;
+    try {
+        kernel::Camera camera = render::make_camera(ui.view.camera, config.width, config.height, config.scene.file);
+        PixelProbe p = probe_pixel(config.scene, k, camera, x, y);
+        if (!p.hit) {
+            lines.push_back("no surface: the environment");
+            return lines;
+        }
+        std::snprintf(line, sizeof line, "depth %.4f", p.depth);
+        lines.push_back(line);
+        std::snprintf(line, sizeof line, "normal %.3f %.3f %.3f", p.normal.x, p.normal.y, p.normal.z);
+        lines.push_back(line);
+        const bool named = p.material >= 0 && size_t(p.material) < config.scene.materials.size();
+        std::snprintf(line, sizeof line, "material slot %d (%s)", p.material, named ? config.scene.materials[size_t(p.material)].name.c_str() : "?");
+        lines.push_back(line);
+    } catch (const std::exception& e) {
+        lines.push_back(e.what());
+    }
+    return lines;
+}
+
+void inspector_panel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x, int y) {
+    if (x < 0) {
+        ImGui::TextUnformatted("right-click a pixel of the render");
+        return;
+    }
+    for (const std::string& line : inspect_pixel(config, ui, frame, worker, x, y)) ImGui::TextUnformatted(line.c_str());
+}
+
 void help_panel() {
     ImGui::TextUnformatted("Esc: quit    R: restart accumulation    B: background on/off");
+    ImGui::TextUnformatted("On the render: drag to orbit, Shift+drag or middle-drag to pan,");
+    ImGui::TextUnformatted("wheel to zoom, Ctrl+drag to turn the environment,");
+    ImGui::TextUnformatted("right-click to inspect a pixel (Inspector)");
+    ImGui::TextUnformatted("Lobe panel: drag on the polar plot for theta in, on the 3D view to turn it");
     ImGui::TextUnformatted("Sliders: drag, or Ctrl+click to type; the entry box takes Enter");
     ImGui::TextUnformatted("reset: back to the preset's value");
     ImGui::TextUnformatted("Every change restarts the accumulation.");
@@ -140,6 +223,7 @@ int run_viewer(const ViewerConfig& config) {
         std::vector<std::pair<uint64_t, Clock::time_point>> waiting;  // scripted changes not yet on screen
         Clock::time_point last = Clock::now(), script_end{};
         bool retone = false;
+        int picked_x = -1, picked_y = -1;
         for (int n = 0; !glfwWindowShouldClose(window); ++n) {
             glfwPollEvents();
             bool changed = false;
@@ -183,6 +267,10 @@ int run_viewer(const ViewerConfig& config) {
                     changed = true;
                 }
             }
+            changed |= mouse_on_render(&ui, config.width, config.height, &picked_x, &picked_y);
+            if (picked_x >= 0)
+                ImGui::GetForegroundDrawList()->AddRect(ImVec2(float(picked_x) - 2, float(picked_y) - 2), ImVec2(float(picked_x) + 3, float(picked_y) + 3),
+                                                        IM_COL32(255, 255, 0, 255));
             ImGui::SetNextWindowPos(ImVec2(float(config.width), 0.0f));
             ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(window_height)));
             ImGui::Begin("dtoadq view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
@@ -203,6 +291,7 @@ int run_viewer(const ViewerConfig& config) {
             if (ImGui::CollapsingHeader("Lobe")) lobes.draw();
             if (ImGui::CollapsingHeader("Environment")) environment_panel(&ui, &changed, &retone);
             if (ImGui::CollapsingHeader("Presets")) preset_panel(&ui);
+            if (ImGui::CollapsingHeader("Inspector")) inspector_panel(config, ui, frame, worker, picked_x, picked_y);
             if (ImGui::CollapsingHeader("Help")) help_panel();
             ImGui::End();
             if (changed) submitted = worker.submit(ui.view);  // shows from the worker's next chunk
@@ -227,6 +316,11 @@ int run_viewer(const ViewerConfig& config) {
                     glfwSwapBuffers(window);
                     std::printf("view: %d frames, %d spp, %.3g samples/s on %s\n", n + 1, frame.samples_per_pixel, frame.samples_per_second,
                                 worker.device_description().c_str());
+                    for (const std::array<int, 2>& px : config.inspect) {
+                        std::string joined;
+                        for (const std::string& l : inspect_pixel(config, ui, frame, worker, px[0], px[1])) joined += (joined.empty() ? "" : "; ") + l;
+                        std::printf("inspect: %s\n", joined.c_str());
+                    }
                     break;
                 }
                 if (seconds_between(script_end, now) > kScriptTimeoutSeconds) {

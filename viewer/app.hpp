@@ -3,6 +3,7 @@
 // automation (--frames, --set, --screenshot, --save-preset, --export-to, --stats).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ namespace lab::viewer {
 struct ViewerConfig {
     RenderWorker::RendererFactory make_renderer;
     ViewState initial;
+    scene::Scene scene;                // as the renderer has it: for the pixel inspector's rays
     int width = 256, height = 256;     // of the render; the window adds the panel beside it
     int edited_slot = 0;               // the slot the material panel edits
     brdf::Preset preset;               // its material as loaded: what "reset" returns to
@@ -35,6 +37,7 @@ struct ViewerConfig {
     std::string screenshot;            // PNG of the whole window at the last frame
     std::string save_preset;           // written on exit
     std::string export_scene, export_name;  // written on exit
+    std::vector<std::array<int, 2>> inspect;  // pixels whose inspector lines are printed at the end
     bool stats = false;                // print frame times, samples/s and change latency on exit
 };
 

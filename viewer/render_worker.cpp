@@ -55,6 +55,13 @@ std::string RenderWorker::error() const {
     return error_;
 }
 
+bool RenderWorker::kernel_settings(kernel::RenderKernelSettings* out) const {
+    if (!ready_.load()) return false;
+    std::lock_guard<std::mutex> lock(mutex_);
+    *out = kernel_settings_;
+    return true;
+}
+
 std::string RenderWorker::device_description() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return device_;
@@ -84,6 +91,7 @@ void RenderWorker::run() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         device_ = renderer->device_description();
+        kernel_settings_ = renderer->kernel_settings(0, 1);
         status_ = "rendering on " + device_;
     }
     ready_.store(true);

@@ -50,6 +50,8 @@ public:
     bool ready() const { return ready_.load(); }
     std::string device_description() const;
     void set_chunk_seconds(double s) { chunk_seconds_.store(s); }
+    // The renderer's launch settings (for the pixel inspector's rays); false before it is made.
+    bool kernel_settings(kernel::RenderKernelSettings* out) const;
 
 private:
     void run();
@@ -66,6 +68,7 @@ private:
     uint64_t pending_generation_ = 1;
     RenderFrame published_;
     std::string status_ = "building kernel", error_, device_;
+    kernel::RenderKernelSettings kernel_settings_{};
     std::thread thread_;
 };
 

@@ -62,7 +62,12 @@ def mean(image, region):
 
 
 def case_accumulate():
-    out = view(["--seed", "1"], "a.png")
+    out = view(["--seed", "1", "--inspect", "32,32", "--inspect", "2,2"], "a.png")
+    # The pixel inspector: the centre pixel's ray meets the model's slot, a corner's none.
+    if not re.search(r"inspect: pixel 32,32; radiance .*; depth [0-9.]+; normal .*; material slot 0 \(sample\)", out):
+        fail("the inspector did not find the model at the centre: " + out)
+    if not re.search(r"inspect: pixel 2,2; radiance 0.2 0.4 1 .*; no surface: the environment", out):
+        fail("the inspector did not find the environment in the corner: " + out)
     m = re.search(r"view: (\d+) frames, (\d+) spp", out)
     if not m or int(m.group(2)) < 2:
         fail("no samples accumulated: " + out)
