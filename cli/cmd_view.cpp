@@ -3,6 +3,7 @@
 // window opens, and hands the viewer its renderer factory.
 #include <cstdio>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 #include "brdf/host/preset.hpp"
@@ -25,7 +26,7 @@ struct ViewOptions {
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
-    bool stats = false;
+    bool stats = false, split = false;
 };
 
 int find_slot(const scene::Scene& scene, const std::string& name) {
@@ -94,10 +95,35 @@ void run_view(const ViewOptions& o) {
     config.export_scene = export_scene;
     config.export_name = export_name;
     config.stats = o.stats;
+    config.split = o.split;
+    // Renderers are made on render workers' threads (the kernel build never holds up the window),
+    // each with an OpenCL runtime of its own, kept until the viewer ends (the split view and a new
+    // map run a second renderer beside the first).
+    struct Runtimes {
+        std::mutex mutex;
+        std::vector<std::unique_ptr<std::optional<opencl::Runtime>>> list;
+        // One at a time: PoCL's first platform query is not safe from two threads at once.
+        std::unique_ptr<render::Renderer> make(const RenderJob& job, const std::string& device) {
+            std::lock_guard<std::mutex> lock(mutex);
+            auto runtime = std::make_unique<std::optional<opencl::Runtime>>();
+            std::unique_ptr<render::Renderer> renderer = make_renderer(job, device, runtime.get());
+            list.push_back(std::move(runtime));
+            return renderer;
+        }
+    };
+    auto runtimes = std::make_shared<Runtimes>();
     const std::string device = o.job.device;
-    // Made on the render worker's thread: the kernel build never holds up the window.
-    auto runtime = std::make_shared<std::optional<opencl::Runtime>>();
-    config.make_renderer = [job, device, runtime] { return make_renderer(*job, device, runtime.get()); };
+    config.make_renderer = [job, device, runtimes] { return runtimes->make(*job, device); };
+    const RenderJobOptions job_options = o.job;
+    config.factory_for_env = [job_options, device, runtimes](const std::string& env) -> viewer::RenderWorker::RendererFactory {
+        return [job_options, env, device, runtimes] {
+            RenderJobOptions with_env = job_options;
+            with_env.env = env;
+            with_env.env_rotation = with_env.env_exposure = 0.0f;  // the viewer's own values are applied next
+            RenderJob job = prepare_render_job(with_env);        // throws for a missing or bad map
+            return runtimes->make(job, device);
+        };
+    };
     int status = viewer::run_viewer(config);
     if (status != 0) throw CLI::RuntimeError(status);
 }
@@ -122,6 +148,7 @@ void register_view(CLI::App& app) {
     cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
     cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");
     cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
+    cmd->add_flag("--split", o->split, "Start in the A/B split view (B: --compare)");
     cmd->add_flag("--stats", o->stats, "Print interface frame times, samples/s and change-to-frame latency on exit");
     cmd->add_option("--max-spp", o->max_spp, "Stop accumulating at this many samples per pixel")->capture_default_str();
     cmd->add_option("--chunk-ms", o->chunk_ms, "Render time per chunk between published images, ms")->capture_default_str();

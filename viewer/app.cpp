@@ -1,6 +1,7 @@
 #include "viewer/app.hpp"
 
 #include <array>
+#include <memory>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include "render/camera_setup.hpp"
 #include "viewer/camera_controller.hpp"
 #include "viewer/frame_stats.hpp"
+#include "viewer/panels.hpp"
 #include "viewer/gl_image.hpp"
 #include "viewer/lobe_panel.hpp"
 #include "viewer/material_edit.hpp"
@@ -49,137 +51,6 @@ struct GlfwSession {
     ~GlfwSession() { glfwTerminate(); }
 };
 
-// Everything the interface edits, and what it last handed to the render worker.
-struct UiState {
-    ViewState view;
-    brdf::Preset preset;  // the edited material (preset.material mirrors view.materials[slot])
-    film::ToneMap tone_map = film::ToneMap::Aces;
-    float display_exposure = 0.0f;
-    char preset_path[512] = "material.json";
-    char export_target[512] = "scene.json:material";
-    std::string message;  // the last error or confirmation, shown in the panel
-};
-
-void environment_panel(UiState* ui, bool* changed, bool* retone) {
-    *changed |= ImGui::SliderFloat("rotation", &ui->view.env_rotation_degrees, -180.0f, 180.0f, "%.1f deg");
-    *changed |= ImGui::SliderFloat("light (stops)", &ui->view.env_exposure_stops, -8.0f, 8.0f, "%.2f");
-    *changed |= ImGui::Checkbox("background", &ui->view.show_background);
-    int tone = int(ui->tone_map);
-    if (ImGui::Combo("tone map", &tone, "aces\0reinhard\0clamp\0")) {
-        ui->tone_map = film::ToneMap(tone);
-        *retone = true;
-    }
-    *retone |= ImGui::SliderFloat("display exposure", &ui->display_exposure, -8.0f, 8.0f, "%.2f");
-}
-
-void preset_panel(UiState* ui) {
-    ImGui::InputText("preset file", ui->preset_path, sizeof ui->preset_path);
-    if (ImGui::Button("save preset")) {
-        try {
-            brdf::save_preset(ui->preset, ui->preset_path);
-            ui->message = std::string("saved ") + ui->preset_path;
-        } catch (const std::exception& e) {
-            ui->message = e.what();
-        }
-    }
-    ImGui::InputText("scene:name", ui->export_target, sizeof ui->export_target);
-    if (ImGui::Button("export to scene")) {
-        try {
-            std::string file, name;
-            parse_export_target(ui->export_target, &file, &name);
-            export_to_scene(ui->preset, file, name);
-            ui->message = "exported " + name + " into " + file;
-        } catch (const std::exception& e) {
-            ui->message = e.what();  // the scene file is untouched
-        }
-    }
-}
-
-// Mouse over the render: orbit, pan, zoom, turn the environment, pick a pixel to inspect.
-// Returns whether the view changed.
-bool mouse_on_render(UiState* ui, int width, int height, int* picked_x, int* picked_y) {
-    ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureMouse || io.MousePos.x < 0 || io.MousePos.x >= float(width) || io.MousePos.y < 0 || io.MousePos.y >= float(height))
-        return false;
-    bool changed = false;
-    const ImVec2 d = io.MouseDelta;
-    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (d.x != 0.0f || d.y != 0.0f)) {
-        if (io.KeyCtrl)
-            ui->view.env_rotation_degrees = std::fmod(ui->view.env_rotation_degrees + d.x * 0.5f + 540.0f, 360.0f) - 180.0f;
-        else if (io.KeyShift)
-            pan(&ui->view.camera, d.x, d.y, width);
-        else
-            orbit(&ui->view.camera, d.x, d.y);
-        changed = true;
-    }
-    if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f) && (d.x != 0.0f || d.y != 0.0f)) {
-        pan(&ui->view.camera, d.x, d.y, width);
-        changed = true;
-    }
-    if (io.MouseWheel != 0.0f) {
-        zoom(&ui->view.camera, io.MouseWheel);
-        changed = true;
-    }
-    if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
-        *picked_x = int(io.MousePos.x);
-        *picked_y = int(io.MousePos.y);
-    }
-    return changed;
-}
-
-// The inspector's lines for pixel (x, y): film radiance and samples, then the probe's geometry.
-std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x,
-                                       int y) {
-    std::vector<std::string> lines;
-    char line[256];
-    std::snprintf(line, sizeof line, "pixel %d,%d", x, y);
-    lines.push_back(line);
-    if (frame.image.valid() && x >= 0 && y >= 0 && x < frame.image.width && y < frame.image.height) {
-        std::array<float, 3> L = frame.image.at(x, y);
-        std::snprintf(line, sizeof line, "radiance %.4g %.4g %.4g (%d samples)", L[0], L[1], L[2], frame.samples_per_pixel);
-        lines.push_back(line);
-    }
-    kernel::RenderKernelSettings k;
-    if (!worker.kernel_settings(&k)) return lines;
-    try {
-        kernel::Camera camera = render::make_camera(ui.view.camera, config.width, config.height, config.scene.file);
-        PixelProbe p = probe_pixel(config.scene, k, camera, x, y);
-        if (!p.hit) {
-            lines.push_back("no surface: the environment");
-            return lines;
-        }
-        std::snprintf(line, sizeof line, "depth %.4f", p.depth);
-        lines.push_back(line);
-        std::snprintf(line, sizeof line, "normal %.3f %.3f %.3f", p.normal.x, p.normal.y, p.normal.z);
-        lines.push_back(line);
-        const bool named = p.material >= 0 && size_t(p.material) < config.scene.materials.size();
-        std::snprintf(line, sizeof line, "material slot %d (%s)", p.material, named ? config.scene.materials[size_t(p.material)].name.c_str() : "?");
-        lines.push_back(line);
-    } catch (const std::exception& e) {
-        lines.push_back(e.what());
-    }
-    return lines;
-}
-
-void inspector_panel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x, int y) {
-    if (x < 0) {
-        ImGui::TextUnformatted("right-click a pixel of the render");
-        return;
-    }
-    for (const std::string& line : inspect_pixel(config, ui, frame, worker, x, y)) ImGui::TextUnformatted(line.c_str());
-}
-
-void help_panel() {
-    ImGui::TextUnformatted("Esc: quit    R: restart accumulation    B: background on/off");
-    ImGui::TextUnformatted("On the render: drag to orbit, Shift+drag or middle-drag to pan,");
-    ImGui::TextUnformatted("wheel to zoom, Ctrl+drag to turn the environment,");
-    ImGui::TextUnformatted("right-click to inspect a pixel (Inspector)");
-    ImGui::TextUnformatted("Lobe panel: drag on the polar plot for theta in, on the 3D view to turn it");
-    ImGui::TextUnformatted("Sliders: drag, or Ctrl+click to type; the entry box takes Enter");
-    ImGui::TextUnformatted("reset: back to the preset's value");
-    ImGui::TextUnformatted("Every change restarts the accumulation.");
-}
-
 }  // namespace
 
 int run_viewer(const ViewerConfig& config) {
@@ -208,6 +79,7 @@ int run_viewer(const ViewerConfig& config) {
     ui.preset.material = ui.view.materials.at(size_t(config.edited_slot));
     ui.tone_map = config.tone_map;
     ui.display_exposure = config.display_exposure;
+    ui.split = config.split;
 
     int exit_status = 0;
     FrameStats stats;
@@ -217,7 +89,17 @@ int run_viewer(const ViewerConfig& config) {
     checks.set_material(ui.preset);
     {
         GlTexture texture;
-        RenderWorker worker(config.make_renderer, ui.view, config.chunk_seconds, config.max_samples);
+        RenderWorker::RendererFactory factory = config.make_renderer;
+        auto worker = std::make_unique<RenderWorker>(factory, ui.view, config.chunk_seconds, config.max_samples);
+        std::unique_ptr<RenderWorker> next_worker, worker_b;  // a new map being loaded; B of the split view
+        RenderWorker::RendererFactory next_factory;
+        GlTexture texture_b;
+        RenderFrame frame_b;
+        auto state_b = [&] {
+            ViewState b = ui.view;
+            b.materials[size_t(config.edited_slot)] = config.compare.material;
+            return b;
+        };
         uint64_t submitted = 1;  // the worker's first generation is the initial state
         RenderFrame frame;
         std::vector<std::pair<uint64_t, Clock::time_point>> waiting;  // scripted changes not yet on screen
@@ -234,13 +116,35 @@ int run_viewer(const ViewerConfig& config) {
                 changed = true;
             }
             if (changed) {
-                submitted = worker.submit(ui.view);
+                submitted = worker->submit(ui.view);
                 waiting.emplace_back(submitted, Clock::now());
                 lobes.set_materials(ui.preset, config.compare);
                 checks.set_material(ui.preset);
                 changed = false;
             }
-            if (worker.take_frame(&frame) || retone) {
+            // A new map: the old renderer shows until the new one is ready; a failure keeps the old.
+            if (next_worker && next_worker->ready()) {
+                worker = std::move(next_worker);
+                factory = next_factory;
+                frame.sequence = 0;
+                if (worker_b) {
+                    worker_b = std::make_unique<RenderWorker>(factory, state_b(), config.chunk_seconds, config.max_samples);
+                    frame_b.sequence = 0;
+                }
+                submitted = worker->submit(ui.view);
+            } else if (next_worker && next_worker->status() == "no renderer") {
+                ui.message = next_worker->error();
+                next_worker.reset();
+            }
+            if (ui.split && !worker_b) {
+                worker_b = std::make_unique<RenderWorker>(factory, state_b(), config.chunk_seconds, config.max_samples);
+                frame_b = RenderFrame{};
+            } else if (!ui.split && worker_b) {
+                worker_b.reset();
+            }
+            if (worker_b && (worker_b->take_frame(&frame_b) || retone) && frame_b.image.valid())
+                texture_b.upload(film::to_srgb8(frame_b.image, ui.tone_map, ui.display_exposure), frame_b.image.width, frame_b.image.height);
+            if (worker->take_frame(&frame) || retone) {
                 if (frame.image.valid()) texture.upload(film::to_srgb8(frame.image, ui.tone_map, ui.display_exposure), frame.image.width, frame.image.height);
                 retone = false;
                 for (auto it = waiting.begin(); it != waiting.end();) {
@@ -256,9 +160,18 @@ int run_viewer(const ViewerConfig& config) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
-            if (texture.width() > 0)
-                ImGui::GetBackgroundDrawList()->AddImage(ImTextureID(intptr_t(texture.id())), ImVec2(0, 0),
-                                                         ImVec2(float(texture.width()), float(texture.height())));
+            if (texture.width() > 0) {
+                const float w = float(texture.width()), h = float(texture.height());
+                const float split = worker_b && texture_b.width() == texture.width() ? ui.split_x : 1.0f;
+                ImDrawList* back = ImGui::GetBackgroundDrawList();
+                back->AddImage(ImTextureID(intptr_t(texture.id())), ImVec2(0, 0), ImVec2(w * split, h), ImVec2(0, 0), ImVec2(split, 1));
+                if (split < 1.0f) {
+                    back->AddImage(ImTextureID(intptr_t(texture_b.id())), ImVec2(w * split, 0), ImVec2(w, h), ImVec2(split, 0), ImVec2(1, 1));
+                    back->AddLine(ImVec2(w * split, 0), ImVec2(w * split, h), IM_COL32(255, 255, 255, 200), 2.0f);
+                    back->AddText(ImVec2(4, h - 16), IM_COL32(255, 255, 255, 255), "A");
+                    back->AddText(ImVec2(w - 12, h - 16), IM_COL32(255, 255, 255, 255), "B");
+                }
+            }
             if (!ImGui::GetIO().WantCaptureKeyboard) {
                 if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) glfwSetWindowShouldClose(window, 1);
                 if (ImGui::IsKeyPressed('R')) changed = true;
@@ -275,8 +188,14 @@ int run_viewer(const ViewerConfig& config) {
             ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(window_height)));
             ImGui::Begin("dtoadq view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
             ImGui::Text("%d spp   %.3g samples/s", frame.samples_per_pixel, frame.samples_per_second);
-            ImGui::TextWrapped("%s", worker.status().c_str());
-            const std::string error = worker.error();
+            if (worker_b) {
+                ImGui::SameLine();
+                ImGui::Text("   B: %d spp", frame_b.samples_per_pixel);
+            }
+            ImGui::Checkbox("A/B split view (B: --compare)", &ui.split);
+            if (next_worker) ImGui::TextUnformatted("loading the environment map...");
+            ImGui::TextWrapped("%s", worker->status().c_str());
+            const std::string error = worker->error();
             if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error.c_str());
             if (!ui.message.empty()) ImGui::TextWrapped("%s", ui.message.c_str());
             if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -289,12 +208,21 @@ int run_viewer(const ViewerConfig& config) {
             }
             if (ImGui::CollapsingHeader("Checks", ImGuiTreeNodeFlags_DefaultOpen)) checks.draw();
             if (ImGui::CollapsingHeader("Lobe")) lobes.draw();
-            if (ImGui::CollapsingHeader("Environment")) environment_panel(&ui, &changed, &retone);
+            std::string load_env;
+            if (ImGui::CollapsingHeader("Environment")) environment_panel(&ui, &changed, &retone, &load_env);
+            if (!load_env.empty() && config.factory_for_env) {
+                next_factory = config.factory_for_env(load_env);
+                next_worker = std::make_unique<RenderWorker>(next_factory, ui.view, config.chunk_seconds, config.max_samples);
+                ui.message.clear();
+            }
             if (ImGui::CollapsingHeader("Presets")) preset_panel(&ui);
-            if (ImGui::CollapsingHeader("Inspector")) inspector_panel(config, ui, frame, worker, picked_x, picked_y);
+            if (ImGui::CollapsingHeader("Inspector")) inspector_panel(config, ui, frame, *worker, picked_x, picked_y);
             if (ImGui::CollapsingHeader("Help")) help_panel();
             ImGui::End();
-            if (changed) submitted = worker.submit(ui.view);  // shows from the worker's next chunk
+            if (changed) {
+                submitted = worker->submit(ui.view);  // shows from the worker's next chunk
+                if (worker_b) worker_b->submit(state_b());
+            }
 
             ImGui::Render();
             int fb_width = 0, fb_height = 0;
@@ -309,16 +237,17 @@ int run_viewer(const ViewerConfig& config) {
             last = now;
             if (headless && n + 1 >= config.frames) {
                 // Done when the image shows the last state with enough samples.
-                const bool current = frame.generation >= submitted && frame.samples_per_pixel >= config.min_samples;
+                const bool current = frame.generation >= submitted && frame.samples_per_pixel >= config.min_samples &&
+                                     (!worker_b || frame_b.samples_per_pixel >= config.min_samples) && !next_worker;
                 if (script_end == Clock::time_point{}) script_end = now;
-                if (current || !worker.error().empty() || worker.status() == "no renderer") {
+                if (current || !worker->error().empty() || worker->status() == "no renderer") {
                     if (!config.screenshot.empty()) write_screenshot(config.screenshot, fb_width, fb_height);
                     glfwSwapBuffers(window);
                     std::printf("view: %d frames, %d spp, %.3g samples/s on %s\n", n + 1, frame.samples_per_pixel, frame.samples_per_second,
-                                worker.device_description().c_str());
+                                worker->device_description().c_str());
                     for (const std::array<int, 2>& px : config.inspect) {
                         std::string joined;
-                        for (const std::string& l : inspect_pixel(config, ui, frame, worker, px[0], px[1])) joined += (joined.empty() ? "" : "; ") + l;
+                        for (const std::string& l : inspect_pixel(config, ui, frame, *worker, px[0], px[1])) joined += (joined.empty() ? "" : "; ") + l;
                         std::printf("inspect: %s\n", joined.c_str());
                     }
                     break;
@@ -331,7 +260,7 @@ int run_viewer(const ViewerConfig& config) {
             }
             glfwSwapBuffers(window);
         }
-        const std::string error = worker.error();
+        const std::string error = worker->error();
         if (!error.empty()) {
             std::fprintf(stderr, "dtoadq: error: %s\n", error.c_str());
             exit_status = exit_status ? exit_status : 1;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,9 @@ namespace lab::viewer {
 
 struct ViewerConfig {
     RenderWorker::RendererFactory make_renderer;
+    // The factory of a renderer under another environment map (the environment panel); its errors
+    // (a missing or bad map) come from the worker that calls it.
+    std::function<RenderWorker::RendererFactory(const std::string& env)> factory_for_env;
     ViewState initial;
     scene::Scene scene;                // as the renderer has it: for the pixel inspector's rays
     int width = 256, height = 256;     // of the render; the window adds the panel beside it
@@ -31,6 +35,7 @@ struct ViewerConfig {
 
     // Headless automation: with frames > 0 the viewer closes itself after that many frames and
     // once the image shows every scripted change.
+    bool split = false;                // start in the A/B split view
     int frames = 0;
     int min_samples = 1;               // ... and the image has at least this many samples per pixel
     std::vector<ScriptedSet> sets;
