@@ -393,5 +393,6 @@ endif()
 foreach(view_case accumulate set preset export)
   add_test(NAME cli.view.${view_case}
            COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
-  set_tests_properties(cli.view.${view_case} PROPERTIES LABELS cli TIMEOUT 240 SKIP_RETURN_CODE 77)
+  # One at a time: xvfb-run -a started twice at once can pick the same display number.
+  set_tests_properties(cli.view.${view_case} PROPERTIES LABELS cli TIMEOUT 240 SKIP_RETURN_CODE 77 RESOURCE_LOCK xvfb)
 endforeach()
