@@ -187,7 +187,7 @@ int run_viewer(const ViewerConfig& config) {
             ImGui::SetNextWindowPos(ImVec2(float(config.width), 0.0f));
             ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(window_height)));
             ImGui::Begin("dtoadq view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-            ImGui::Text("%d spp   %.3g samples/s", frame.samples_per_pixel, frame.samples_per_second);
+            ImGui::Text("%d spp   %.3g samples/s%s", frame.samples_per_pixel, frame.samples_per_second, frame.scale > 1 ? "   (first pass, reduced)" : "");
             if (worker_b) {
                 ImGui::SameLine();
                 ImGui::Text("   B: %d spp", frame_b.samples_per_pixel);
@@ -237,8 +237,8 @@ int run_viewer(const ViewerConfig& config) {
             last = now;
             if (headless && n + 1 >= config.frames) {
                 // Done when the image shows the last state with enough samples.
-                const bool current = frame.generation >= submitted && frame.samples_per_pixel >= config.min_samples &&
-                                     (!worker_b || frame_b.samples_per_pixel >= config.min_samples) && !next_worker;
+                const bool current = frame.generation >= submitted && frame.scale == 1 && frame.samples_per_pixel >= config.min_samples &&
+                                     (!worker_b || (frame_b.scale == 1 && frame_b.samples_per_pixel >= config.min_samples)) && !next_worker;
                 if (script_end == Clock::time_point{}) script_end = now;
                 if (current || !worker->error().empty() || worker->status() == "no renderer") {
                     if (!config.screenshot.empty()) write_screenshot(config.screenshot, fb_width, fb_height);

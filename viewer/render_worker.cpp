@@ -1,5 +1,7 @@
 #include "viewer/render_worker.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <exception>
 
@@ -15,6 +17,30 @@ bool same_materials(const std::vector<brdf::Material>& a, const std::vector<brdf
 bool same_camera(const scene::Camera& a, const scene::Camera& b) {
     return a.type == b.type && a.position == b.position && a.look_at == b.look_at && a.up == b.up && a.fov_degrees == b.fov_degrees &&
            a.aperture_radius == b.aperture_radius && a.focus_distance == b.focus_distance;
+}
+
+// Samples per pixel of the small first pass before the full size takes over.
+constexpr int kFirstPassSamples = 4;
+constexpr int kMaxFirstPassScale = 8;
+
+// The smallest power-of-two reduction whose launch (one sample per pixel) fits in a chunk.
+int first_pass_scale(double full_launch_seconds, double chunk_seconds, int width, int height) {
+    int scale = 1;
+    while (full_launch_seconds / double(scale * scale) > chunk_seconds && scale < kMaxFirstPassScale && width / (scale * 2) >= 8 &&
+           height / (scale * 2) >= 8)
+        scale *= 2;
+    return scale;
+}
+
+// The small image at full size, each pixel repeated (nearest).
+film::ImageRgb enlarged(const film::ImageRgb& small, int width, int height) {
+    film::ImageRgb out(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float* p = small.pixel(x * small.width / width, y * small.height / height);
+            out.set(x, y, p[0], p[1], p[2]);
+        }
+    return out;
 }
 
 }  // namespace
@@ -99,6 +125,9 @@ void RenderWorker::run() {
 
     ViewState good;              // the last state the renderer accepted
     bool have_good = false;
+    const int width = renderer->settings().width, height = renderer->settings().height;
+    int scale = 1;                    // the renderer's size is 1/scale of the full one
+    double full_launch_seconds = 0.0; // one sample per pixel at full size, measured; 0: not yet
     uint64_t generation = 0, sequence = 0;
     while (!stop_.load()) {
         ViewState next;
@@ -137,10 +166,21 @@ void RenderWorker::run() {
                 }
             }
             generation = next_generation;
+            const int wanted = first_pass_scale(full_launch_seconds, chunk_seconds_.load(), width, height);
+            if (wanted != scale) {
+                renderer->resize(width / wanted, height / wanted);  // resets
+                scale = wanted;
+            }
         }
         try {
             int left = max_samples_ - renderer->statistics().samples_per_pixel;
-            if (left > 0) renderer->add_samples(left, chunk_seconds_.load());
+            if (scale > 1) left = std::min(left, std::min(kFirstPassSamples, max_samples_) - renderer->statistics().samples_per_pixel);
+            if (left > 0) {
+                const auto start = std::chrono::steady_clock::now();
+                const int added = renderer->add_samples(left, chunk_seconds_.load());
+                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                if (scale == 1 && added > 0) full_launch_seconds = seconds / double(added);
+            }
         } catch (const std::exception& e) {
             std::lock_guard<std::mutex> lock(mutex_);
             error_ = std::string("render failed: ") + e.what();
@@ -148,8 +188,20 @@ void RenderWorker::run() {
             return;
         }
         film::ImageRgb image = renderer->image();  // outside the lock: the interface keeps drawing
+        if (scale > 1) image = enlarged(image, width, height);
         render::RenderStatistics stats = renderer->statistics();
+        const int shown_scale = scale;
+        if (scale > 1 && stats.samples_per_pixel >= std::min(kFirstPassSamples, max_samples_)) {
+            try {
+                renderer->resize(width, height);  // the full size from the next chunk on
+                scale = 1;
+            } catch (const std::exception& e) {
+                std::lock_guard<std::mutex> lock(mutex_);
+                error_ = e.what();
+            }
+        }
         std::lock_guard<std::mutex> lock(mutex_);
+        published_.scale = shown_scale;
         published_.image = std::move(image);
         published_.samples_per_pixel = stats.samples_per_pixel;
         published_.samples_per_second = stats.paths_per_second();

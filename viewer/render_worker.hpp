@@ -2,7 +2,9 @@
 // host renderer's threads). The interface submits ViewStates and takes published frames; both
 // hold the worker's lock only to copy. The worker renders in chunks sized to a time budget (one
 // interface frame), publishes the image after each, and restarts accumulation when a newer state
-// arrives. A state the renderer refuses (a bad camera, a failed kernel build) is reported and the
+// arrives. Where one sample of every pixel takes longer than a chunk, a new state is first rendered
+// at a fraction of the size (a few samples, shown enlarged), then at full size: an edit shows after
+// one small launch instead of a full one. A state the renderer refuses (a bad camera, a failed kernel build) is reported and the
 // last good state is kept.
 #pragma once
 
@@ -28,6 +30,7 @@ struct RenderFrame {
     double samples_per_second = 0.0;  // paths (one per pixel and sample) per second of rendering
     uint64_t generation = 0;          // of the ViewState it shows
     uint64_t sequence = 0;            // counts publications
+    int scale = 1;                    // > 1: a first pass rendered at 1/scale of the size, shown enlarged
 };
 
 class RenderWorker {
