@@ -76,6 +76,7 @@ int run_viewer(const ViewerConfig& config) {
     UiState ui;
     ui.view = config.initial;
     ui.preset = config.preset;
+    ui.reference = config.preset;
     ui.preset.material = ui.view.materials.at(size_t(config.edited_slot));
     ui.tone_map = config.tone_map;
     ui.display_exposure = config.display_exposure;
@@ -199,7 +200,7 @@ int run_viewer(const ViewerConfig& config) {
             if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error.c_str());
             if (!ui.message.empty()) ImGui::TextWrapped("%s", ui.message.c_str());
             if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
-                if (material_panel(&ui.preset.material, config.preset.material)) {
+                if (material_panel(&ui.preset.material, ui.reference.material)) {
                     ui.view.materials[size_t(config.edited_slot)] = ui.preset.material;
                     lobes.set_materials(ui.preset, config.compare);
                     checks.set_material(ui.preset);
@@ -215,7 +216,12 @@ int run_viewer(const ViewerConfig& config) {
                 next_worker = std::make_unique<RenderWorker>(next_factory, ui.view, config.chunk_seconds, config.max_samples);
                 ui.message.clear();
             }
-            if (ImGui::CollapsingHeader("Presets")) preset_panel(&ui);
+            if (ImGui::CollapsingHeader("Presets") && preset_panel(&ui)) {
+                ui.view.materials[size_t(config.edited_slot)] = ui.preset.material;
+                lobes.set_materials(ui.preset, config.compare);
+                checks.set_material(ui.preset);
+                changed = true;
+            }
             if (ImGui::CollapsingHeader("Inspector")) inspector_panel(config, ui, frame, *worker, picked_x, picked_y);
             if (ImGui::CollapsingHeader("Help")) help_panel();
             ImGui::End();

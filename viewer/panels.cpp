@@ -43,8 +43,20 @@ void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* lo
     *retone |= ImGui::SliderFloat("display exposure", &ui->display_exposure, -8.0f, 8.0f, "%.2f");
 }
 
-void preset_panel(UiState* ui) {
+bool preset_panel(UiState* ui) {
+    bool loaded = false;
     ImGui::InputText("preset file", ui->preset_path, sizeof ui->preset_path);
+    if (ImGui::Button("load preset")) {
+        try {
+            ui->reference = brdf::load_preset(ui->preset_path);  // a bad file throws: nothing changes
+            ui->preset = ui->reference;
+            ui->message = std::string("loaded ") + ui->preset_path;
+            loaded = true;
+        } catch (const std::exception& e) {
+            ui->message = e.what();
+        }
+    }
+    ImGui::SameLine();
     if (ImGui::Button("save preset")) {
         try {
             brdf::save_preset(ui->preset, ui->preset_path);
@@ -64,6 +76,7 @@ void preset_panel(UiState* ui) {
             ui->message = e.what();  // the scene file is untouched
         }
     }
+    return loaded;
 }
 
 // Mouse over the render: orbit, pan, zoom, turn the environment, pick a pixel to inspect.

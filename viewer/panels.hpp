@@ -17,6 +17,7 @@ namespace lab::viewer {
 // Everything the interface edits, and what it last handed to the render worker.
 struct UiState {
     ViewState view;
+    brdf::Preset reference;  // what "reset" returns to: the preset as loaded
     brdf::Preset preset;  // the edited material (preset.material mirrors view.materials[slot])
     film::ToneMap tone_map = film::ToneMap::Aces;
     float display_exposure = 0.0f;
@@ -31,7 +32,9 @@ struct UiState {
 // Environment: rotation, light exposure, background, tone map, display exposure; a map from
 // envmaps/ or a path (*load_env gets it: the window swaps renderers once the new one is ready).
 void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* load_env);
-void preset_panel(UiState* ui);
+// Load (a bad file leaves everything as it was and says why), save, export to scene; returns
+// whether a preset was loaded (it is then both ui->preset and ui->reference).
+bool preset_panel(UiState* ui);
 // Mouse over the render: orbit, pan, zoom, Ctrl+drag turns the environment, a drag near the A/B
 // divider moves it, right-click picks a pixel. Returns whether the view changed.
 bool mouse_on_render(UiState* ui, int width, int height, int* picked_x, int* picked_y);
