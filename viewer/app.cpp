@@ -1,5 +1,6 @@
 #include "viewer/app.hpp"
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <chrono>
@@ -82,6 +83,9 @@ int run_viewer(const ViewerConfig& config) {
     ui.display_exposure = config.display_exposure;
     ui.split = config.split;
 
+    // A scripted run lasts at least until its last --set has been applied.
+    int last_frame = config.frames;
+    for (const ScriptedSet& s : config.sets) last_frame = std::max(last_frame, s.frame + 1);
     int exit_status = 0;
     FrameStats stats;
     LobePanel lobes;
@@ -241,7 +245,7 @@ int run_viewer(const ViewerConfig& config) {
             const Clock::time_point now = Clock::now();
             if (n > 0) stats.frame_seconds.push_back(seconds_between(last, now));
             last = now;
-            if (headless && n + 1 >= config.frames) {
+            if (headless && n + 1 >= last_frame) {
                 // Done when the image shows the last state with enough samples.
                 const bool current = frame.generation >= submitted && frame.scale == 1 && frame.samples_per_pixel >= config.min_samples &&
                                      (!worker_b || (frame_b.scale == 1 && frame_b.samples_per_pixel >= config.min_samples)) && !next_worker;
