@@ -22,7 +22,7 @@ namespace {
 struct ViewOptions {
     RenderJobOptions job;
     std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces";
-    std::vector<std::string> sets, inspect;
+    std::vector<std::string> sets, inspect, env_loads;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
@@ -82,6 +82,11 @@ void run_view(const ViewOptions& o) {
     config.frames = o.frames;
     config.sets = sets;
     config.min_samples = o.min_spp;
+    for (const std::string& text : o.env_loads) {
+        viewer::ScriptedSet load = viewer::parse_scripted_set("env=" + text);  // PATH@FRAME
+        if (o.frames == 0) throw InputError("--load-env", "", "needs --frames (a scripted run)");
+        config.env_loads.push_back(load);
+    }
     for (const std::string& text : o.inspect) {
         int x = -1, y = -1;
         char tail = 0;
@@ -147,6 +152,7 @@ void register_view(CLI::App& app) {
     cmd->add_option("--screenshot", o->screenshot, "Headless: the window as a PNG at the last frame");
     cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
     cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");
+    cmd->add_option("--load-env", o->env_loads, "Headless: PATH@FRAME, load an environment map at a frame as the panel does (errors are shown, not fatal)");
     cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
     cmd->add_flag("--split", o->split, "Start in the A/B split view (B: --compare)");
     cmd->add_flag("--stats", o->stats, "Print interface frame times, samples/s and change-to-frame latency on exit");

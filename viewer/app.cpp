@@ -86,6 +86,7 @@ int run_viewer(const ViewerConfig& config) {
     // A scripted run lasts at least until its last --set has been applied.
     int last_frame = config.frames;
     for (const ScriptedSet& s : config.sets) last_frame = std::max(last_frame, s.frame + 1);
+    for (const ScriptedSet& s : config.env_loads) last_frame = std::max(last_frame, s.frame + 1);
     int exit_status = 0;
     FrameStats stats;
     LobePanel lobes;
@@ -215,6 +216,8 @@ int run_viewer(const ViewerConfig& config) {
             if (ImGui::CollapsingHeader("Lobe")) lobes.draw();
             std::string load_env;
             if (ImGui::CollapsingHeader("Environment")) environment_panel(&ui, &changed, &retone, &load_env);
+            for (const ScriptedSet& s : config.env_loads)
+                if (s.frame == n) load_env = s.value;
             if (!load_env.empty() && config.factory_for_env) {
                 next_factory = config.factory_for_env(load_env);
                 next_worker = std::make_unique<RenderWorker>(next_factory, ui.view, config.chunk_seconds, config.max_samples);
@@ -255,6 +258,7 @@ int run_viewer(const ViewerConfig& config) {
                     glfwSwapBuffers(window);
                     std::printf("view: %d frames, %d spp, %.3g samples/s on %s\n", n + 1, frame.samples_per_pixel, frame.samples_per_second,
                                 worker->device_description().c_str());
+                    if (!ui.message.empty()) std::printf("view: message: %s\n", ui.message.c_str());
                     for (const std::array<int, 2>& px : config.inspect) {
                         std::string joined;
                         for (const std::string& l : inspect_pixel(config, ui, frame, *worker, px[0], px[1])) joined += (joined.empty() ? "" : "; ") + l;

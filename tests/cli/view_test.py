@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """End-to-end test of `dtoadq view` under a display (Xvfb with Mesa's software OpenGL when there is
 no DISPLAY): the window opens and samples accumulate, the screenshot shows the model on the backdrop,
-a scripted --set changes the model and not the backdrop, a saved preset loads back identical, and
---export-to writes a scene that `dtoadq render` renders with the material, the rest unchanged.
+a scripted --set changes the model and not the backdrop, a saved preset loads back identical,
+--export-to writes a scene that `dtoadq render` renders with the material, the rest unchanged, and a
+map loaded in the window replaces the environment, or, when missing, leaves it and shows the error.
 
 usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
 """
@@ -134,7 +135,23 @@ def case_export():
     print("export: rest of the scene unchanged; render centre %s" % centre.round(1))
 
 
-CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export}
+def case_env():
+    source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+    base = ["--inspect", "2,2", "--load-env"]
+    # A missing map: its one-line error in the window, the old environment still rendered.
+    out = view(base + ["absent.exr@1"], "badmap.png")
+    if "view: message: absent.exr: no such file" not in out:
+        fail("no error for a missing map: " + out)
+    if not re.search(r"inspect: pixel 2,2; radiance 0.2 0.4 1 ", out):
+        fail("a missing map did not keep the last good environment: " + out)
+    # A real map replaces the constant one.
+    out = view(base + [os.path.join(source, "envmaps", "studio.exr") + "@1"], "goodmap.png")
+    if "message" in out or re.search(r"inspect: pixel 2,2; radiance 0.2 0.4 1 ", out) or "no surface: the environment" not in out:
+        fail("the map was not loaded: " + out)
+    print("env: a missing map keeps the old one and says why; a good one replaces it")
+
+
+CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env}
 
 if __name__ == "__main__":
     if not os.environ.get("DISPLAY"):
