@@ -34,7 +34,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
-constexpr int kPanelWidth = 400;
+constexpr int kPanelWidth = 440;
 constexpr int kMinWindowHeight = 560;
 // Headless runs give up waiting for the image to show their last change after this long.
 constexpr double kScriptTimeoutSeconds = 120.0;
