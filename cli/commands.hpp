@@ -15,6 +15,7 @@ void register_devices(CLI::App& app);
 void register_preview(CLI::App& app);
 void register_render(CLI::App& app);
 void register_merge(CLI::App& app);
+void register_view(CLI::App& app);
 // `bench preview`, registered under the bench group by register_bench
 void register_bench_preview(CLI::App& bench);
 // `bench render`, likewise

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     lab::cli::register_preview(app);
     lab::cli::register_render(app);
     lab::cli::register_merge(app);
+    lab::cli::register_view(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {

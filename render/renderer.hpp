@@ -100,6 +100,9 @@ public:
     // finite is NaN, so it shows (magenta in a PNG).
     film::ImageRgb image() const;
     RenderStatistics statistics() const;
+    // What a launch of `count` samples from `first_sample` is given; public for host-side tools that
+    // trace the same rays (the viewer's pixel inspector).
+    kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
 
 protected:
     explicit Renderer(RenderInput input);
@@ -119,7 +122,6 @@ protected:
     virtual void write_film(const FilmReadback& film) = 0;
     virtual void read_ray_counts(uint64_t* rays, uint64_t* lost) const = 0;
 
-    kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
     scene::CompileOptions compile_options() const;
     // The environment the kernels bind: the input's, or a black one when there is none (the kernels
     // take its map and buffers either way; without an environment light nothing reads them).

@@ -30,7 +30,9 @@ MaterialValidation validate_material(const brdf::Preset& preset, const Validatio
     if (transmits(m))
         for (float t : kThetas) thetas.push_back(180.0f - t);
     v.chi_square_tests = int(thetas.size());
+    auto stop = [&] { return v.cancelled = options.cancelled && options.cancelled(); };
     for (size_t i = 0; i < thetas.size(); ++i) {
+        if (stop()) return v;
         ChiSquareOptions c;
         c.samples = options.chi_square_samples;
         c.significance = options.significance;
@@ -51,8 +53,10 @@ MaterialValidation validate_material(const brdf::Preset& preset, const Validatio
         }
     }
 
+    if (stop()) return v;
     v.reciprocity_error = reciprocity_error(m, options.reciprocity_pairs, options.seed).max_relative_error;
     v.reciprocity_tolerance = options.reciprocity_tolerance;
+    if (stop()) return v;
     v.albedo = max_directional_albedo(m, options.furnace);
     v.albedo_limit = options.furnace.limit;
     return v;

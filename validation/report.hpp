@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ struct ValidationOptions {
     FurnaceOptions furnace;               // its `limit` is the albedo allowed above 1
     int threads = 2;
     uint64_t seed = 1;
+    // Asked between checks (and between chi-square directions): true stops the run early, with
+    // MaterialValidation::cancelled set. The viewer's badges cancel a run a newer edit made stale.
+    std::function<bool()> cancelled;
 };
 
 struct MaterialValidation {
@@ -39,6 +43,7 @@ struct MaterialValidation {
 
     AlbedoPeak albedo;
     double albedo_limit = 0.0;
+    bool cancelled = false;  // stopped early by ValidationOptions::cancelled: the figures are partial
 
     bool chi_square_passed() const { return chi_square_failure.empty(); }
     bool reciprocity_passed() const { return reciprocity_error <= reciprocity_tolerance; }

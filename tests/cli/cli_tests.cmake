@@ -383,3 +383,25 @@ cli_status_test(validate.pass_exits_0 0 "PASS" validate --samples 20000 --materi
 cli_status_test(preview.reports_nonfinite_samples 0 "dtoadq: warning: [1-9][0-9]* non-finite samples \\(NaN or infinite\\) were left out of the image"
                 preview --env constant:3e38,3e38,3e38 --ibl-sampling env --ground off --size 16x16 --spp 1 --quiet
                 -o ${CLI_SCRATCH}/nonfinite.exr)
+
+# --- dtoadq view (docs/viewer.md) --------------------------------------------------------------------
+# Bad input stops before the window opens: these need no display.
+cli_bad_input(NAME view.bad_preset EXPECT "${E}${D}/out_of_range\\.json: ior: value 4 is out of range \\[1, 3\\]$"
+              ARGS view --material ${D}/out_of_range.json)
+cli_bad_input(NAME view.missing_env EXPECT "${E}${D}/absent\\.exr: no such file$" ARGS view --env ${D}/absent.exr)
+cli_bad_input(NAME view.bad_constant_env EXPECT "${E}--env: constant: G is not a number" ARGS view --env constant:1,x,1)
+cli_bad_input(NAME view.set_unknown_key EXPECT "${E}--set: roughnes: unknown key$" ARGS view --frames 2 --set roughnes=0.2@1)
+cli_bad_input(NAME view.set_out_of_range EXPECT "${E}--set: roughness: value 2 is out of range \\[0, 1\\]$" ARGS view --frames 2 --set roughness=2@1)
+cli_bad_input(NAME view.bad_export_target EXPECT "${E}--export-to: expected SCENE\\.json:NAME" ARGS view --export-to nope)
+# The window itself, under Xvfb with Mesa's software OpenGL when there is no DISPLAY (skipped, exit
+# 77, when neither is there). The Debian python3: the PNGs are read with its matplotlib.
+find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT VIEW_TEST_PYTHON)
+  find_program(VIEW_TEST_PYTHON python3)
+endif()
+foreach(view_case accumulate set preset export env)
+  add_test(NAME cli.view.${view_case}
+           COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
+  # One at a time: xvfb-run -a started twice at once can pick the same display number.
+  set_tests_properties(cli.view.${view_case} PROPERTIES LABELS cli TIMEOUT 240 SKIP_RETURN_CODE 77 RESOURCE_LOCK xvfb)
+endforeach()

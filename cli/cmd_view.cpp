@@ -1,0 +1,166 @@
+// dtoadq view: the live viewer (viewer/, docs/viewer.md). This file turns the options into a
+// render job (cli/render_job, as `preview` does), checks everything a script asks for before the
+// window opens, and hands the viewer its renderer factory.
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <optional>
+
+#include "brdf/host/preset.hpp"
+#include "cli/commands.hpp"
+#include "cli/render_job.hpp"
+#include "common/input_error.hpp"
+#include "scene/test_model.hpp"
+#include "viewer/app.hpp"
+#include "viewer/material_edit.hpp"
+#include "viewer/scene_export.hpp"
+
+namespace lab::cli {
+
+namespace {
+
+struct ViewOptions {
+    RenderJobOptions job;
+    std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces";
+    std::vector<std::string> sets, inspect, env_loads;
+    int frames = 0, min_spp = 1, max_spp = 1 << 16;
+    double chunk_ms = 33.0;
+    float exposure = 0.0f;
+    bool stats = false, split = false;
+};
+
+int find_slot(const scene::Scene& scene, const std::string& name) {
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].name == name) return int(i);
+    return -1;
+}
+
+void run_view(const ViewOptions& o) {
+    film::ToneMap tone_map = film::parse_tone_map(o.tone_map);
+    if (o.frames < 0 || o.frames > 10000000) throw InputError("--frames", "", "must be in [0, 10000000]");
+    if (o.min_spp < 1 || o.min_spp > o.max_spp) throw InputError("--min-spp", "", "must be in [1, --max-spp]");
+    if (o.max_spp < 1 || o.max_spp > 1 << 24) throw InputError("--max-spp", "", "must be in [1, 16777216]");
+    if (!(o.chunk_ms >= 1.0 && o.chunk_ms <= 10000.0)) throw InputError("--chunk-ms", "", "must be in [1, 10000] ms");
+    if (!(o.exposure >= -64.0f && o.exposure <= 64.0f)) throw InputError("--exposure", "", "must be a number of stops in [-64, 64]");
+    std::vector<viewer::ScriptedSet> sets;
+    for (const std::string& s : o.sets) sets.push_back(viewer::parse_scripted_set(s));
+    if (!sets.empty() && o.frames == 0) throw InputError("--set", "", "needs --frames (a scripted run)");
+    if (!o.screenshot.empty()) render::check_render_output(o.screenshot);
+    std::string export_scene, export_name;
+    if (!o.export_to.empty()) viewer::parse_export_target(o.export_to, &export_scene, &export_name);
+
+    auto job = std::make_shared<RenderJob>(prepare_render_job(o.job));  // a bad preset, scene or environment stops here
+    const scene::Scene& scene = job->input.scene;
+    viewer::ViewerConfig config;
+    config.edited_slot = find_slot(scene, o.slot.empty() ? scene::kSampleMaterialSlot : o.slot);
+    if (config.edited_slot < 0) {
+        if (!o.slot.empty()) throw InputError(scene.file, "materials", "no material \"" + o.slot + "\" (--slot)");
+        config.edited_slot = 0;
+    }
+    config.preset.name = o.job.material.empty() ? scene.materials[size_t(config.edited_slot)].name : job->material_name;
+    config.preset.source = o.job.material.empty() ? scene.file : o.job.material;
+    for (const scene::MaterialSlot& slot : scene.materials) config.initial.materials.push_back(slot.material);
+    config.preset.material = config.initial.materials[size_t(config.edited_slot)];
+    config.initial.camera = scene.camera;
+    config.scene = scene;
+    if (job->input.environment) {
+        config.initial.env_rotation_degrees = job->input.environment->rotation_degrees();
+        config.initial.env_exposure_stops = job->input.environment->exposure_stops();
+    }
+    config.compare = o.compare.empty() ? config.preset : brdf::load_preset(o.compare);
+    // Every scripted change is tried once now, so a bad key or value stops before the window opens.
+    brdf::Preset trial = config.preset;
+    for (const viewer::ScriptedSet& s : sets) trial = viewer::with_parameter(trial, s.key, s.value, "--set");
+
+    config.width = job->input.settings.width;
+    config.height = job->input.settings.height;
+    config.title = "dtoadq view: " + job->description;
+    config.max_samples = o.max_spp;
+    config.chunk_seconds = o.chunk_ms * 1e-3;
+    config.tone_map = tone_map;
+    config.display_exposure = o.exposure;
+    config.frames = o.frames;
+    config.sets = sets;
+    config.min_samples = o.min_spp;
+    for (const std::string& text : o.env_loads) {
+        viewer::ScriptedSet load = viewer::parse_scripted_set("env=" + text);  // PATH@FRAME
+        if (o.frames == 0) throw InputError("--load-env", "", "needs --frames (a scripted run)");
+        config.env_loads.push_back(load);
+    }
+    for (const std::string& text : o.inspect) {
+        int x = -1, y = -1;
+        char tail = 0;
+        if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &tail) != 2 || x < 0 || y < 0 || x >= config.width || y >= config.height)
+            throw InputError("--inspect", "", "expected X,Y inside the " + std::to_string(config.width) + "x" + std::to_string(config.height) +
+                                                  " image, got \"" + text + "\"");
+        config.inspect.push_back({x, y});
+    }
+    config.screenshot = o.screenshot;
+    config.save_preset = o.save_preset;
+    config.export_scene = export_scene;
+    config.export_name = export_name;
+    config.stats = o.stats;
+    config.split = o.split;
+    // Renderers are made on render workers' threads (the kernel build never holds up the window),
+    // each with an OpenCL runtime of its own, kept until the viewer ends (the split view and a new
+    // map run a second renderer beside the first).
+    struct Runtimes {
+        std::mutex mutex;
+        std::vector<std::unique_ptr<std::optional<opencl::Runtime>>> list;
+        // One at a time: PoCL's first platform query is not safe from two threads at once.
+        std::unique_ptr<render::Renderer> make(const RenderJob& job, const std::string& device) {
+            std::lock_guard<std::mutex> lock(mutex);
+            auto runtime = std::make_unique<std::optional<opencl::Runtime>>();
+            std::unique_ptr<render::Renderer> renderer = make_renderer(job, device, runtime.get());
+            list.push_back(std::move(runtime));
+            return renderer;
+        }
+    };
+    auto runtimes = std::make_shared<Runtimes>();
+    const std::string device = o.job.device;
+    config.make_renderer = [job, device, runtimes] { return runtimes->make(*job, device); };
+    const RenderJobOptions job_options = o.job;
+    config.factory_for_env = [job_options, device, runtimes](const std::string& env) -> viewer::RenderWorker::RendererFactory {
+        return [job_options, env, device, runtimes] {
+            RenderJobOptions with_env = job_options;
+            with_env.env = env;
+            with_env.env_rotation = with_env.env_exposure = 0.0f;  // the viewer's own values are applied next
+            RenderJob job = prepare_render_job(with_env);        // throws for a missing or bad map
+            return runtimes->make(job, device);
+        };
+    };
+    int status = viewer::run_viewer(config);
+    if (status != 0) throw CLI::RuntimeError(status);
+}
+
+}  // namespace
+
+void register_view(CLI::App& app) {
+    auto o = std::make_shared<ViewOptions>();
+    o->job.default_env = "constant:1,1,1";
+    o->job.size = "384x384";
+    auto* cmd = app.add_subcommand("view", "Live viewer: tune a material on the test model (or a scene) under an environment");
+    cmd->add_option("scene", o->job.scene, "Scene file (docs/scenes.md); default: the built-in test model");
+    cmd->add_option("--material", o->job.material, "Material preset for the edited slot (the scene's \"sample\")");
+    cmd->add_option("--compare", o->compare, "Material B of the lobe panel's A/B overlay (default: the edited material as loaded)");
+    cmd->add_option("--slot", o->slot, "The scene material the panel edits (default: \"sample\", else the first)");
+    cmd->add_option("--ground", o->job.ground, "Ground plane of the test model: on or off")->capture_default_str();
+    add_render_options(*cmd, &o->job);
+    cmd->add_option("--frames", o->frames, "Headless: close after N frames (and once the image shows every --set)");
+    cmd->add_option("--min-spp", o->min_spp, "Headless: and once the image has at least this many samples per pixel")->capture_default_str();
+    cmd->add_option("--set", o->sets, "Headless: KEY=VALUE@FRAME, a material parameter changed at a frame (repeatable)");
+    cmd->add_option("--screenshot", o->screenshot, "Headless: the window as a PNG at the last frame");
+    cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
+    cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");
+    cmd->add_option("--load-env", o->env_loads, "Headless: PATH@FRAME, load an environment map at a frame as the panel does (errors are shown, not fatal)");
+    cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
+    cmd->add_flag("--split", o->split, "Start in the A/B split view (B: --compare)");
+    cmd->add_flag("--stats", o->stats, "Print interface frame times, samples/s and change-to-frame latency on exit");
+    cmd->add_option("--max-spp", o->max_spp, "Stop accumulating at this many samples per pixel")->capture_default_str();
+    cmd->add_option("--chunk-ms", o->chunk_ms, "Render time per chunk between published images, ms")->capture_default_str();
+    cmd->add_option("--tonemap", o->tone_map, "Display tone map: aces, reinhard or clamp")->capture_default_str();
+    cmd->add_option("--exposure", o->exposure, "Display exposure in stops")->capture_default_str();
+    cmd->callback([o] { run_view(*o); });
+}
+
+}  // namespace lab::cli

@@ -1,0 +1,165 @@
+#!/usr/bin/env python3
+"""End-to-end test of `dtoadq view` under a display (Xvfb with Mesa's software OpenGL when there is
+no DISPLAY): the window opens and samples accumulate, the screenshot shows the model on the backdrop,
+a scripted --set changes the model and not the backdrop, a saved preset loads back identical,
+--export-to writes a scene that `dtoadq render` renders with the material, the rest unchanged, and a
+map loaded in the window replaces the environment, or, when missing, leaves it and shows the error.
+
+usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+SKIP = 77
+EXE, SCRATCH = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+SIZE = 64  # the render is the window's top-left SIZE x SIZE pixels
+# The model fills the centre of the test model's view; the top corners see only the environment
+# (with --ground off nothing else is there).
+CENTRE = (slice(20, 44), slice(20, 44))
+CORNERS = [(slice(0, 6), slice(0, 6)), (slice(0, 6), slice(SIZE - 6, SIZE))]
+SKY = (0.2, 0.4, 1.0)
+ENV = "constant:%g,%g,%g" % SKY
+RED = "0.6,0.04,0.03"      # the test model's own albedo (scenes/shader_ball.json)
+GREEN = "0.05,0.9,0.05"
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def run(args, expect_ok=True):
+    p = subprocess.run([EXE] + args, cwd=SCRATCH, capture_output=True, text=True, timeout=180)
+    if expect_ok and p.returncode != 0:
+        fail("dtoadq %s exited %d: %s" % (" ".join(args), p.returncode, p.stderr.strip()))
+    return p
+
+
+def view(extra, shot):
+    args = ["view", "--size", "%dx%d" % (SIZE, SIZE), "--device", "host", "--env", ENV, "--ground", "off",
+            "--frames", "4", "--min-spp", "2", "--screenshot", shot] + extra
+    return run(args).stdout
+
+
+def displayed(linear):
+    """A backdrop pixel's PNG code in closed form: ACES (Narkowicz 2015) then the sRGB curve."""
+    x = linear * (2.51 * linear + 0.03) / (linear * (2.43 * linear + 0.59) + 0.14)
+    x = min(max(x, 0.0), 1.0)
+    encoded = 12.92 * x if x <= 0.0031308 else 1.055 * x ** (1.0 / 2.4) - 0.055
+    return round(encoded * 255.0)
+
+
+def read_png(path):
+    import matplotlib.image
+    return matplotlib.image.imread(os.path.join(SCRATCH, path))[:, :, :3] * 255.0  # PNG codes
+
+
+def mean(image, region):
+    return image[region[0], region[1]].reshape(-1, 3).mean(axis=0)
+
+
+def case_accumulate():
+    out = view(["--seed", "1", "--inspect", "32,32", "--inspect", "2,2"], "a.png")
+    # The pixel inspector: the centre pixel's ray meets the model's slot, a corner's none.
+    if not re.search(r"inspect: pixel 32,32; radiance .*; depth [0-9.]+; normal .*; material slot 0 \(sample\)", out):
+        fail("the inspector did not find the model at the centre: " + out)
+    if not re.search(r"inspect: pixel 2,2; radiance 0.2 0.4 1 .*; no surface: the environment", out):
+        fail("the inspector did not find the environment in the corner: " + out)
+    m = re.search(r"view: (\d+) frames, (\d+) spp", out)
+    if not m or int(m.group(2)) < 2:
+        fail("no samples accumulated: " + out)
+    a = read_png("a.png")
+    if a[:SIZE, :SIZE].std() < 5.0:
+        fail("the render area is blank (std %.2f codes)" % a[:SIZE, :SIZE].std())
+    backdrop = mean(a, CORNERS[0])
+    centre = mean(a, CENTRE)
+    expected = [displayed(c) for c in SKY]
+    if abs(backdrop - expected).max() > 1.0:
+        fail("the backdrop is %s, not the environment's %s" % (backdrop, expected))
+    # The model's red albedo under a blue sky: red stands above blue in the centre.
+    if not centre[0] - centre[2] > 20.0:
+        fail("no model in the centre: centre %s, backdrop %s" % (centre, backdrop))
+    print("accumulate: %s; centre %s backdrop %s" % (m.group(0), centre.round(1), backdrop.round(1)))
+
+
+def case_set():
+    view(["--seed", "1"], "a.png")
+    view(["--seed", "2"], "a2.png")  # the same material with other random numbers: the noise figure
+    view(["--seed", "1", "--set", "albedo=%s@2" % GREEN], "b.png")
+    a, a2, b = read_png("a.png"), read_png("a2.png"), read_png("b.png")
+    noise = abs(mean(a, CENTRE) - mean(a2, CENTRE)).max()
+    change = abs(mean(a, CENTRE) - mean(b, CENTRE)).max()
+    if not change > 3.0 * noise + 2.0:
+        fail("the --set did not change the model: %.2f codes against a seed-to-seed noise of %.2f" % (change, noise))
+    for corner in CORNERS:  # the environment seen directly: no material in it, so exactly the same
+        if abs(a[corner[0], corner[1]] - b[corner[0], corner[1]]).max() > 1.0:
+            fail("the --set changed the backdrop")
+    print("set: model changed by %.1f codes (noise %.1f); backdrop unchanged" % (change, noise))
+
+
+def case_preset():
+    run(["view", "--size", "16x16", "--device", "host", "--env", ENV, "--frames", "1", "--set", "albedo=%s@0" % GREEN,
+         "--set", "roughness=0.37@0", "--set", "tangent_rotation=33@0", "--save-preset", "p.json"])
+    run(["view", "--size", "16x16", "--device", "host", "--env", ENV, "--frames", "1", "--material", "p.json", "--save-preset", "p2.json"])
+    first, second = open(os.path.join(SCRATCH, "p.json")).read(), open(os.path.join(SCRATCH, "p2.json")).read()
+    if first != second:
+        fail("the saved preset did not load back identical:\n%s\n%s" % (first, second))
+    saved = json.loads(first)
+    if abs(saved["roughness"] - 0.37) > 1e-6 or abs(saved["albedo"][1] - 0.9) > 1e-6:
+        fail("the saved preset lacks the scripted values: %s" % first)
+    print("preset: loads back identical")
+
+
+def case_export():
+    source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes", "shader_ball.json")
+    shutil.copy(source, os.path.join(SCRATCH, "ball.json"))
+    original = json.load(open(os.path.join(SCRATCH, "ball.json")))
+    run(["view", "--size", "16x16", "--device", "host", "--env", ENV, "--frames", "1", "--set", "albedo=%s@0" % GREEN,
+         "--export-to", "ball.json:sample"])
+    exported = json.load(open(os.path.join(SCRATCH, "ball.json")))
+    if abs(exported["materials"]["sample"]["albedo"][1] - 0.9) > 1e-6:
+        fail("the exported material is not the viewer's: %s" % exported["materials"]["sample"])
+    for doc in (original, exported):
+        del doc["materials"]["sample"]
+    if original != exported:
+        fail("export changed the rest of the scene file")
+    run(["render", "ball.json", "--env", ENV, "--device", "host", "--size", "%dx%d" % (SIZE, SIZE), "--spp", "2", "--quiet",
+         "-o", "ball.png"])
+    centre = mean(read_png("ball.png"), CENTRE)
+    if not centre[1] - centre[0] > 20.0:  # the model renders green, not the scene's red
+        fail("dtoadq render did not use the exported material: centre %s" % centre)
+    print("export: rest of the scene unchanged; render centre %s" % centre.round(1))
+
+
+def case_env():
+    source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+    base = ["--inspect", "2,2", "--load-env"]
+    # A missing map: its one-line error in the window, the old environment still rendered.
+    out = view(base + ["absent.exr@1"], "badmap.png")
+    if "view: message: absent.exr: no such file" not in out:
+        fail("no error for a missing map: " + out)
+    if not re.search(r"inspect: pixel 2,2; radiance 0.2 0.4 1 ", out):
+        fail("a missing map did not keep the last good environment: " + out)
+    # A real map replaces the constant one.
+    out = view(base + [os.path.join(source, "envmaps", "studio.exr") + "@1"], "goodmap.png")
+    if "message" in out or re.search(r"inspect: pixel 2,2; radiance 0.2 0.4 1 ", out) or "no surface: the environment" not in out:
+        fail("the map was not loaded: " + out)
+    print("env: a missing map keeps the old one and says why; a good one replaces it")
+
+
+CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env}
+
+if __name__ == "__main__":
+    if not os.environ.get("DISPLAY"):
+        if not shutil.which("xvfb-run"):
+            print("SKIP: no DISPLAY and no xvfb-run (install xvfb: tools/install-deps.sh)")
+            sys.exit(SKIP)
+        # -a: a free display number, so parallel tests do not collide
+        sys.exit(subprocess.call(["xvfb-run", "-a", "-s", "-screen 0 640x640x24", sys.executable] + sys.argv))
+    os.makedirs(SCRATCH, exist_ok=True)
+    for name in (sys.argv[3:] or CASES):
+        CASES[name]()

@@ -1,0 +1,179 @@
+// The viewer's parts that need no window: the newest-job-wins thread and the validation's
+// cancellation behind the badges, --set through the preset loader, export into a scene file, the
+// frame-time quantiles, and the render worker restarting on a new state.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "brdf/host/parameters.hpp"
+#include "common/input_error.hpp"
+#include "render/host_renderer.hpp"
+#include "scene/load_scene.hpp"
+#include "scene/test_model.hpp"
+#include "validation/report.hpp"
+#include "viewer/frame_stats.hpp"
+#include "viewer/latest_job.hpp"
+#include "viewer/material_edit.hpp"
+#include "viewer/render_worker.hpp"
+#include "viewer/scene_export.hpp"
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+// Waits for `done` up to 20 s (a loaded machine), polling.
+template <typename F>
+bool eventually(F done) {
+    const auto start = Clock::now();
+    while (!done()) {
+        if (Clock::now() - start > std::chrono::seconds(20)) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return true;
+}
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("a newer job cancels the running one, and only the newest pending job runs", "[viewer]") {
+    std::atomic<int> first_state{0};  // 1 running, 2 saw cancelled
+    std::atomic<int> ran{0}, last{0};
+    {
+        lab::viewer::LatestJob jobs;
+        jobs.submit([&](const lab::viewer::LatestJob::Cancelled& cancelled) {
+            first_state = 1;
+            while (!cancelled()) std::this_thread::yield();
+            first_state = 2;
+        });
+        REQUIRE(eventually([&] { return first_state.load() == 1; }));
+        // Two submissions while the first runs: the second replaces the first of them before it starts.
+        jobs.submit([&](const lab::viewer::LatestJob::Cancelled&) { ran += 1; last = 2; });
+        jobs.submit([&](const lab::viewer::LatestJob::Cancelled&) { ran += 1; last = 3; });
+        REQUIRE(eventually([&] { return first_state.load() == 2 && !jobs.busy(); }));
+    }
+    CHECK(ran.load() == 1);
+    CHECK(last.load() == 3);
+}
+
+TEST_CASE("validate_material stops at once when cancelled, saying so", "[viewer]") {
+    brdf::Preset p;
+    p.name = "default";
+    p.material = brdf::default_material();
+    lab::validation::ValidationOptions options;
+    options.cancelled = [] { return true; };
+    lab::validation::MaterialValidation v = lab::validation::validate_material(p, options);
+    CHECK(v.cancelled);
+    CHECK(v.albedo.albedo == 0.0);  // the furnace never ran
+    CHECK(v.smallest_p_value == 1.0);
+}
+
+TEST_CASE("--set goes through the preset loader: units, ranges and names", "[viewer]") {
+    brdf::Preset p;
+    p.name = "x";
+    p.material = brdf::default_material();
+    CHECK(lab::viewer::with_parameter(p, "roughness", "0.25", "--set").material.roughness == 0.25f);
+    CHECK(lab::viewer::with_parameter(p, "lobes.glossy", "0.5", "--set").material.weight_glossy == 0.5f);
+    CHECK(lab::viewer::with_parameter(p, "tangent_rotation", "90", "--set").material.tangent_rotation == Approx(1.5707964f));
+    brdf::Material m = lab::viewer::with_parameter(p, "albedo", "0.1,0.2,0.3", "--set").material;
+    CHECK((m.albedo[0] == 0.1f && m.albedo[1] == 0.2f && m.albedo[2] == 0.3f));
+    CHECK(lab::viewer::with_parameter(p, "model", "dtoadq2017", "--set").material.model == BRDF_MODEL_DTOADQ2017);
+    CHECK_THROWS_WITH(lab::viewer::with_parameter(p, "roughness", "1.5", "--set"), "--set: roughness: value 1.5 is out of range [0, 1]");
+    CHECK_THROWS_WITH(lab::viewer::with_parameter(p, "roughnes", "0.5", "--set"), "--set: roughnes: unknown key");
+    CHECK_THROWS_AS(lab::viewer::with_parameter(p, "roughness", "nan", "--set"), lab::InputError);
+    CHECK_THROWS_AS(lab::viewer::with_parameter(p, "albedo", "0.1,0.2", "--set"), lab::InputError);
+}
+
+TEST_CASE("export to scene adds or replaces one material and keeps the rest in place", "[viewer]") {
+    const fs::path dir = fs::temp_directory_path() / ("dtoadq_viewer_export_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "s.json";
+    {
+        std::ofstream out(file);
+        out << R"({"description": "d", "camera": {"type": "pinhole", "position": [0, 1, 4], "look_at": [0, 0, 0], "fov_degrees": 40},
+                   "materials": {"b": {"albedo": [0.5, 0.5, 0.5]}, "a": {"albedo": [0.2, 0.2, 0.2]}},
+                   "objects": [{"name": "ball", "material": "a", "shape": {"type": "sphere", "radius": 1}}]})";
+    }
+    const nlohmann::ordered_json before = nlohmann::ordered_json::parse(read(file));
+    brdf::Preset p;
+    p.name = "ignored";
+    p.material = brdf::default_material();
+    p.material.roughness = 0.125f;
+    lab::viewer::export_to_scene(p, file.string(), "a");      // replaces
+    lab::viewer::export_to_scene(p, file.string(), "fresh");  // adds, last
+    const nlohmann::ordered_json after = nlohmann::ordered_json::parse(read(file));
+    std::vector<std::string> keys, material_keys;
+    for (const auto& [k, v] : after.items()) keys.push_back(k);
+    for (const auto& [k, v] : after["materials"].items()) material_keys.push_back(k);
+    CHECK(keys == std::vector<std::string>{"description", "camera", "materials", "objects"});
+    CHECK(material_keys == std::vector<std::string>{"b", "a", "fresh"});
+    CHECK(after["materials"]["b"] == before["materials"]["b"]);
+    CHECK(after["camera"] == before["camera"]);
+    CHECK(after["objects"] == before["objects"]);
+    lab::scene::Scene loaded = lab::scene::load_scene(file.string());  // what `dtoadq render` reads
+    REQUIRE(loaded.materials.size() == 3);
+    CHECK(loaded.materials[1].name == "a");
+    CHECK(loaded.materials[1].material.roughness == 0.125f);
+
+    // A scene whose materials are not an object is refused and left as it was.
+    const fs::path bad = dir / "bad.json";
+    { std::ofstream(bad) << R"({"materials": [1, 2]})"; }
+    CHECK_THROWS_WITH(lab::viewer::export_to_scene(p, bad.string(), "a"), Catch::Contains("materials: expected an object"));
+    CHECK(read(bad) == R"({"materials": [1, 2]})");
+    fs::remove_all(dir);
+}
+
+TEST_CASE("frame-time quantiles by the nearest rank", "[viewer]") {
+    CHECK(lab::viewer::quantile({}, 0.5) == 0.0);
+    CHECK(lab::viewer::quantile({3, 1, 2}, 0.5) == 2.0);
+    std::vector<double> hundred;
+    for (int i = 1; i <= 100; ++i) hundred.push_back(i);
+    CHECK(lab::viewer::quantile(hundred, 0.95) == 95.0);
+    CHECK(lab::viewer::quantile(hundred, 1.0) == 100.0);
+}
+
+TEST_CASE("the render worker accumulates, and a new state restarts it with the new material", "[viewer]") {
+    lab::render::RenderInput input;
+    input.scene = lab::scene::load_test_model();
+    input.environment = lab::ibl::Environment::constant(brdf::float3(1.0f), "white", {});
+    input.settings.width = input.settings.height = 8;
+    lab::viewer::ViewState state;
+    for (const lab::scene::MaterialSlot& s : input.scene.materials) state.materials.push_back(s.material);
+    state.camera = input.scene.camera;
+    // At most 4 samples per pixel: the worker renders out, then sleeps until a new state comes.
+    lab::viewer::RenderWorker worker([input] { return std::make_unique<lab::render::HostRenderer>(input, 1); }, state, 0.01, 4);
+    lab::viewer::RenderFrame frame;
+    REQUIRE(eventually([&] { return worker.take_frame(&frame) && frame.samples_per_pixel == 4; }));
+    CHECK(frame.generation == 1);
+    const lab::film::ImageRgb red = frame.image;
+    state.materials[0].albedo[0] = state.materials[0].albedo[1] = state.materials[0].albedo[2] = 0.0f;
+    const uint64_t generation = worker.submit(state);
+    CHECK(generation == 2);
+    // Were the film not restarted it would hold its 4 samples and add none.
+    REQUIRE(eventually([&] { return worker.take_frame(&frame) && frame.generation == generation && frame.samples_per_pixel == 4; }));
+    // The red channel of the centre 4 x 4 pixels, the model: its diffuse red (albedo 0.6, 80 % of
+    // the lobes) is gone, leaving the glossy lobe's reflection.
+    double sum_red = 0.0, sum_black = 0.0;
+    for (int y = 2; y < 6; ++y)
+        for (int x = 2; x < 6; ++x) {
+            sum_red += red.at(x, y)[0];
+            sum_black += frame.image.at(x, y)[0];
+        }
+    CHECK(sum_black < 0.5 * sum_red);
+    CHECK(worker.error().empty());
+}

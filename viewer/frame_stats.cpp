@@ -1,0 +1,30 @@
+#include "viewer/frame_stats.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace lab::viewer {
+
+double quantile(std::vector<double> values, double q) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    size_t rank = size_t(std::ceil(q * double(values.size())));
+    return values[rank == 0 ? 0 : std::min(rank, values.size()) - 1];
+}
+
+std::string describe(const FrameStats& s) {
+    char line[512];
+    double median = quantile(s.frame_seconds, 0.5), p95 = quantile(s.frame_seconds, 0.95);
+    std::snprintf(line, sizeof line, "interface: %zu frames, median %.1f ms (%.1f frames/s), p95 %.1f ms\n", s.frame_seconds.size(),
+                  median * 1e3, median > 0.0 ? 1.0 / median : 0.0, p95 * 1e3);
+    std::string out = line;
+    if (!s.change_seconds.empty()) {
+        std::snprintf(line, sizeof line, "change to first updated frame: %zu changes, median %.1f ms, max %.1f ms\n", s.change_seconds.size(),
+                      quantile(s.change_seconds, 0.5) * 1e3, quantile(s.change_seconds, 1.0) * 1e3);
+        out += line;
+    }
+    return out;
+}
+
+}  // namespace lab::viewer

@@ -1,0 +1,21 @@
+// The figures `dtoadq view --stats` prints: interface frame times (median, 95th percentile) and
+// the time from a scripted change to the first frame that shows it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace lab::viewer {
+
+struct FrameStats {
+    std::vector<double> frame_seconds;   // every interface frame, start to start
+    std::vector<double> change_seconds;  // per scripted change: submit to the first frame showing it
+};
+
+// The q-quantile (0..1) by the nearest rank; 0 when empty.
+double quantile(std::vector<double> values, double q);
+
+// Lines for the terminal: frames, median and p95 frame time in ms and frames/s, changes' latency.
+std::string describe(const FrameStats& stats);
+
+}  // namespace lab::viewer
