@@ -1,6 +1,8 @@
 #include "brdf/host/preset.hpp"
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -141,6 +143,19 @@ Preset parse_preset_text(const std::string& text, const std::string& path) {
     return parse_preset(doc, path);
 }
 
+namespace {
+
+// The shortest decimal that reads back as the same float (0.9f is written 0.9, not the double
+// 0.8999999761581421 the float widens to), so saved presets and exported scenes read as typed.
+double shortest_decimal(float value) {
+    char text[32];
+    auto [end, error] = std::to_chars(text, text + sizeof text, value);
+    if (error != std::errc()) return double(value);
+    return std::strtod(std::string(text, end).c_str(), nullptr);
+}
+
+}  // namespace
+
 json preset_to_json(const Preset& preset) {
     json doc;
     doc["name"] = preset.name;
@@ -151,9 +166,10 @@ json preset_to_json(const Preset& preset) {
     for (const ScalarParameter& p : scalar_parameters()) {
         json value;
         if (p.field)
-            value = preset.material.*p.field / p.to_material;
+            value = shortest_decimal(preset.material.*p.field / p.to_material);
         else
-            value = {preset.material.albedo[0], preset.material.albedo[1], preset.material.albedo[2]};
+            value = {shortest_decimal(preset.material.albedo[0]), shortest_decimal(preset.material.albedo[1]),
+                     shortest_decimal(preset.material.albedo[2])};
         std::string key = p.key;
         if (key.rfind("lobes.", 0) == 0)
             doc["lobes"][key.substr(6)] = value;
