@@ -13,10 +13,14 @@ void register_render(CLI::App& app) {
     auto job = std::make_shared<RenderJobOptions>();
     auto run = std::make_shared<RenderRunOptions>();
     run->output = "render.exr";
-    auto* cmd = app.add_subcommand("render", "Render a scene file with one of the integrators (pt)");
+    auto* cmd = app.add_subcommand("render", "Render a scene file with one of the integrators (pt, bdpt, lt)");
     cmd->add_option("scene", job->scene, "Scene file (docs/scenes.md)")->required();
-    cmd->add_option("--integrator", job->integrator, "Integrator: pt (path tracing with next-event estimation and MIS)")
+    cmd->add_option("--integrator", job->integrator,
+                    "Integrator: pt (path tracing with next-event estimation and MIS), bdpt (bidirectional, every strategy) or lt "
+                    "(light tracing)")
         ->capture_default_str();
+    cmd->add_option("--max-vertices", job->max_vertices, "bdpt, lt: vertices per path, s + t, in [2, 16]")->capture_default_str();
+    cmd->add_option("--mis", job->mis_heuristic, "bdpt, lt: MIS heuristic, balance or power")->capture_default_str();
     cmd->add_option("--light-sampling", job->light_sampling,
                     "How paths find lights: bsdf (BSDF sampling alone), lights (next-event estimation alone) or mis")
         ->capture_default_str();

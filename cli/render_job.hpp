@@ -33,6 +33,8 @@ struct RenderJobOptions {
     std::string light_selection = "power";
     std::string normals = "tetrahedral";
     int max_depth = 16;
+    int max_vertices = 8;                   // bdpt, lt
+    std::string mis_heuristic = "balance";  // bdpt, lt
     int max_steps = 1024;
     float over_relaxation = 1.0f;
     unsigned long long seed = 0;
