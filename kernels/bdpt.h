@@ -74,7 +74,7 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         sampled.on_surface = 0;
         sampled.index = 0;
         sampled.epsilon = 0.0f;
-        float3 f = qs->type == VERTEX_SURFACE ? vertex_f(scene, qs, &sampled, TRANSPORT_IMPORTANCE) : float3_splat(1.0f);
+        float3 f = qs->type == VERTEX_SURFACE ? vertex_f(scene, qs, cs.wi, TRANSPORT_IMPORTANCE) : float3_splat(1.0f);
         float cos_q = qs->on_surface ? fabs(dot(qs->frame.n, cs.wi)) : 1.0f;
         L = qs->beta * f * sampled.beta * cos_q;
         if (!(max_component(L) > 0.0f)) return zero;
@@ -88,7 +88,11 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         int index = select_light(scene->light_cdf, k->light_count, u.z, &pmf);
         if (!(pmf > 0.0f)) return zero;
         Light l = scene->lights[index];
-        LightSample ls = sample_light(&l, &scene->env, scene->env_buffers, pt->p, make_float2(u.x, u.y));
+        /* On an emissive sphere itself, the hit can lie a rounding error on the far side of the
+         * surface from the path, where the sphere's own sampler would see only a vanishing cap
+         * around it: sample from the point just off the surface on the path's side instead. */
+        float3 p_ref = vertex_emits(scene, pt) ? offset_origin(pt->p, pt->frame.n, pt->epsilon, 1.0f) : pt->p;
+        LightSample ls = sample_light(&l, &scene->env, scene->env_buffers, p_ref, make_float2(u.x, u.y));
         if (!(ls.pdf > 0.0f) || !(max_component(ls.radiance) > 0.0f)) return zero;
         sampled.type = l.type == LIGHT_ENVIRONMENT ? VERTEX_ENVIRONMENT : VERTEX_LIGHT;
         sampled.p = l.type == LIGHT_ENVIRONMENT ? ls.wi : ls.position;
@@ -100,7 +104,7 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         sampled.beta = ls.radiance / (pmf * ls.pdf);
         sampled.pdf_rev = 0.0f;
         sampled.pdf_fwd = vertex_pdf_light_origin(k, scene, &sampled);
-        L = pt->beta * vertex_f(scene, pt, &sampled, TRANSPORT_RADIANCE) * sampled.beta * fabs(dot(ls.wi, pt->frame.n));
+        L = pt->beta * vertex_f(scene, pt, ls.wi, TRANSPORT_RADIANCE) * sampled.beta * fabs(dot(ls.wi, pt->frame.n));
         if (!(max_component(L) > 0.0f)) return zero;
         if (!segment_unoccluded(bdpt_ray_origin(pt, ls.wi), ls.wi, ls.distance, l.material_slot, s_march, counters)) return zero;
     } else {
@@ -112,7 +116,7 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         if (!(d2 > 0.0f)) return zero;
         w = w * (1.0f / sqrt(d2));
         float g = fabs(dot(qs->frame.n, w)) * fabs(dot(pt->frame.n, w)) / d2;
-        L = qs->beta * vertex_f(scene, qs, pt, TRANSPORT_IMPORTANCE) * vertex_f(scene, pt, qs, TRANSPORT_RADIANCE) * pt->beta * g;
+        L = qs->beta * vertex_f(scene, qs, w, TRANSPORT_IMPORTANCE) * vertex_f(scene, pt, -w, TRANSPORT_RADIANCE) * pt->beta * g;
         if (!(max_component(L) > 0.0f)) return zero;
         if (!bdpt_surfaces_see_each_other(qs, pt, s_march, counters)) return zero;
     }
@@ -137,7 +141,9 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
     PathVertex light[BDPT_MAX_VERTICES];
     for (int i = 0; i < k->sample_count; ++i) {
         Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
-        int n_cam = bdpt_camera_subpath(k, s_march, camera, scene, x, y, &rng, cam, max_vertices, &counters);
+        /* t = 1 alone (the light tracer) needs no camera subpath: its lens vertex is sampled per connection */
+        bool camera_strategies = (k->strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
+        int n_cam = camera_strategies ? bdpt_camera_subpath(k, s_march, camera, scene, x, y, &rng, cam, max_vertices, &counters) : 1;
         int n_light = k->light_count > 0 ? bdpt_light_subpath(k, s_march, scene, &rng, light, max_vertices - 1, &counters) : 0;
         float3 l = float3_splat(0.0f);
         bool finite = true;

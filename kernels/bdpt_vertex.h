@@ -115,12 +115,13 @@ SS_FN float vertex_pdf(const RenderKernelSettings* k, const Camera* camera, cons
     return vertex_convert_density(bsdf_pdf(&m, wp, wn), v, next);
 }
 
-/* f at surface vertex v for light leaving towards `next`, arriving from v's previous vertex, in
- * the subpath's transport mode; 0 at surfaces that do not scatter. */
-SS_FN float3 vertex_f(const RenderScene* scene, const PathVertex* v, const PathVertex* next, int mode) {
+/* f at surface vertex v between its previous vertex and unit world direction w, in the subpath's
+ * transport mode; 0 at surfaces that do not scatter. The caller passes the direction it sampled or
+ * connected along: one rebuilt from two nearly equal points would be noise. */
+SS_FN float3 vertex_f(const RenderScene* scene, const PathVertex* v, float3 w, int mode) {
     if (!vertex_scatters(scene, v)) return float3_splat(0.0f);
     Material m = scene->materials[v->index];
-    return bsdf_eval_mode(&m, v->wo, frame_to_local(v->frame, vertex_direction(v, next)), mode);
+    return bsdf_eval_mode(&m, v->wo, frame_to_local(v->frame, w), mode);
 }
 
 /* Radiance emitted by light or emitter vertex v towards `to`: a sphere's Le from both sides, the

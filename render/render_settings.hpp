@@ -39,6 +39,7 @@ struct RenderSettings {
     int roulette_depth = 3;  // Russian roulette from this many events on
     int max_vertices = 8;    // bdpt, lt: s + t at most (the write-up's s + t <= 8), in [2, 16]
     MisHeuristic mis_heuristic = MisHeuristic::balance;  // bdpt, lt
+    int strategies = 0;      // bdpt, lt: a STRATEGY_* mask of kernels/render_settings.h; 0: the integrator's own
     LightSampling light_sampling = LightSampling::mis;
     NormalMethod normals = NormalMethod::tetrahedral;
     float normal_step = 5e-4f;     // finite-difference step, scene units

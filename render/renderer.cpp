@@ -87,7 +87,7 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     k.light_count = int(lights_.lights.size());
     k.show_background = s.show_background ? 1 : 0;
     k.max_vertices = s.max_vertices;
-    k.strategies = s.integrator == Integrator::lt ? STRATEGY_T1 : STRATEGY_ALL;
+    k.strategies = s.strategies != 0 ? s.strategies : s.integrator == Integrator::lt ? STRATEGY_T1 : STRATEGY_ALL;
     k.mis_heuristic = s.mis_heuristic == MisHeuristic::power ? MIS_POWER : MIS_BALANCE;
     k.scene_center[0] = compiled_.bounds_center.x;
     k.scene_center[1] = compiled_.bounds_center.y;
