@@ -155,11 +155,12 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
                 if (depth < 0 || s + t > max_vertices) continue;
                 if (s == 1 && t == 1 && bdpt_strategy_enabled(k->strategies, 0, 2)) continue;
                 if (!bdpt_strategy_enabled(k->strategies, s, t)) continue;
+                if (k->strategy_only >= 0 && k->strategy_only != s * 32 + t) continue;
                 float2 raster = make_float2(-1.0f, -1.0f);
                 float weight;
                 float3 c = bdpt_connect(k, s_march, camera, scene, light, cam, s, t, &rng, &raster, &weight, &counters);
-                if (!(weight > 0.0f) || !(max_component(c) > 0.0f)) continue;
-                c = c * weight;
+                if (!(max_component(c) > 0.0f) || !(k->unweighted || weight > 0.0f)) continue;
+                if (!k->unweighted) c = c * weight;
                 if (!finite3(c)) {
                     finite = false;
                     continue;

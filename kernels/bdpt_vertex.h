@@ -18,7 +18,9 @@
 #define VERTEX_ENVIRONMENT 3 /* the environment, at infinity: p holds the unit direction towards it */
 
 /* The largest subpath, in vertices, a kernel has room for (private arrays of fixed size). */
+#ifndef BDPT_MAX_VERTICES
 #define BDPT_MAX_VERTICES 16
+#endif
 
 typedef struct PathVertex {
     float3 p;

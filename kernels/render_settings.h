@@ -44,6 +44,9 @@ typedef struct RenderKernelSettings {
     int max_vertices;     /* s + t at most: a path of max_vertices - 2 scattering events */
     int strategies;       /* STRATEGY_* mask */
     int mis_heuristic;    /* MIS_* */
+    int strategy_only;    /* >= 0: add only strategy (s, t) = (strategy_only / 32, strategy_only % 32), weighted by the
+                             mask's MIS (--strategies DIR); -1: every strategy of the mask */
+    int unweighted;       /* 1: with strategy_only, its contribution without the MIS weight */
     float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
     float scene_radius;
 } RenderKernelSettings;

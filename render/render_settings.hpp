@@ -40,6 +40,8 @@ struct RenderSettings {
     int max_vertices = 8;    // bdpt, lt: s + t at most (the write-up's s + t <= 8), in [2, 16]
     MisHeuristic mis_heuristic = MisHeuristic::balance;  // bdpt, lt
     int strategies = 0;      // bdpt, lt: a STRATEGY_* mask of kernels/render_settings.h; 0: the integrator's own
+    int strategy_s = -1, strategy_t = -1;  // bdpt, lt: >= 0: only the strategy (s, t) (--strategies DIR)
+    bool strategy_unweighted = false;      // with strategy_s: without its MIS weight
     LightSampling light_sampling = LightSampling::mis;
     NormalMethod normals = NormalMethod::tetrahedral;
     float normal_step = 5e-4f;     // finite-difference step, scene units
