@@ -49,6 +49,9 @@ std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const s
     std::printf("equal time, %.1f s each:\n  %-16s %8s %12s %12s %14s\n", seconds, "run", "spp", "paths/s", "RMSE", "RMSE x sqrt(t)");
     for (const EqualTimeRun& run : runs) {
         std::unique_ptr<render::Renderer> renderer = make(run.input);
+        // one sample first, not timed: PoCL compiles the kernel for its work-group size at the first launch
+        renderer->add_samples(1);
+        renderer->reset();
         EqualTimeResult r;
         r.series.name = run.name;
         render_for(*renderer, seconds, [&](double t) {

@@ -2,8 +2,10 @@
 // tracer on the OpenCL device and of the same integrator built as C++ on the host's threads, as a
 // ratio; and on the scenes where the choice matters (the Cornell box, Veach's MIS scene) the
 // equal-time error of next-event estimation with MIS against BSDF sampling alone (what the
-// preview did before the render core) and light sampling alone, against a long reference.
-// Figures, not timed tests: every ratio is measured within the one run.
+// preview did before the render core) and light sampling alone, against a long reference. Then,
+// on the scenes of --integrators (the Cornell box, the caustic), the equal-time error of bdpt and lt
+// against pt over the same path space (pt's max depth = bdpt's max vertices - 2), against a long pt
+// reference of that depth. Figures, not timed tests: every ratio is measured within the one run.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -30,6 +32,7 @@ struct BenchRenderCommand {
                                     "scenes/depth_of_field.json", "scenes/metaballs.json",  "scenes/repetition.json",
                                     "scenes/primitives.json"};
     std::vector<std::string> compare{"scenes/cornell_box.json", "scenes/veach_mis.json"};
+    std::vector<std::string> integrators{"scenes/cornell_box.json", "scenes/caustic.json"};
     double throughput_seconds = 2.0;
     double seconds = 4.0;
     double reference_seconds = 40.0;
@@ -46,8 +49,11 @@ RenderJob scene_job(const RenderJobOptions& options, const std::string& file) {
     return prepare_render_job(o);
 }
 
-// Renders for about `seconds` and returns the statistics.
+// Renders for about `seconds` and returns the statistics. One sample first, not counted: PoCL
+// compiles a kernel for its work-group size at the first launch, seconds for BDPT's.
 render::RenderStatistics measure(render::Renderer& renderer, double seconds) {
+    renderer.add_samples(1);
+    renderer.reset();
     render_for(renderer, seconds, [](double) {});
     return renderer.statistics();
 }
@@ -64,15 +70,24 @@ void run_bench_render(const BenchRenderCommand& c) {
     std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());
 
     std::printf("(a scene with no light of its own is lit by envmaps/courtyard.exr)\n");
-    std::printf("%-28s %12s %12s %10s %14s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "host paths/s", "device/host");
+    std::printf("%-28s %12s %12s %10s %14s %12s %12s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "host paths/s", "device/host",
+                "bdpt paths/s", "lt paths/s");
     for (const std::string& file : c.scenes) {
         RenderJob job = scene_job(c.job, file);
         std::unique_ptr<render::Renderer> device = on_device(job.input);
         render::RenderStatistics d = measure(*device, c.throughput_seconds);
         render::HostRenderer host(job.input);
         render::RenderStatistics h = measure(host, c.throughput_seconds);
-        std::printf("%-28s %12.3g %12.3g %10.2f %14.3g %11.2fx\n", fs::path(file).filename().string().c_str(), d.paths_per_second(),
-                    d.rays_per_second(), double(d.rays) / double(d.paths), h.paths_per_second(), d.paths_per_second() / h.paths_per_second());
+        double bidirectional[2];
+        for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt}) {
+            render::RenderInput input = job.input;
+            input.settings.integrator = integrator;
+            std::unique_ptr<render::Renderer> r = on_device(input);
+            bidirectional[integrator == render::Integrator::lt] = measure(*r, c.throughput_seconds).paths_per_second();
+        }
+        std::printf("%-28s %12.3g %12.3g %10.2f %14.3g %11.2fx %12.3g %12.3g\n", fs::path(file).filename().string().c_str(),
+                    d.paths_per_second(), d.rays_per_second(), double(d.rays) / double(d.paths), h.paths_per_second(),
+                    d.paths_per_second() / h.paths_per_second(), bidirectional[0], bidirectional[1]);
         std::fflush(stdout);
     }
 
@@ -97,8 +112,30 @@ void run_bench_render(const BenchRenderCommand& c) {
         }
         std::printf("\n");
     }
+    for (const std::string& file : c.integrators) {
+        RenderJob job = scene_job(c.job, file);
+        job.input.settings.max_depth = job.input.settings.max_vertices - 2;  // pt over bdpt's path space
+        std::string name = fs::path(file).stem().string();
+        std::printf("\n%s: reference (pt, max depth %d) for %.0f s\n", name.c_str(), job.input.settings.max_depth, c.reference_seconds);
+        Reference reference = render_reference(on_device, job.input, c.reference_seconds);
+        std::printf("reference %d spp; its own noise (RMSE) about %.3g\n", reference.samples_per_pixel, reference.noise);
+        std::vector<EqualTimeRun> runs;
+        for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::pt}) {
+            EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
+            run.input.settings.integrator = integrator;
+            runs.push_back(std::move(run));
+        }
+        std::vector<EqualTimeResult> results = run_equal_time(on_device, runs, reference, c.seconds);
+        std::printf("equal-time RMSE relative to pt:");
+        for (const EqualTimeResult& r : results) {
+            std::printf("  %s %.2fx", r.series.name.c_str(), r.final_rmse() / results.back().final_rmse());
+            series.push_back(r.series);
+        }
+        std::printf("\n");
+    }
     if (!c.chart.empty() && !series.empty()) {
-        plots::write_speed_accuracy_chart(series, "Render core: RMSE against render time, pt by light-sampling strategy", c.chart, c.csv);
+        plots::write_speed_accuracy_chart(series, "Render core: RMSE against render time, by light-sampling strategy and integrator", c.chart,
+                                          c.csv);
         std::printf("wrote %s%s\n", c.chart.c_str(), c.csv.empty() ? "" : (" and " + c.csv).c_str());
     }
 }
@@ -109,10 +146,12 @@ void register_bench_render(CLI::App& bench) {
     auto c = std::make_shared<BenchRenderCommand>();
     c->job.size = "128x128";
     auto* cmd = bench.add_subcommand(
-        "render", "Paths/s and rays/s per bundled scene on the device and the host build, and the equal-time error of each light-sampling strategy");
+        "render", "Paths/s and rays/s per bundled scene (pt on the device and the host build, bdpt, lt), and the equal-time error of each light-sampling "
+        "strategy and of bdpt and lt against pt");
     add_render_options(*cmd, &c->job);
     cmd->add_option("--scenes", c->scenes, "Scenes to measure throughput on")->capture_default_str();
     cmd->add_option("--compare", c->compare, "Scenes to compare light-sampling strategies on at equal time")->capture_default_str();
+    cmd->add_option("--integrators", c->integrators, "Scenes to compare bdpt, lt and pt on at equal time")->capture_default_str();
     cmd->add_option("--throughput-seconds", c->throughput_seconds, "Render time of each throughput figure")->capture_default_str();
     cmd->add_option("--seconds", c->seconds, "Render time of each strategy")->capture_default_str();
     cmd->add_option("--reference-seconds", c->reference_seconds, "Render time of each reference (MIS)")->capture_default_str();

@@ -4,26 +4,42 @@
 // as `preview`.
 #include <memory>
 
+#include "common/input_error.hpp"
+
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
+#include "cli/strategy_images.hpp"
 
 namespace lab::cli {
 
 void register_render(CLI::App& app) {
     auto job = std::make_shared<RenderJobOptions>();
     auto run = std::make_shared<RenderRunOptions>();
+    auto strategies = std::make_shared<std::string>();
     run->output = "render.exr";
-    auto* cmd = app.add_subcommand("render", "Render a scene file with one of the integrators (pt)");
+    auto* cmd = app.add_subcommand("render", "Render a scene file with one of the integrators (pt, bdpt, lt)");
     cmd->add_option("scene", job->scene, "Scene file (docs/scenes.md)")->required();
-    cmd->add_option("--integrator", job->integrator, "Integrator: pt (path tracing with next-event estimation and MIS)")
+    cmd->add_option("--integrator", job->integrator,
+                    "Integrator: pt (path tracing with next-event estimation and MIS), bdpt (bidirectional, every strategy) or lt "
+                    "(light tracing)")
         ->capture_default_str();
+    cmd->add_option("--max-vertices", job->max_vertices, "bdpt, lt: vertices per path, s + t, in [2, 16]")->capture_default_str();
+    cmd->add_option("--mis", job->mis_heuristic, "bdpt, lt: MIS heuristic, balance or power")->capture_default_str();
     cmd->add_option("--light-sampling", job->light_sampling,
                     "How paths find lights: bsdf (BSDF sampling alone), lights (next-event estimation alone) or mis")
         ->capture_default_str();
     cmd->add_option("--material", job->material, "Material preset for the scene's \"sample\" slot, if it has one");
     add_render_options(*cmd, job.get());
     add_render_run_options(*cmd, run);
-    cmd->callback([job, run] { run_render_job(*job, *run); });
+    cmd->add_option("--strategies", *strategies,
+                    "bdpt, lt: also write one EXR per strategy (s, t), unweighted and MIS-weighted, with --spp samples each, and a "
+                    "contact sheet, into this folder");
+    cmd->callback([job, run, strategies] {
+        if (!strategies->empty() && render::parse_integrator(job->integrator) == render::Integrator::pt)
+            throw InputError("--strategies", "", "needs --integrator bdpt or lt (the path tracer has no (s, t) strategies)");
+        run_render_job(*job, *run);
+        if (!strategies->empty()) write_strategy_images(prepare_render_job(*job), job->device, run->spp, *strategies, run->quiet);
+    });
 }
 
 }  // namespace lab::cli

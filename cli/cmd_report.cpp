@@ -39,7 +39,8 @@ struct ReportOptions {
     std::string env = "envmaps/courtyard.exr";
     std::string preview_size = "256x256";
     int preview_spp = 64;
-    std::string scene = "scenes/cornell_box.json";  // rendered by the render core's path tracer
+    std::string scene = "scenes/cornell_box.json";  // rendered by BDPT on the render core
+    std::string scene_integrator = "bdpt";
     int scene_spp = 32;
     std::string device;
 };
@@ -102,11 +103,12 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
     return written;
 }
 
-// The scene, rendered by the path tracer at the previews' size, written as scene_<stem>.exr/.png.
+// The scene, rendered by --scene-integrator (bdpt) at the previews' size, written as scene_<stem>.exr/.png.
 std::vector<std::string> write_scene_render(const ReportOptions& o, const fs::path& out, ReportProgress* progress) {
     RenderJobOptions job_options;
     job_options.scene = o.scene;
     job_options.size = o.preview_size;
+    job_options.integrator = o.scene_integrator;
     RenderJob job = prepare_render_job(job_options);
     std::string name = "scene_" + fs::path(o.scene).stem().string();
     std::printf("report: render of %s -> %s.png\n", o.scene.c_str(), (out / name).c_str());
@@ -223,7 +225,8 @@ void register_report(CLI::App& app) {
     cmd->add_option("--env", options->env, "Environment of the previews: .exr/.hdr or constant:R,G,B")->capture_default_str();
     cmd->add_option("--preview-size", options->preview_size, "Preview image size WxH")->capture_default_str();
     cmd->add_option("--preview-spp", options->preview_spp, "Preview samples per pixel")->capture_default_str();
-    cmd->add_option("--scene", options->scene, "Scene rendered by the path tracer after the previews (empty: none)")->capture_default_str();
+    cmd->add_option("--scene", options->scene, "Scene rendered after the previews (empty: none)")->capture_default_str();
+    cmd->add_option("--scene-integrator", options->scene_integrator, "Integrator of the scene render: bdpt, pt or lt")->capture_default_str();
     cmd->add_option("--scene-spp", options->scene_spp, "Samples per pixel of the scene render")->capture_default_str();
     cmd->add_flag("!--no-preview", options->preview, "Skip the path-traced previews and the scene render");
     cmd->add_option("--device", options->device, "OpenCL device of the previews (dtoadq devices lists them)");

@@ -38,4 +38,4 @@ inline void float3_to_array(float3 v, float out[3]) {
 
 static_assert(sizeof(kernel::Camera) == 64, "Camera must match its OpenCL layout: 16 four-byte words");
 static_assert(sizeof(kernel::Light) == 48, "Light must match its OpenCL layout: 12 four-byte words");
-static_assert(sizeof(kernel::RenderKernelSettings) == 60, "RenderKernelSettings must match its OpenCL layout: 15 four-byte words");
+static_assert(sizeof(kernel::RenderKernelSettings) == 96, "RenderKernelSettings must match its OpenCL layout: 24 four-byte words");

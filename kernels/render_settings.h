@@ -14,6 +14,18 @@
 #define LIGHT_SAMPLING_LIGHTS 1
 #define LIGHT_SAMPLING_MIS 2
 
+/* The strategies a bidirectional kernel (kernels/bdpt.h) adds up, as a mask: s light-subpath
+ * vertices joined to t camera-subpath vertices. bdpt takes them all, the light tracer `lt` only
+ * t = 1 (docs/bdpt.md). */
+#define STRATEGY_S0 1      /* s = 0: the camera subpath reaches a light */
+#define STRATEGY_S1 2      /* s = 1, t >= 2: a light sample joined to a camera vertex */
+#define STRATEGY_S2 4      /* s >= 2, t >= 2: two subpath vertices joined by a visibility march */
+#define STRATEGY_T1 8      /* t = 1: a light-subpath vertex joined to the lens, splatted */
+#define STRATEGY_ALL 15
+
+#define MIS_BALANCE 0
+#define MIS_POWER 1
+
 typedef struct RenderKernelSettings {
     int first_sample;   /* sample index of this launch's first sample (keys the random numbers) */
     int sample_count;   /* samples per pixel in this launch */
@@ -28,6 +40,15 @@ typedef struct RenderKernelSettings {
     float max_distance, over_relaxation, lipschitz;
     int light_count;      /* entries of the light array; the environment, when there is one, is entry 0 */
     int show_background;  /* 0: camera rays (and mirror paths) that escape see black, lighting unchanged */
+    /* bidirectional kernels only */
+    int max_vertices;     /* s + t at most: a path of max_vertices - 2 scattering events */
+    int strategies;       /* STRATEGY_* mask */
+    int mis_heuristic;    /* MIS_* */
+    int strategy_only;    /* >= 0: add only strategy (s, t) = (strategy_only / 32, strategy_only % 32), weighted by the
+                             mask's MIS (--strategies DIR); -1: every strategy of the mask */
+    int unweighted;       /* 1: with strategy_only, its contribution without the MIS weight */
+    float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
+    float scene_radius;
 } RenderKernelSettings;
 
 #endif

@@ -22,6 +22,7 @@ inline int scene_analytic_normal(float3 p, float3* n) { return scene::scene_anal
 #include "sdf/march.h"
 #include "sdf/normals.h"
 #include "kernels/path_tracer.h"
+#include "kernels/bdpt.h"
 
 }  // namespace host_integrator
 
@@ -57,6 +58,9 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
 
     int pixels = input_.settings.width * input_.settings.height;
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());
+    // The splat buffer holds floats as their bits (kernels/film.h), which the film reads back as floats.
+    auto* splat = reinterpret_cast<unsigned*>(film_.splat.data());
+    const bool bidirectional = input_.settings.integrator != Integrator::pt;
     std::atomic<int> next{0};
     auto work = [&] {
         host_integrator::current_scene = &input_.scene;
@@ -64,7 +68,10 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
         const int chunk = std::max(1, input_.settings.width);
         for (int begin = next.fetch_add(chunk); begin < pixels; begin = next.fetch_add(chunk))
             for (int pixel = begin; pixel < std::min(pixels, begin + chunk); ++pixel)
-                host_integrator::path_tracer_pixel(&k, &camera_, &scene, pixel, accumulation, rays_.data(), lost_.data());
+                if (bidirectional)
+                    host_integrator::bdpt_pixel(&k, &camera_, &scene, pixel, accumulation, splat, rays_.data(), lost_.data());
+                else
+                    host_integrator::path_tracer_pixel(&k, &camera_, &scene, pixel, accumulation, rays_.data(), lost_.data());
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < threads_; ++t) pool.emplace_back(work);

@@ -13,19 +13,10 @@ namespace {
 // Without -cl-fast-relaxed-math: the kernel shares its BRDF with the host, and NaN guards matter.
 constexpr const char* kBuildOptions = "-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt";
 
-const char* kernel_file(Integrator integrator) {
-    switch (integrator) {
-        case Integrator::pt: break;
-    }
-    return "kernels/path_tracer.cl";
-}
+// lt is bdpt's kernel with a strategy mask (RenderKernelSettings.strategies), not a kernel of its own.
+const char* kernel_file(Integrator integrator) { return integrator == Integrator::pt ? "kernels/path_tracer.cl" : "kernels/bdpt.cl"; }
 
-const char* kernel_name(Integrator integrator) {
-    switch (integrator) {
-        case Integrator::pt: break;
-    }
-    return "render_pt";
-}
+const char* kernel_name(Integrator integrator) { return integrator == Integrator::pt ? "render_pt" : "render_bdpt"; }
 
 template <typename T>
 opencl::BufferHandle upload(const opencl::Runtime& runtime, const std::vector<T>& data) {

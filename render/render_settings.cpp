@@ -29,7 +29,8 @@ const char* word_of(Enum value, const std::pair<const char*, Enum> (&words)[N]) 
     return "?";
 }
 
-constexpr std::pair<const char*, Integrator> kIntegratorWords[] = {{"pt", Integrator::pt}};
+constexpr std::pair<const char*, Integrator> kIntegratorWords[] = {{"pt", Integrator::pt}, {"bdpt", Integrator::bdpt}, {"lt", Integrator::lt}};
+constexpr std::pair<const char*, MisHeuristic> kMisWords[] = {{"balance", MisHeuristic::balance}, {"power", MisHeuristic::power}};
 // The first word of each value is its name; the others are accepted as synonyms.
 constexpr std::pair<const char*, LightSampling> kLightSamplingWords[] = {
     {"bsdf", LightSampling::bsdf}, {"lights", LightSampling::lights}, {"mis", LightSampling::mis},
@@ -40,6 +41,8 @@ constexpr std::pair<const char*, NormalMethod> kNormalWords[] = {
 }  // namespace
 
 Integrator parse_integrator(const std::string& text, const std::string& option) { return parse_word(text, option, kIntegratorWords); }
+MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option) { return parse_word(text, option, kMisWords); }
+const char* mis_heuristic_name(MisHeuristic heuristic) { return word_of(heuristic, kMisWords); }
 NormalMethod parse_normal_method(const std::string& text, const std::string& option) { return parse_word(text, option, kNormalWords); }
 LightSampling parse_light_sampling(const std::string& text, const std::string& option) {
     return parse_word(text, option, kLightSamplingWords);
@@ -55,6 +58,8 @@ void check_render_settings(const RenderSettings& settings) {
                                            " is outside 1x1 .. " + std::to_string(kMaxImageSide) + " a side and 2^26 pixels");
     if (settings.max_depth < 0 || settings.max_depth > 1024)
         throw InputError("--max-depth", "", "must be in [0, 1024], got " + std::to_string(settings.max_depth));
+    if (settings.max_vertices < 2 || settings.max_vertices > 16)
+        throw InputError("--max-vertices", "", "must be in [2, 16], got " + std::to_string(settings.max_vertices));
     if (settings.max_steps < 1 || settings.max_steps > 1 << 20)
         throw InputError("--max-steps", "", "must be in [1, 1048576], got " + std::to_string(settings.max_steps));
     if (!(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f))

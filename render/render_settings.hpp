@@ -8,8 +8,11 @@
 namespace lab::render {
 
 // Which transport algorithm fills the film. `pt`: the path tracer with next-event estimation
-// (kernels/path_tracer.h). The BDPT issue adds `lt` and `bdpt` beside it.
-enum class Integrator { pt };
+// (kernels/path_tracer.h); `bdpt`: bidirectional path tracing, every strategy (kernels/bdpt.h);
+// `lt`: light tracing, the same code with only its t = 1 strategies (docs/bdpt.md).
+enum class Integrator { pt, bdpt, lt };
+// BDPT's multiple importance sampling heuristic.
+enum class MisHeuristic { balance, power };
 // How paths find lights (kernels/render_settings.h): BSDF sampling alone, light sampling (next-event
 // estimation) alone, or both by multiple importance sampling.
 enum class LightSampling { bsdf, lights, mis };
@@ -17,10 +20,12 @@ enum class NormalMethod { tetrahedral, central, analytic };
 
 // Parse the command-line words; errors are lab::InputError naming `option`.
 Integrator parse_integrator(const std::string& text, const std::string& option = "--integrator");
+MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option = "--mis");
 NormalMethod parse_normal_method(const std::string& text, const std::string& option = "--normals");
 // "bsdf" (or "brdf"), "lights" (or "env", the preview's word) and "mis".
 LightSampling parse_light_sampling(const std::string& text, const std::string& option);
 const char* integrator_name(Integrator integrator);
+const char* mis_heuristic_name(MisHeuristic heuristic);
 const char* light_sampling_name(LightSampling sampling);
 const char* normal_method_name(NormalMethod method);
 
@@ -32,6 +37,11 @@ struct RenderSettings {
     Integrator integrator = Integrator::pt;
     int max_depth = 16;      // scattering events per path
     int roulette_depth = 3;  // Russian roulette from this many events on
+    int max_vertices = 8;    // bdpt, lt: s + t at most (the write-up's s + t <= 8), in [2, 16]
+    MisHeuristic mis_heuristic = MisHeuristic::balance;  // bdpt, lt
+    int strategies = 0;      // bdpt, lt: a STRATEGY_* mask of kernels/render_settings.h; 0: the integrator's own
+    int strategy_s = -1, strategy_t = -1;  // bdpt, lt: >= 0: only the strategy (s, t) (--strategies DIR)
+    bool strategy_unweighted = false;      // with strategy_s: without its MIS weight
     LightSampling light_sampling = LightSampling::mis;
     NormalMethod normals = NormalMethod::tetrahedral;
     float normal_step = 5e-4f;     // finite-difference step, scene units

@@ -97,6 +97,15 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     k.lipschitz = std::max(compiled_.lipschitz, 1.0f);
     k.light_count = int(lights_.lights.size());
     k.show_background = s.show_background ? 1 : 0;
+    k.max_vertices = s.max_vertices;
+    k.strategies = s.strategies != 0 ? s.strategies : s.integrator == Integrator::lt ? STRATEGY_T1 : STRATEGY_ALL;
+    k.mis_heuristic = s.mis_heuristic == MisHeuristic::power ? MIS_POWER : MIS_BALANCE;
+    k.strategy_only = s.strategy_s >= 0 ? s.strategy_s * 32 + s.strategy_t : -1;
+    k.unweighted = s.strategy_unweighted ? 1 : 0;
+    k.scene_center[0] = compiled_.bounds_center.x;
+    k.scene_center[1] = compiled_.bounds_center.y;
+    k.scene_center[2] = compiled_.bounds_center.z;
+    k.scene_radius = std::max(compiled_.bounds_radius, 1e-3f);
     return k;
 }
 

@@ -258,8 +258,14 @@ cli_bad_input(NAME bench_preview.bad_seconds EXPECT "${E}--seconds: must be more
 set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_scene\\.json: cannot open"
               ARGS render ${D}/absent_scene.json --size 16x16 --spp 1 -o ${PNG})
-cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"vcm\" \\(pt\\)$"
+cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"vcm\" \\(pt, bdpt, lt\\)$"
               ARGS ${RENDER} --integrator vcm)
+cli_bad_input(NAME render.max_vertices_range ABSENT ${PNG} EXPECT "${E}--max-vertices: must be in \\[2, 16\\], got 17$"
+              ARGS ${RENDER} --integrator bdpt --max-vertices 17)
+cli_bad_input(NAME render.unknown_mis ABSENT ${PNG} EXPECT "${E}--mis: unknown value \"max\" \\(balance, power\\)$"
+              ARGS ${RENDER} --integrator bdpt --mis max)
+cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt or lt"
+              ARGS ${RENDER} --strategies ${CLI_SCRATCH}/strategies_pt)
 cli_bad_input(NAME render.unknown_light_sampling ABSENT ${PNG} EXPECT "${E}--light-sampling: unknown value \"all\" "
               ARGS ${RENDER} --light-sampling all)
 cli_bad_input(NAME render.unknown_light_selection ABSENT ${PNG} EXPECT "${E}--light-selection: unknown value \"random\" "

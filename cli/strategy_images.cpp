@@ -1,0 +1,65 @@
+#include "cli/strategy_images.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+#include "common/input_error.hpp"
+#include "film/image_output.hpp"
+#include "kernels/host.hpp"
+
+namespace lab::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Copies `tile` into `sheet` with its top-left corner at (x0, y0).
+void place(film::ImageRgb* sheet, const film::ImageRgb& tile, int x0, int y0) {
+    for (int y = 0; y < tile.height; ++y)
+        for (int x = 0; x < tile.width; ++x)
+            for (int c = 0; c < 3; ++c) sheet->rgb[sheet->index(x0 + x, y0 + y) + c] = tile.rgb[tile.index(x, y) + c];
+}
+
+}  // namespace
+
+void write_strategy_images(const RenderJob& job, const std::string& device, int spp, const std::string& dir, bool quiet) {
+    const render::RenderSettings& settings = job.input.settings;
+    if (settings.integrator == render::Integrator::pt)
+        throw InputError("--strategies", "", "needs --integrator bdpt or lt (the path tracer has no (s, t) strategies)");
+    std::error_code error;
+    fs::create_directories(dir, error);
+    if (error || !fs::is_directory(dir)) throw InputError("--strategies", dir, "cannot create the folder");
+    const int n = settings.max_vertices, w = settings.width, h = settings.height;
+    // rows: path lengths 2 .. n vertices; columns: s = 0 .. n - 1, twice (unweighted, weighted)
+    film::ImageRgb sheet(2 * n * w, (n - 1) * h);
+    std::optional<opencl::Runtime> runtime;
+    for (int length = 2; length <= n; ++length)
+        for (int s = 0; s < length; ++s) {
+            int t = length - s;
+            if (settings.integrator == render::Integrator::lt ? t != 1 : (s == 1 && t == 1)) continue;
+            for (bool unweighted : {true, false}) {
+                RenderJob one = job;
+                one.input.settings.strategy_s = s;
+                one.input.settings.strategy_t = t;
+                one.input.settings.strategy_unweighted = unweighted;
+                std::unique_ptr<render::Renderer> renderer = make_renderer(one, device, &runtime);
+                renderer->set_samples_per_launch(spp);
+                renderer->add_samples(spp);
+                film::ImageRgb image = renderer->image();
+                film::ImageMetadata metadata = job_metadata(one, *renderer, renderer->statistics());
+                metadata.set("strategy_s", s);
+                metadata.set("strategy_t", t);
+                metadata.set("mis_weighted", unweighted ? 0 : 1);
+                std::string name = "s" + std::to_string(s) + "_t" + std::to_string(t) + (unweighted ? "_unweighted" : "_weighted") + ".exr";
+                film::write_exr((fs::path(dir) / name).string(), image, metadata);
+                place(&sheet, image, (unweighted ? 0 : n * w) + s * w, (length - 2) * h);
+                if (!quiet) std::fprintf(stderr, "wrote %s\n", (fs::path(dir) / name).string().c_str());
+            }
+        }
+    std::string contact = (fs::path(dir) / "contact_sheet.png").string();
+    film::write_png(contact, sheet, film::ToneMap::Aces, 0.0f, film::ImageMetadata{});
+    if (!quiet) std::fprintf(stderr, "wrote %s\n", contact.c_str());
+}
+
+}  // namespace lab::cli

@@ -1,0 +1,18 @@
+// `dtoadq render ... --strategies DIR`: BDPT's strategies one by one, as pbrt-v4's
+// visualize-strategies mode shows them (docs/bdpt.md).
+#pragma once
+
+#include <string>
+
+#include "cli/render_job.hpp"
+
+namespace lab::cli {
+
+// For every strategy (s, t) the job's integrator runs (bdpt: all of s + t <= max_vertices but
+// (1, 1); lt: t = 1), `spp` samples of its contribution alone, unweighted and weighted by its MIS
+// weight: DIR/s<S>_t<T>_unweighted.exr and DIR/s<S>_t<T>_weighted.exr, and DIR/contact_sheet.png,
+// one row per path length (s + t vertices), one column per s, the unweighted sheet left of the
+// weighted one. Throws lab::InputError for the pt integrator or an unwritable DIR.
+void write_strategy_images(const RenderJob& job, const std::string& device, int spp, const std::string& dir, bool quiet);
+
+}  // namespace lab::cli

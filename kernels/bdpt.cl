@@ -1,0 +1,29 @@
+/* Bidirectional path tracing on OpenCL (kernels/bdpt.h): one work-item per pixel, each launch adding
+ * `sample_count` samples to every pixel of the film, t = 1 connections splatted anywhere on it. The
+ * arguments are the path tracer's (kernels/path_tracer.cl), bound the same way. */
+#pragma OPENCL FP_CONTRACT OFF
+
+#include "scene/generated.h"
+
+#include "kernels/material_layout.h"
+#include "kernels/bdpt.h"
+
+__kernel void render_bdpt(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
+                          __global const float* env_marginal_cdf, __global const float* env_conditional_cdf,
+                          __global const Material* materials, __global const float4* emission, __global const Light* lights,
+                          __global const float* light_cdf, __global const int* light_of_slot, __global float4* accumulation,
+                          __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts) {
+    int pixel = (int)get_global_id(0);
+    if (pixel >= camera.width * camera.height) return;
+    RenderScene scene;
+    scene.materials = materials;
+    scene.emission = emission;
+    scene.lights = lights;
+    scene.light_cdf = light_cdf;
+    scene.light_of_slot = light_of_slot;
+    scene.env = env;
+    scene.env_buffers.texels = env_texels;
+    scene.env_buffers.marginal_cdf = env_marginal_cdf;
+    scene.env_buffers.conditional_cdf = env_conditional_cdf;
+    bdpt_pixel(&settings, &camera, &scene, pixel, accumulation, splat, ray_counts, lost_ray_counts);
+}

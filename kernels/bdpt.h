@@ -1,0 +1,179 @@
+/* Bidirectional path tracing (`dtoadq render --integrator bdpt`, and `lt`, its t = 1 strategies
+ * alone), after pbrt-v4's BDPTIntegrator; docs/bdpt.md. Per sample of a pixel: one camera subpath
+ * through the pixel, one light subpath, and every connection (s, t) of s light vertices to t camera
+ * vertices with s + t <= max_vertices that the strategy mask enables:
+ *   s = 0   the camera subpath reaches a light (an emissive sphere or the environment);
+ *   s = 1   a fresh light sample joined to a camera vertex (next-event estimation);
+ *   s >= 2  two subpath vertices joined through a visibility march;
+ *   t = 1   a light vertex joined to a fresh point on the lens, splatted where it lands on the film.
+ * Each is weighted by kernels/bdpt_mis.h. The own pixel's sum goes to the accumulation buffer, t = 1
+ * to the splat buffer (kernels/film.h). One work-item per pixel runs the whole sample (a
+ * megakernel): docs/bdpt.md says why, measured against the alternatives.
+ *
+ * Single source: kernels/bdpt.cl runs it on OpenCL, render/host_renderer.cpp as C++. Needs the
+ * scene declared before it, as kernels/path.h does. */
+#ifndef KERNELS_BDPT_H
+#define KERNELS_BDPT_H
+
+#include "kernels/bdpt_mis.h"
+#include "kernels/bdpt_walk.h"
+#include "kernels/film.h"
+
+/* Whether a segment from surface vertex a to surface vertex b is clear. The march starts off a's
+ * surface and stops at b's within the error the march itself allows there (its hit threshold, over
+ * the cosine at b: a grazing arrival stops short of b by that much). */
+SS_FN bool bdpt_surfaces_see_each_other(const PathVertex* a, const PathVertex* b, MarchSettings s, PathCounters* counters) {
+    float3 w = b->p - a->p;
+    float dist = length(w);
+    if (!(dist > 0.0f)) return false;
+    w = w / dist;
+    float3 origin = offset_origin(a->p, a->frame.n, a->epsilon, dot(a->frame.n, w));
+    s.max_distance = fmin(s.max_distance, dist);
+    MarchResult r = trace_ray(origin, w, s, counters);
+    if (r.status == MARCH_MISS) return true;
+    if (r.status != MARCH_HIT) return false;
+    float gap = length(origin + w * r.t - b->p) * fabs(dot(b->frame.n, w));
+    return gap <= 4.0f * fmax(b->epsilon, march_epsilon(s, r.t));
+}
+
+/* The origin of a shadow ray from vertex v along unit w: off the surface on w's side. */
+SS_FN float3 bdpt_ray_origin(const PathVertex* v, float3 w) {
+    return v->on_surface ? offset_origin(v->p, v->frame.n, v->epsilon, dot(v->frame.n, w)) : v->p;
+}
+
+/* The unweighted contribution of strategy (s, t) and, through *weight, its MIS weight; t = 1 sets
+ * *raster to where it lands. Zero where the strategy cannot make a path from these subpaths. */
+SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, const Camera* camera, const RenderScene* scene,
+                          const PathVertex* light, const PathVertex* cam, int s, int t, Rng* rng, float2* raster, float* weight,
+                          PathCounters* counters) {
+    float3 zero = float3_splat(0.0f);
+    *weight = 0.0f;
+    if (t > 1 && s != 0 && cam[t - 1].type == VERTEX_ENVIRONMENT) return zero; /* nothing connects to infinity */
+    PathVertex sampled;
+    float3 L;
+    if (s == 0) {
+        const PathVertex* pt = &cam[t - 1];
+        if (!vertex_emits(scene, pt)) return zero;
+        bool seen_directly = true; /* through delta lobes only, as the path tracer's backdrop */
+        for (int i = 1; i < t - 1; ++i) seen_directly = seen_directly && cam[i].delta;
+        if (pt->type == VERTEX_ENVIRONMENT && seen_directly && !k->show_background) return zero;
+        L = pt->beta * vertex_le(scene, pt, seen_directly);
+    } else if (t == 1) {
+        const PathVertex* qs = &light[s - 1];
+        if (qs->type == VERTEX_ENVIRONMENT || (qs->type == VERTEX_SURFACE && !vertex_scatters(scene, qs))) return zero;
+        float4 u = rng_next4(rng);
+        CameraSample cs = camera_sample_wi(camera, qs->p, make_float2(u.x, u.y));
+        if (!cs.visible) return zero;
+        sampled.type = VERTEX_CAMERA;
+        sampled.p = cs.lens_point;
+        sampled.frame = frame_from_normal(float3_from_array(camera->forward));
+        sampled.beta = float3_splat(cs.importance / cs.pdf);
+        sampled.pdf_fwd = 0.0f;
+        sampled.pdf_rev = 0.0f;
+        sampled.delta = 0;
+        sampled.on_surface = 0;
+        sampled.index = 0;
+        sampled.epsilon = 0.0f;
+        float3 f = qs->type == VERTEX_SURFACE ? vertex_f(scene, qs, cs.wi, TRANSPORT_IMPORTANCE) : float3_splat(1.0f);
+        float cos_q = qs->on_surface ? fabs(dot(qs->frame.n, cs.wi)) : 1.0f;
+        L = qs->beta * f * sampled.beta * cos_q;
+        if (!(max_component(L) > 0.0f)) return zero;
+        if (!segment_unoccluded(bdpt_ray_origin(qs, cs.wi), cs.wi, cs.distance, -1, s_march, counters)) return zero;
+        *raster = cs.raster;
+    } else if (s == 1) {
+        const PathVertex* pt = &cam[t - 1];
+        if (!vertex_scatters(scene, pt)) return zero;
+        float4 u = rng_next4(rng);
+        float pmf;
+        int index = select_light(scene->light_cdf, k->light_count, u.z, &pmf);
+        if (!(pmf > 0.0f)) return zero;
+        Light l = scene->lights[index];
+        /* On an emissive sphere itself, the hit can lie a rounding error on the far side of the
+         * surface from the path, where the sphere's own sampler would see only a vanishing cap
+         * around it: sample from the point just off the surface on the path's side instead. */
+        float3 p_ref = vertex_emits(scene, pt) ? offset_origin(pt->p, pt->frame.n, pt->epsilon, 1.0f) : pt->p;
+        LightSample ls = sample_light(&l, &scene->env, scene->env_buffers, p_ref, make_float2(u.x, u.y));
+        if (!(ls.pdf > 0.0f) || !(max_component(ls.radiance) > 0.0f)) return zero;
+        sampled.type = l.type == LIGHT_ENVIRONMENT ? VERTEX_ENVIRONMENT : VERTEX_LIGHT;
+        sampled.p = l.type == LIGHT_ENVIRONMENT ? ls.wi : ls.position;
+        sampled.frame = frame_from_normal(ls.normal);
+        sampled.on_surface = l.type == LIGHT_SPHERE;
+        sampled.index = index;
+        sampled.delta = 0;
+        sampled.epsilon = 0.0f;
+        sampled.beta = ls.radiance / (pmf * ls.pdf);
+        sampled.pdf_rev = 0.0f;
+        sampled.pdf_fwd = vertex_pdf_light_origin(k, scene, &sampled);
+        L = pt->beta * vertex_f(scene, pt, ls.wi, TRANSPORT_RADIANCE) * sampled.beta * fabs(dot(ls.wi, pt->frame.n));
+        if (!(max_component(L) > 0.0f)) return zero;
+        if (!segment_unoccluded(bdpt_ray_origin(pt, ls.wi), ls.wi, ls.distance, l.material_slot, s_march, counters)) return zero;
+    } else {
+        const PathVertex* qs = &light[s - 1];
+        const PathVertex* pt = &cam[t - 1];
+        if (!vertex_scatters(scene, qs) || !vertex_scatters(scene, pt)) return zero;
+        float3 w = pt->p - qs->p;
+        float d2 = dot(w, w);
+        if (!(d2 > 0.0f)) return zero;
+        w = w * (1.0f / sqrt(d2));
+        float g = fabs(dot(qs->frame.n, w)) * fabs(dot(pt->frame.n, w)) / d2;
+        L = qs->beta * vertex_f(scene, qs, w, TRANSPORT_IMPORTANCE) * vertex_f(scene, pt, -w, TRANSPORT_RADIANCE) * pt->beta * g;
+        if (!(max_component(L) > 0.0f)) return zero;
+        if (!bdpt_surfaces_see_each_other(qs, pt, s_march, counters)) return zero;
+    }
+    *weight = bdpt_mis_weight(k, camera, scene, light, cam, &sampled, s, t);
+    return L;
+}
+
+/* Adds settings.sample_count samples to one pixel (pixel k is (k % width, k / width)), its t = 1
+ * connections to the splat buffer. A non-finite contribution is counted in accumulation.w (one per
+ * sample that had any) and left out. */
+SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel,
+                      GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* splat, GLOBAL_MEM uint* ray_counts,
+                      GLOBAL_MEM uint* lost_ray_counts) {
+    MarchSettings s_march = render_march_settings(k);
+    float x = (float)(pixel % camera->width), y = (float)(pixel / camera->width);
+    float4 sum = accumulation[pixel];
+    PathCounters counters;
+    counters.rays = 0u;
+    counters.lost_rays = 0u;
+    int max_vertices = min(max(k->max_vertices, 2), BDPT_MAX_VERTICES);
+    PathVertex cam[BDPT_MAX_VERTICES];
+    PathVertex light[BDPT_MAX_VERTICES];
+    for (int i = 0; i < k->sample_count; ++i) {
+        Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
+        /* t = 1 alone (the light tracer) needs no camera subpath: its lens vertex is sampled per connection */
+        bool camera_strategies = (k->strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
+        int n_cam = camera_strategies ? bdpt_camera_subpath(k, s_march, camera, scene, x, y, &rng, cam, max_vertices, &counters) : 1;
+        int n_light = k->light_count > 0 ? bdpt_light_subpath(k, s_march, scene, &rng, light, max_vertices - 1, &counters) : 0;
+        float3 l = float3_splat(0.0f);
+        bool finite = true;
+        for (int t = 1; t <= n_cam; ++t)
+            for (int s = 0; s <= n_light; ++s) {
+                int depth = s + t - 2;
+                /* (1, 1), the lens joined to a light, and (0, 2) make the same paths (a light seen
+                 * directly) with weight 1 each: (1, 1) only runs where (0, 2) cannot */
+                if (depth < 0 || s + t > max_vertices) continue;
+                if (s == 1 && t == 1 && bdpt_strategy_enabled(k->strategies, 0, 2)) continue;
+                if (!bdpt_strategy_enabled(k->strategies, s, t)) continue;
+                if (k->strategy_only >= 0 && k->strategy_only != s * 32 + t) continue;
+                float2 raster = make_float2(-1.0f, -1.0f);
+                float weight;
+                float3 c = bdpt_connect(k, s_march, camera, scene, light, cam, s, t, &rng, &raster, &weight, &counters);
+                if (!(max_component(c) > 0.0f) || !(k->unweighted || weight > 0.0f)) continue;
+                if (!k->unweighted) c = c * weight;
+                if (!finite3(c)) {
+                    finite = false;
+                    continue;
+                }
+                if (t == 1) film_splat(splat, camera->width, camera->height, raster.x, raster.y, c);
+                else l += c;
+            }
+        if (finite) sum += make_float4(l.x, l.y, l.z, 0.0f);
+        else sum.w += 1.0f;
+    }
+    accumulation[pixel] = sum;
+    ray_counts[pixel] += counters.rays;
+    lost_ray_counts[pixel] += counters.lost_rays;
+}
+
+#endif

@@ -1,0 +1,143 @@
+/* A vertex of a BDPT subpath and the densities BDPT's MIS weights are made of, after pbrt-v4's
+ * Vertex (docs/bdpt.md). Densities are per unit area at the vertex they lead to (times |cos| there
+ * when it lies on a surface), except where a vertex lies at infinity (the environment): there they
+ * stay per unit solid angle. Needs the scene declared before it, as kernels/path.h does. */
+#ifndef KERNELS_BDPT_VERTEX_H
+#define KERNELS_BDPT_VERTEX_H
+
+#include "single_source/vocabulary.h"
+#include "brdf/bsdf_transport.h"
+#include "kernels/camera.h"
+#include "kernels/lights/light_selection.h"
+#include "kernels/path.h"
+#include "kernels/render_scene.h"
+
+#define VERTEX_CAMERA 0      /* the lens point (the camera position for a pinhole) */
+#define VERTEX_LIGHT 1       /* a point on a sphere light or a point light: a light subpath's origin or a light sample */
+#define VERTEX_SURFACE 2     /* a scattering point; an emissive sphere the camera subpath hits is one too */
+#define VERTEX_ENVIRONMENT 3 /* the environment, at infinity: p holds the unit direction towards it */
+
+/* The largest subpath, in vertices, a kernel has room for (private arrays of fixed size). */
+#ifndef BDPT_MAX_VERTICES
+#define BDPT_MAX_VERTICES 16
+#endif
+
+typedef struct PathVertex {
+    float3 p;
+    ShadingFrame frame; /* surfaces and sphere lights: frame.n the normal (the SDF's, geometric = shading) */
+    float3 wo;          /* surfaces: towards the previous vertex, in the frame */
+    float3 beta;        /* the subpath's throughput up to here (light vertices: Le / (pmf pdf_position)) */
+    float pdf_fwd;      /* density of this vertex as its own subpath sampled it */
+    float pdf_rev;      /* density of this vertex as the other subpath would sample it */
+    float epsilon;      /* surfaces: the march's error scale at p */
+    int type;           /* VERTEX_* */
+    int index;          /* surfaces: material slot; lights: the light's index */
+    int delta;          /* surfaces: left by a delta lobe */
+    int on_surface;     /* has a normal a density converts with (surfaces, sphere lights) */
+} PathVertex;
+
+SS_FN bool vertex_emits(const RenderScene* scene, const PathVertex* v) {
+    if (v->type == VERTEX_SURFACE) return scene->emission[v->index].w > 0.0f;
+    return v->type != VERTEX_CAMERA;
+}
+
+/* A surface that can scatter: not a black emitter, which absorbs everything. */
+SS_FN bool vertex_scatters(const RenderScene* scene, const PathVertex* v) {
+    return v->type == VERTEX_SURFACE && !(scene->emission[v->index].w > 0.0f && scene->emission[v->index].w < EMISSION_SCATTERS);
+}
+
+/* The light a vertex emits as: its own index, or the light of an emissive surface's slot. */
+SS_FN int vertex_light_index(const RenderScene* scene, const PathVertex* v) {
+    if (v->type == VERTEX_SURFACE) return scene->light_of_slot[v->index];
+    return v->index;
+}
+
+/* Point lights are delta in position: no camera subpath can reach them. */
+SS_FN bool vertex_is_delta_light(const RenderScene* scene, const PathVertex* v) {
+    return v->type == VERTEX_LIGHT && scene->lights[v->index].type == LIGHT_POINT;
+}
+
+/* Unit direction from v towards w (either may lie at infinity). */
+SS_FN float3 vertex_direction(const PathVertex* v, const PathVertex* w) {
+    if (w->type == VERTEX_ENVIRONMENT) return w->p;
+    if (v->type == VERTEX_ENVIRONMENT) return -v->p;
+    return normalize(w->p - v->p);
+}
+
+/* A solid-angle density at `from` of the direction towards `to`, as a density at `to`. */
+SS_FN float vertex_convert_density(float pdf, const PathVertex* from, const PathVertex* to) {
+    if (to->type == VERTEX_ENVIRONMENT) return pdf;
+    float3 w = to->p - from->p;
+    float d2 = dot(w, w);
+    if (!(d2 > 0.0f)) return 0.0f;
+    float inv_d = 1.0f / sqrt(d2);
+    if (to->on_surface) pdf *= fabs(dot(to->frame.n, w * inv_d));
+    return pdf * inv_d * inv_d;
+}
+
+/* pmf times the density with which a light subpath starts at v: per unit area on a sphere light,
+ * 1 for a point light (a delta position), per unit solid angle of the direction for the environment
+ * (pbrt-v4's PdfLightOrigin). */
+SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* k, const RenderScene* scene, const PathVertex* v) {
+    int index = vertex_light_index(scene, v);
+    float pmf = light_selection_pmf(scene->light_cdf, k->light_count, index);
+    if (!(pmf > 0.0f)) return 0.0f;
+    Light light = scene->lights[index];
+    if (light.type == LIGHT_SPHERE) return pmf * sphere_light_area_pdf(&light);
+    if (light.type == LIGHT_POINT) return pmf;
+    return pmf * environment_light_pdf(&scene->env, scene->env_buffers, v->p);
+}
+
+/* The density at `next` of a light subpath leaving light vertex v towards it (pbrt-v4's
+ * PdfLight): a sphere emits from both sides, cosine-distributed on each; a point light uniformly;
+ * the environment from a disk of the scene's radius, uniform by area. */
+SS_FN float vertex_pdf_light(const RenderKernelSettings* k, const RenderScene* scene, const PathVertex* v, const PathVertex* next) {
+    Light light = scene->lights[vertex_light_index(scene, v)];
+    if (light.type == LIGHT_ENVIRONMENT) {
+        float pdf = 1.0f / (SS_PI * sqr(k->scene_radius));
+        return next->on_surface ? pdf * fabs(dot(next->frame.n, v->p)) : pdf;
+    }
+    float3 w = vertex_direction(v, next);
+    float pdf_dir = light.type == LIGHT_SPHERE ? fabs(dot(v->frame.n, w)) * (0.5f * SS_INV_PI) : SS_INV_4PI;
+    return vertex_convert_density(pdf_dir, v, next);
+}
+
+/* The density at `next` of v sampling it, coming from `prev` (ignored by the camera and lights). */
+SS_FN float vertex_pdf(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, const PathVertex* prev,
+                       const PathVertex* v, const PathVertex* next) {
+    if (v->type == VERTEX_CAMERA) {
+        float pdf_position, pdf_direction;
+        camera_pdf_we(camera, v->p, vertex_direction(v, next), &pdf_position, &pdf_direction);
+        return vertex_convert_density(pdf_direction, v, next);
+    }
+    if (v->type != VERTEX_SURFACE) return vertex_pdf_light(k, scene, v, next);
+    Material m = scene->materials[v->index];
+    float3 wp = frame_to_local(v->frame, vertex_direction(v, prev));
+    float3 wn = frame_to_local(v->frame, vertex_direction(v, next));
+    return vertex_convert_density(bsdf_pdf(&m, wp, wn), v, next);
+}
+
+/* f at surface vertex v between its previous vertex and unit world direction w, in the subpath's
+ * transport mode; 0 at surfaces that do not scatter. The caller passes the direction it sampled or
+ * connected along: one rebuilt from two nearly equal points would be noise. */
+SS_FN float3 vertex_f(const RenderScene* scene, const PathVertex* v, float3 w, int mode) {
+    if (!vertex_scatters(scene, v)) return float3_splat(0.0f);
+    Material m = scene->materials[v->index];
+    return bsdf_eval_mode(&m, v->wo, frame_to_local(v->frame, w), mode);
+}
+
+/* Radiance emitted by light or emitter vertex v towards `to`: a sphere's Le from both sides, the
+ * environment's along the direction (the filtered lookup where the eye sees it directly). */
+SS_FN float3 vertex_le(const RenderScene* scene, const PathVertex* v, bool seen_directly) {
+    if (v->type == VERTEX_ENVIRONMENT)
+        return seen_directly ? environment_radiance_filtered(&scene->env, scene->env_buffers.texels, v->p)
+                             : environment_radiance(&scene->env, scene->env_buffers.texels, v->p);
+    if (v->type == VERTEX_SURFACE) {
+        float4 e = scene->emission[v->index];
+        return make_float3(e.x, e.y, e.z);
+    }
+    Light light = scene->lights[v->index]; /* float3_from_array takes a private pointer */
+    return float3_from_array(light.emission);
+}
+
+#endif

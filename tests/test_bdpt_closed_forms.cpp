@@ -1,0 +1,73 @@
+// The render core's closed forms (tests/closed_form_scenes.hpp) with BDPT (every strategy) and the
+// light tracer (t = 1 alone): BDPT on the host C++ build of kernels/bdpt.h, the light tracer on the
+// OpenCL build of the same source. Paths of up to 16 vertices: the Lambert walls' 0.5^14 of the
+// light is below what the test can see. The same standard-error requirement as the path tracer's:
+// a 1 % error must be at least 4 standard errors.
+#include <catch2/catch.hpp>
+
+#include "opencl/runtime.hpp"
+#include "render/host_renderer.hpp"
+#include "render/opencl_renderer.hpp"
+#include "tests/closed_form_scenes.hpp"
+
+using namespace closed_forms;
+
+namespace {
+
+lab::render::RenderInput bdpt_input(const Case& c, lab::render::Integrator integrator, int size) {
+    lab::render::RenderInput input = case_input(c, LightSelection::power, size);
+    input.settings.integrator = integrator;
+    input.settings.max_vertices = 16;
+    return input;
+}
+
+}  // namespace
+
+TEST_CASE("Closed forms: BDPT on the host gives the exact pixel values", "[render][closed-form][bdpt][host]") {
+    std::vector<Case> all = cases();
+    for (const Case& c : {all[0], all[1]}) {
+        lab::render::HostRenderer renderer(bdpt_input(c, lab::render::Integrator::bdpt, 12));
+        check_case(c, LightSelection::power, renderer, 512);
+    }
+}
+
+// The light tracer's estimate is far noisier per path (every path splats wherever it lands): it
+// needs 16 times BDPT's paths for the same standard error, which the compiled kernel gives faster.
+TEST_CASE("Closed forms: the light tracer on the OpenCL device gives the exact pixel values", "[render][closed-form][bdpt][opencl]") {
+    lab::opencl::Runtime runtime("");
+    std::vector<Case> all = cases();
+    for (const Case& c : {all[0], all[1]}) {
+        lab::render::OpenClRenderer renderer(runtime, bdpt_input(c, lab::render::Integrator::lt, 12));
+        check_case(c, LightSelection::power, renderer, 9216);
+    }
+}
+
+// Each strategy alone, unweighted: inside an emitting Lambert sphere (Le = 0.25, rho = 0.5, the
+// camera at its centre; no point light), the paths of s + t = k vertices carry Le rho^(k-2) to every
+// pixel, and each of the k strategies (0, k), (1, k - 1), ..., (k - 1, 1) samples all of them. So
+// every unweighted strategy image of a length converges to the same value; checked for k = 3, 4
+// against the closed form within 2 %, each with its own standard error at most 0.5 %.
+TEST_CASE("BDPT: each strategy alone converges to the same image", "[render][bdpt][strategies]") {
+    std::string scene = std::string(R"({"camera": {"type": "pinhole", "position": [0, 0, 0], "look_at": [0, 0, -1], "fov_degrees": 60},
+      "materials": {)") + kWall + R"(},
+      "emitters": [{"center": [0, 0, 0], "radius": 1, "radiance": [0.25, 0.25, 0.25], "material": "wall"}]})";
+    for (int k : {3, 4}) {
+        Case c{"emitting Lambert sphere, paths of " + std::to_string(k) + " vertices", scene, 0.25 * std::pow(0.5, k - 2)};
+        for (int s = 0; s < k; ++s) {
+            bool splats = k - s == 1;  // light tracing's paths spread over the film: 16 times the paths for its error
+            lab::render::RenderInput input = bdpt_input(c, lab::render::Integrator::bdpt, splats ? 16 : 8);
+            input.settings.max_vertices = k;
+            input.settings.strategy_s = s;
+            input.settings.strategy_t = k - s;
+            input.settings.strategy_unweighted = true;
+            input.settings.roulette_depth = 64;  // no Russian roulette: its noise is not the strategy's
+            lab::render::HostRenderer renderer(input);
+            RenderResult r = render_samples(renderer, splats ? 4096 : 1024);
+            Mean m = image_mean(r.image);
+            INFO(c.name << ", strategy (" << s << ", " << k - s << "): mean " << m.value << " +- " << m.standard_error << ", exact "
+                        << c.expected);
+            REQUIRE(m.standard_error < 0.005 * c.expected);
+            CHECK(std::fabs(m.value - c.expected) < 0.02 * c.expected);
+        }
+    }
+}

@@ -1,0 +1,175 @@
+// BDPT and the light tracer as renderers: the t = 1 connection's edge cases (splats at the film's
+// border, light vertices behind the camera, points outside a thin lens's view), the same seed giving
+// the same image, and BDPT against the path tracer on the Cornell box by Welch's t-test per region
+// (Jung et al., JCGT 2020), which needs no converged reference.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "kernels/host.hpp"
+#include "render/camera_setup.hpp"
+#include "render/host_renderer.hpp"
+#include "scene/load_scene.hpp"
+#include "tests/render_inputs.hpp"
+#include "validation/uniform_random.hpp"
+
+namespace {
+
+using brdf::float3;
+
+kernel::Camera test_camera(float aperture) {
+    lab::scene::Camera c;
+    c.type = aperture > 0.0f ? lab::scene::CameraType::thin_lens : lab::scene::CameraType::pinhole;
+    c.position = float3(0.0f, 1.0f, 5.0f);
+    c.look_at = float3(0.0f, 1.0f, 0.0f);
+    c.fov_degrees = 40.0f;
+    c.aperture_radius = aperture;
+    c.focus_distance = 5.0f;
+    return lab::render::make_camera(c, 32, 24, "test");
+}
+
+float splat_total(const std::vector<unsigned>& splat) {
+    float sum = 0.0f;
+    for (unsigned bits : splat) sum += kernel::film_bits_to_float(bits);
+    return sum;
+}
+
+}  // namespace
+
+TEST_CASE("BDPT t = 1: splats at the film's border land in its edge pixels, beyond it nowhere", "[render][bdpt][splat]") {
+    std::vector<unsigned> splat(32 * 24 * 3, 0u);
+    const float3 one(1.0f);
+    kernel::film_splat(splat.data(), 32, 24, std::nextafter(32.0f, 0.0f), std::nextafter(24.0f, 0.0f), one);
+    CHECK(kernel::film_bits_to_float(splat[3 * (23 * 32 + 31)]) == 1.0f);
+    kernel::film_splat(splat.data(), 32, 24, 0.0f, 0.0f, one);
+    CHECK(kernel::film_bits_to_float(splat[0]) == 1.0f);
+    for (float x : {32.0f, -1e-6f})
+        for (float y : {0.5f, 23.5f}) kernel::film_splat(splat.data(), 32, 24, x, y, one);
+    kernel::film_splat(splat.data(), 32, 24, 5.0f, 24.0f, one);
+    kernel::film_splat(splat.data(), 32, 24, 5.0f, -1e-6f, one);
+    CHECK(splat_total(splat) == 6.0f);  // the two inside, three channels each
+}
+
+TEST_CASE("BDPT t = 1: lens connections from behind the camera or outside its view are not visible", "[render][bdpt][splat]") {
+    lab::validation::UniformRandom rng(11);
+    for (float aperture : {0.0f, 0.2f}) {
+        kernel::Camera cam = test_camera(aperture);
+        int visible = 0, visible_outside_pinhole_view = 0;
+        for (int i = 0; i < 20000; ++i) {
+            // points around the camera, in front of and behind it, inside and well outside the view
+            float3 p(float(rng.next_double() * 16.0 - 8.0), float(rng.next_double() * 16.0 - 7.0), float(rng.next_double() * 20.0 - 10.0));
+            brdf::float2 u(float(rng.next_double()), float(rng.next_double()));
+            kernel::CameraSample cs = kernel::camera_sample_wi(&cam, p, u);
+            float depth = glm::dot(p - float3(0.0f, 1.0f, 5.0f), float3(0.0f, 0.0f, -1.0f));
+            if (depth <= 0.0f) {
+                INFO("behind the camera: " << p.x << " " << p.y << " " << p.z);
+                CHECK(cs.visible == 0);  // the thin lens's points lie in its plane, so behind it is behind all of them
+                continue;
+            }
+            brdf::float2 raster;
+            bool in_pinhole_view = kernel::camera_raster(&cam, float3(0.0f, 1.0f, 5.0f), glm::normalize(p - float3(0.0f, 1.0f, 5.0f)), &raster) > 0.0f &&
+                                   kernel::camera_raster_inside(&cam, raster);
+            if (!cs.visible) continue;
+            ++visible;
+            INFO("aperture " << aperture << ", raster " << cs.raster.x << " " << cs.raster.y);
+            CHECK((cs.raster.x >= 0.0f && cs.raster.x < 32.0f && cs.raster.y >= 0.0f && cs.raster.y < 24.0f));
+            CHECK(cs.importance > 0.0f);
+            if (!in_pinhole_view) ++visible_outside_pinhole_view;
+        }
+        CHECK(visible > 100);
+        // a pinhole sees exactly its view; a thin lens also sees, from part of its lens, points just outside it
+        if (aperture == 0.0f) CHECK(visible_outside_pinhole_view == 0);
+        else CHECK(visible_outside_pinhole_view > 0);
+    }
+}
+
+namespace {
+
+lab::render::RenderInput scene_input(const std::string& path, lab::render::Integrator integrator, int size, uint64_t seed) {
+    std::ifstream file(path);
+    std::stringstream text;
+    text << file.rdbuf();
+    lab::render::RenderInput input = render_input(std::nullopt, "", size, lab::render::LightSampling::mis, seed, text.str());
+    input.settings.integrator = integrator;
+    return input;
+}
+
+}  // namespace
+
+TEST_CASE("BDPT: the same seed gives the same image", "[render][bdpt][seed]") {
+    // One thread: the splats land in one order, so the image is bit-identical. With several threads
+    // (and on OpenCL) the splat buffer's sums round in the order splats arrive: equal to rounding.
+    std::vector<float> images[3];
+    for (int run = 0; run < 3; ++run) {
+        lab::render::HostRenderer renderer(scene_input("scenes/cornell_box.json", lab::render::Integrator::bdpt, 12, run == 2 ? 8 : 7), 1);
+        images[run] = render_samples(renderer, 4).image.rgb;
+    }
+    REQUIRE(images[0].size() == images[1].size());
+    CHECK(std::memcmp(images[0].data(), images[1].data(), images[0].size() * sizeof(float)) == 0);
+    CHECK(std::memcmp(images[0].data(), images[2].data(), images[0].size() * sizeof(float)) != 0);  // a seed changes it
+}
+
+// Per region of the image, the mean over its pixels of each of N independent batches (sample ranges)
+// is one observation; Welch's t-test compares BDPT's N observations with the path tracer's. The two
+// estimate the same expectation, so with 9 regions and alpha = 0.001 each (Bonferroni: 0.009 for the
+// image), a region whose |t| exceeds the 0.9995 quantile of Student's t (about 3.9 at 14 degrees of
+// freedom; the test uses the quantile of the Welch-Satterthwaite degrees of freedom) fails.
+TEST_CASE("BDPT and the path tracer agree on the Cornell box, region by region (Welch's t-test)", "[render][bdpt][welch]") {
+    using lab::render::Integrator;
+    const int size = 24, regions = 3, batches = 8, spp = 8;
+    std::vector<std::vector<double>> observations[2];  // [integrator][region][batch]
+    int which = 0;
+    for (Integrator integrator : {Integrator::bdpt, Integrator::pt}) {
+        lab::render::RenderInput input = scene_input("scenes/cornell_box.json", integrator, size, 5);
+        input.settings.max_depth = 6;     // the path tracer's scattering events = bdpt's 8 vertices - 2
+        lab::render::HostRenderer renderer(input);
+        renderer.set_samples_per_launch(spp);
+        std::vector<float> previous(size_t(size) * size * 3, 0.0f);
+        observations[which].assign(regions * regions, {});
+        for (int b = 0; b < batches; ++b) {
+            renderer.add_samples(spp);
+            std::vector<float> cumulative = renderer.image().rgb;
+            // the batch's own mean: the cumulative means differenced
+            for (int ry = 0; ry < regions; ++ry)
+                for (int rx = 0; rx < regions; ++rx) {
+                    double sum = 0.0;
+                    int side = size / regions;
+                    for (int y = ry * side; y < (ry + 1) * side; ++y)
+                        for (int x = rx * side; x < (rx + 1) * side; ++x)
+                            for (int c = 0; c < 3; ++c) {
+                                size_t i = (size_t(y) * size + x) * 3 + c;
+                                sum += double(cumulative[i]) * (b + 1) - double(previous[i]) * b;
+                            }
+                    observations[which][ry * regions + rx].push_back(sum / (3.0 * side * side));
+                }
+            previous = cumulative;
+        }
+        ++which;
+    }
+    for (int r = 0; r < regions * regions; ++r) {
+        double mean[2], var[2];
+        for (int i = 0; i < 2; ++i) {
+            const std::vector<double>& o = observations[i][r];
+            mean[i] = 0.0;
+            for (double v : o) mean[i] += v / o.size();
+            var[i] = 0.0;
+            for (double v : o) var[i] += (v - mean[i]) * (v - mean[i]) / (o.size() - 1);
+        }
+        double se2 = var[0] / batches + var[1] / batches;
+        double t = (mean[0] - mean[1]) / std::sqrt(se2);
+        double dof = se2 * se2 / (std::pow(var[0] / batches, 2) / (batches - 1) + std::pow(var[1] / batches, 2) / (batches - 1));
+        // the 0.9995 quantile of Student's t, by the Cornish-Fisher expansion about the normal's 3.2905
+        double z = 3.2905, z3 = z * z * z, z5 = z3 * z * z;
+        double quantile = z + (z3 + z) / (4 * dof) + (5 * z5 + 16 * z3 + 3 * z) / (96 * dof * dof);
+        INFO("region " << r << ": bdpt " << mean[0] << " +- " << std::sqrt(var[0] / batches) << ", pt " << mean[1] << " +- "
+                       << std::sqrt(var[1] / batches) << ", t = " << t << ", dof " << dof << ", quantile " << quantile);
+        CHECK(std::fabs(t) < quantile);
+        // the test can see a 30 % difference in any region (8 spp batches on 24 x 24 pixels; the path
+        // tracer's caustics through the glass make its dark regions noisy); 10 % in the bright ones
+        CHECK(quantile * std::sqrt(se2) < 0.3 * std::fabs(mean[1]));
+    }
+}
