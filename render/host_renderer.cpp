@@ -3,7 +3,7 @@
 #include <atomic>
 #include <thread>
 
-#include "scene/interpreter.hpp"
+#include "scene/host_field.hpp"
 
 namespace lab::render {
 
@@ -13,11 +13,7 @@ namespace lab::render {
 namespace host_integrator {
 
 using namespace ::kernel;
-thread_local const scene::Scene* current_scene = nullptr;
-
-inline float scene_distance(float3 p) { return scene::scene_distance(*current_scene, p); }
-inline float scene_distance_material(float3 p, int* material) { return scene::scene_distance_material(*current_scene, p, material); }
-inline int scene_analytic_normal(float3 p, float3* n) { return scene::scene_analytic_normal(*current_scene, p, n); }
+using namespace scene::host_field;
 
 #include "sdf/march.h"
 #include "sdf/normals.h"
@@ -63,7 +59,7 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
     const bool bidirectional = input_.settings.integrator != Integrator::pt;
     std::atomic<int> next{0};
     auto work = [&] {
-        host_integrator::current_scene = &input_.scene;
+        scene::host_field::current_scene = &input_.scene;
         // Rows of pixels at a time: few enough atomics, small enough to balance the threads.
         const int chunk = std::max(1, input_.settings.width);
         for (int begin = next.fetch_add(chunk); begin < pixels; begin = next.fetch_add(chunk))

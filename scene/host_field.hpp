@@ -1,0 +1,19 @@
+// The scene's distance field as the free functions the single-source kernel headers call
+// (scene_distance, scene_distance_material, scene_analytic_normal; in a kernel the generated
+// scene/generated.h defines them), for the host builds of those headers: the host renderer and the
+// viewer's pixel probe. They evaluate, through the host interpreter, the scene this thread set in
+// `current_scene`. A host build brings them in with `using namespace lab::scene::host_field;` in the
+// namespace that includes sdf/march.h and the kernel headers.
+#pragma once
+
+#include "scene/interpreter.hpp"
+
+namespace lab::scene::host_field {
+
+inline thread_local const Scene* current_scene = nullptr;
+
+inline float scene_distance(Vec3 p) { return scene::scene_distance(*current_scene, p); }
+inline float scene_distance_material(Vec3 p, int* material) { return scene::scene_distance_material(*current_scene, p, material); }
+inline int scene_analytic_normal(Vec3 p, Vec3* n) { return scene::scene_analytic_normal(*current_scene, p, n); }
+
+}  // namespace lab::scene::host_field
