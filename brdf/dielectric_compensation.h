@@ -32,7 +32,7 @@ SS_FN float dielectric_energy_albedo(int side, float r, float eta, float mu) {
     int k = min((int)x, DIELECTRIC_GRID_IOR - 2);
     float y = energy_grid_node_coordinate(r, 0.0f, 1.0f, DIELECTRIC_GRID_ROUGHNESS);
     int i = min((int)y, DIELECTRIC_GRID_ROUGHNESS - 2);
-    float z = energy_grid_node_coordinate(mu, 0.0f, 1.0f, DIELECTRIC_GRID_MU);
+    float z = energy_grid_mu_coordinate_of(mu, DIELECTRIC_GRID_MU);
     float e[2];
     for (int dk = 0; dk < 2; ++dk) {
         CONSTANT_MEM const float* slice = energy_dielectric_albedo + ((side * DIELECTRIC_GRID_IOR + k + dk) * DIELECTRIC_GRID_ROUGHNESS + i) * DIELECTRIC_GRID_MU;

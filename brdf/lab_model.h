@@ -111,13 +111,25 @@ SS_FN float3 lab_multiple_scattering_eval(const Material* m, Microfacet mf, floa
 
 SS_FN float mean3(float3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 
+#if BRDF_FEATURE_GLOSSY
+/* How much more peaked than cosine-weighted the glossy lobe is at wo: pi f cos_i at the mirror
+ * direction with F = 1, where the lobe peaks, over the single-scattering albedo's bound of 1 (a
+ * Lambertian lobe gives 1), less 1; at most 0 where cosine sampling matches the lobe's peak. */
+SS_FN float lab_glossy_peak_excess(Microfacet mf, float3 wo) {
+    float3 mirror = make_float3(-wo.x, -wo.y, wo.z);
+    return SS_PI * microfacet_reflection_eval(mf, float3_splat(1.0f), wo, mirror).x * mirror.z - 1.0f;
+}
+#endif
+
 /* Probabilities of the sampling strategies at wo: cosine-weighted (the diffuse lobe's Lambert and
  * Disney parts, and the multiple-scattering lobe), the Henyey-Greenstein phase function (the
  * subsurface part), the glossy lobe's visible normals or its mirror, the mirror lobe, the dielectric.
  * Each is proportional to an estimate of what its lobe reflects at wo: the lobe weight times the
- * albedo (diffuse, dielectric; the subsurface part's share goes to its sampler in proportion to |g|), the Schlick Fresnel reflectance at wo (glossy, mirror) or F_ms (1 - E(mu_o))
- * (multiple scattering), so a faint lobe is rarely sampled. A floor keeps every lobe that can be non-zero
- * sampleable. They depend on wo only, so lab_pdf() recomputes them exactly. */
+ * albedo (diffuse, dielectric), the Schlick Fresnel reflectance at wo (glossy, mirror) or
+ * F_ms (1 - E(mu_o)) (multiple scattering), so a faint lobe is rarely sampled. A floor keeps every lobe that can be non-zero
+ * sampleable. A glossy or subsurface sampler then keeps only the part of its lobe's probability that
+ * its peak repays over cosine sampling, which takes the rest (docs/materials.md, Sampling). They
+ * depend on wo only, so lab_pdf() recomputes them exactly. */
 typedef struct LobeChoice {
     float cosine, subsurface, glossy, specular, transmission;
 } LobeChoice;
@@ -132,9 +144,15 @@ SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf
     float diffuse = up ? w.diffuse * albedo : 0.0f;
     c.subsurface = 0.0f;
 #if BRDF_FEATURE_SUBSURFACE
-    /* the phase function's sampler pays off where the phase function is peaked; near g = 0 the lobe is
-     * close to cosine-shaped and cosine sampling matches it better */
-    c.subsurface = diffuse * m->subsurface * fabs(m->subsurface_asymmetry);
+    /* the phase function's sampler pays off only where its peak is denser than cosine sampling there:
+     * p_HG at its peak (-wo mirrored up for g > 0, wo for g < 0) is (1 + |g|) / (4 pi (1 - |g|)^2), cosine
+     * sampling's density there cos_o / pi. Its share grows with that excess and with |g| (near g = 0 the
+     * lobe is close to cosine-shaped); cosine sampling takes the rest */
+    if (up) {
+        float g = fabs(m->subsurface_asymmetry);
+        float peak = (1.0f + g) / (4.0f * sqr(1.0f - g) * wo.z);
+        c.subsurface = diffuse * m->subsurface * g * clamp(peak - 1.0f, 0.0f, 1.0f);
+    }
 #endif
     c.cosine = diffuse - c.subsurface;
     c.glossy = w.glossy * reflectance;
@@ -148,6 +166,19 @@ SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf
     /* divided rather than multiplied by 1 / sum: a lone lobe then gets probability 1 exactly */
     float sum = c.cosine + c.subsurface + c.glossy + c.specular + c.transmission;
     if (!(sum > 0.0f)) return c;
+#if BRDF_FEATURE_GLOSSY
+    /* the glossy lobe's own sampler gets the part of its share that its peak repays; cosine sampling
+     * takes the rest. Next to other lobes, the sampler's directions below the horizon are lost and the
+     * others are sampled less: a cost in proportion to the others' share 1 - q, against a gain in
+     * proportion to the glossy lobe's share q and its peak's excess over cosine sampling. A lone glossy
+     * lobe (q = 1) keeps its sampler, whose weights are at most 1. */
+    if (up && c.glossy > 0.0f && !microfacet_is_smooth(mf)) {
+        float q = c.glossy / sum;
+        float share = q < 1.0f ? clamp(lab_glossy_peak_excess(mf, wo) * q / (1.0f - q), 0.0f, 1.0f) : 1.0f;
+        c.cosine += c.glossy * (1.0f - share);
+        c.glossy *= share;
+    }
+#endif
     c.cosine /= sum;
     c.subsurface /= sum;
     c.glossy /= sum;

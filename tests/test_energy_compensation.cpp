@@ -6,10 +6,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <tuple>
 #include <vector>
 
 #include "brdf/brdf.hpp"
 #include "brdf/host/angles.hpp"
+#include "brdf/host/preset.hpp"
 #include "tests/lobe_material.hpp"
 #include "validation/albedo.hpp"
 #include "validation/energy.hpp"
@@ -91,11 +94,13 @@ TEST_CASE("energy tables: entries agree with an independent Monte Carlo estimate
           "[energy_compensation]") {
     // the estimate goes through bsdf_sample() of a whole material with its own random strata, not the
     // generator's midpoint grid over the lobe; the tolerance is 5 of its standard errors plus the
-    // table's interpolation-free node error bound of 1e-3
+    // table's interpolation-free node error bound of 1e-3. Node 1 (mu = 0.001, 89.94 deg) is next to
+    // grazing, where the generator lifts the nodes so the interpolant stays above E
+    // (validation/energy_tables.hpp): there the table may only be above the estimate.
     double worst = 0.0;
     for (const Distribution& d : kDistributions)
         for (int i : {3, 10, 18, 25, 31})
-            for (int j : {1, 6, 14, 22, 31}) {
+            for (int j : {1, 6, 14, 22, 31}) {  // mu 0.001, 0.037, 0.20, 0.50, 1
                 float r = brdf::energy_grid_roughness(i), mu = brdf::energy_grid_mu(j);
                 brdf::Material m = white_conductor(d.kind, d.shape, r, 0);
                 brdf::Microfacet mf = brdf::microfacet_from_material(&m);
@@ -103,39 +108,39 @@ TEST_CASE("energy tables: entries agree with an independent Monte Carlo estimate
                 AlbedoEstimate a = directional_albedo(m, wo, 64, 11);
                 double table = brdf::microfacet_energy_albedo(mf, mu);
                 double tolerance = 5.0 * a.std_error.x + 1e-3;
-                worst = std::fmax(worst, std::fabs(table - a.value.x) / tolerance);
+                double difference = j == 1 ? std::fmax(a.value.x - table, 0.0) : std::fabs(table - a.value.x);
+                worst = std::fmax(worst, difference / tolerance);
                 INFO(d.name << " roughness " << r << " mu " << mu << ": table " << table << ", Monte Carlo " << a.value.x
                             << " +- " << a.std_error.x);
-                CHECK(std::fabs(table - a.value.x) <= tolerance);
+                CHECK(difference <= tolerance);
             }
     std::printf("energy tables vs Monte Carlo: largest |difference| / tolerance %.3f\n", worst);
 }
 
 TEST_CASE("energy tables: the committed tables are what the generator writes", "[energy_compensation]") {
-    // a regeneration of sample entries at the generator's own resolution (tools/generate_energy_tables)
-    for (int i : {5, 19, 31})
-        for (int j : {0, 15, 31}) {
-            double ggx = single_scattering_albedo(BRDF_DISTRIBUTION_GGX, 2.0f, brdf::energy_grid_roughness(i), brdf::energy_grid_mu(j), kEnergyTableStrata);
-            CHECK(brdf::energy_ggx_albedo[i * ENERGY_GRID_MU + j] == Approx(std::fmin(ggx, 1.0)).margin(2e-7));
-            int k = (i + j) % ENERGY_GRID_SHAPE;
-            double hc = single_scattering_albedo(BRDF_DISTRIBUTION_HYPER_CAUCHY, brdf::energy_grid_shape(k),
-                                                 brdf::energy_grid_roughness(i), brdf::energy_grid_mu(j), kEnergyTableStrata);
-            CHECK(brdf::energy_hyper_cauchy_albedo[(k * ENERGY_GRID_ROUGHNESS + i) * ENERGY_GRID_MU + j] ==
-                  Approx(std::fmin(hc, 1.0)).margin(2e-7));
+    // a regeneration of sample rows at the generator's own resolution (tools/generate_energy_tables)
+    auto check_row = [](const std::function<double(float, float)>& albedo, int n_r, int n_mu, int i, const float* committed) {
+        std::vector<float> row = energy_slice(albedo, n_r, n_mu, 2, i, i);
+        for (int j = 0; j < n_mu; ++j) {
+            INFO("roughness node " << i << ", mu node " << j);
+            CHECK(committed[i * n_mu + j] == Approx(row[size_t(j)]).margin(2e-7));
         }
+    };
+    for (int i : {5, 19, 31}) {
+        check_row([](float r, float mu) { return single_scattering_albedo(BRDF_DISTRIBUTION_GGX, 2.0f, r, mu, kEnergyTableStrata); },
+                  ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, i, brdf::energy_ggx_albedo);
+        int k = i % ENERGY_GRID_SHAPE;
+        check_row([&](float r, float mu) {
+            return single_scattering_albedo(BRDF_DISTRIBUTION_HYPER_CAUCHY, brdf::energy_grid_shape(k), r, mu, kEnergyTableStrata);
+        }, ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, i, brdf::energy_hyper_cauchy_albedo + k * ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU);
+    }
     for (int i : {0, 12, 31}) CHECK(brdf::energy_ggx_average[i] == Approx(average_albedo(brdf::energy_ggx_albedo + i * ENERGY_GRID_MU)).margin(2e-7));
     // the dielectric's, from both sides
-    for (int side : {0, 1})
-        for (int k : {2, 6})
-            for (int i : {4, 15})
-                for (int j : {3, 20}) {
-                    double e = dielectric_single_scattering_albedo(side, brdf::energy_grid_node(i, 0.0f, 1.0f, DIELECTRIC_GRID_ROUGHNESS),
-                                                                   brdf::energy_grid_ior(k),
-                                                                   brdf::energy_grid_node(j, 0.0f, 1.0f, DIELECTRIC_GRID_MU),
-                                                                   kEnergyTableStrata * kDielectricStrataFactor);
-                    int index = ((side * DIELECTRIC_GRID_IOR + k) * DIELECTRIC_GRID_ROUGHNESS + i) * DIELECTRIC_GRID_MU + j;
-                    CHECK(brdf::energy_dielectric_albedo[index] == Approx(std::fmin(e, 1.0)).margin(2e-7));
-                }
+    for (auto [side, k, i] : {std::tuple<int, int, int>{0, 2, 15}, {1, 6, 4}})
+        check_row([&, side = side, k = k](float r, float mu) {
+            return dielectric_single_scattering_albedo(side, r, brdf::energy_grid_ior(k), mu, kEnergyTableStrata * kDielectricStrataFactor);
+        }, DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_MU, i,
+                  brdf::energy_dielectric_albedo + (side * DIELECTRIC_GRID_IOR + k) * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU);
 }
 
 TEST_CASE("energy tables: dielectric entries agree with quadrature, which no sampler enters", "[energy_compensation]") {
@@ -149,7 +154,7 @@ TEST_CASE("energy tables: dielectric entries agree with quadrature, which no sam
                 for (int j : {2, 12, 20}) {  // not at the pole, where the quadrature's cells meet
                     float r = brdf::energy_grid_node(i, 0.0f, 1.0f, DIELECTRIC_GRID_ROUGHNESS);
                     float ior = brdf::energy_grid_ior(k);
-                    float mu = brdf::energy_grid_node(j, 0.0f, 1.0f, DIELECTRIC_GRID_MU);
+                    float mu = brdf::energy_grid_mu_node(j, DIELECTRIC_GRID_MU);
                     brdf::Material m = lobe_material(0, 0, 0, 1);
                     m.albedo[0] = m.albedo[1] = m.albedo[2] = 1.0f;
                     m.roughness = r;
@@ -287,4 +292,19 @@ TEST_CASE("Hyper-Cauchy visible normals: the sampled furnace needs no quadrature
         }
     std::printf("Hyper-Cauchy visible normals: largest sample weight %.4f (bound 1)\n", worst);
     CHECK(worst <= 1.0 + 1e-4);
+}
+
+TEST_CASE("energy compensation: the compensated presets reflect at most what they receive, up to grazing view",
+          "[energy_compensation]") {
+    // gold reached 1.0013 at 89.9 deg and frosted glass 1.0020 from inside at 120 deg while the tables
+    // were not conservative; validate's limit 1 + 1e-3 and its estimator (3 standard errors, then
+    // quadrature) decide, as for `dtoadq validate`
+    for (const char* path : {"presets/gold.json", "presets/frosted_glass.json"}) {
+        brdf::Material m = brdf::load_preset(path).material;
+        REQUIRE(m.energy_compensation == 1);  // the default
+        FurnaceOptions options;
+        AlbedoPeak peak = max_directional_albedo(m, options);
+        INFO(path << ": largest albedo " << peak.albedo << " +- " << peak.std_error << " at theta " << peak.theta_deg);
+        CHECK(peak.albedo <= 1.0 + options.limit);
+    }
 }

@@ -1,7 +1,9 @@
 #include "validation/energy_tables.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <sstream>
 
 #include "brdf/host/parameters.hpp"
@@ -16,8 +18,9 @@ double single_scattering_albedo(int distribution, float shape, float roughness, 
     m.hc_shape = shape;
     m.roughness = roughness;
     brdf::Microfacet mf = brdf::microfacet_from_material(&m);
-    if (brdf::microfacet_is_smooth(mf)) return 1.0;
-    mu = std::fmax(mu, 1e-3f);  // the grid's node at mu = 0 stands for grazing incidence
+    // at mu = 0 the limit is exactly 1: the masking of wo grows without bound, so G2 / G1(wo) -> 1, and
+    // every direction reflected off a visible normal is above the horizon
+    if (brdf::microfacet_is_smooth(mf) || !(mu > 0.0f)) return 1.0;
     brdf::float3 wo(std::sqrt(std::fmax(0.0f, 1.0f - mu * mu)), 0.0f, mu);
     const brdf::float3 white(1.0f);
     double sum = 0.0;
@@ -41,7 +44,7 @@ double dielectric_single_scattering_albedo(int side, float roughness, float ior,
     m.roughness = roughness;
     m.energy_compensation = 0;
     m.ior = std::fmax(ior, 1.01f);  // the grid's node at ior 1 stands for a rough interface of nearly matched index
-    mu = std::fmax(mu, 1e-3f);
+    mu = std::fmax(mu, 1e-5f);  // the node at mu = 0 holds grazing incidence
     brdf::float3 wo(std::sqrt(std::fmax(0.0f, 1.0f - mu * mu)), 0.0f, side == 0 ? mu : -mu);
     return directional_albedo(m, wo, strata, 1).value.x;
 }
@@ -62,20 +65,76 @@ float average_albedo(const float* row, int n_mu) {
     double sum = 0.0;
     for (int k = 0; k < n; ++k) {
         float mu = (float(k) + 0.5f) / float(n);
-        sum += double(brdf::energy_grid_lerp(row, n_mu, brdf::energy_grid_node_coordinate(mu, 0.0f, 1.0f, n_mu))) * mu;
+        sum += double(brdf::energy_grid_lerp(row, n_mu, brdf::energy_grid_mu_coordinate_of(mu, n_mu))) * mu;
     }
     return float(2.0 * sum / n);
 }
 
 namespace {
 
+// point k of a row: node k / 2, or the midpoint (even in sqrt(mu)) after it for odd k
+float row_point_mu(int k, int n_mu) {
+    float s = 0.5f * float(k) / float(n_mu - 1);
+    return s * s;
+}
+
+// raises both ends of each interval by how far its midpoint lies above the chord
+void lift_row(const double* points, int n_mu, float* row) {
+    std::vector<double> lift(size_t(n_mu), 0.0);
+    for (int j = 0; j + 1 < n_mu; ++j) {
+        double lo = std::fmin(points[2 * j], 1.0), hi = std::fmin(points[2 * j + 2], 1.0);
+        double deficit = std::fmax(std::fmin(points[2 * j + 1], 1.0) - 0.5 * (lo + hi), 0.0);
+        lift[size_t(j)] = std::fmax(lift[size_t(j)], deficit);
+        lift[size_t(j) + 1] = std::fmax(lift[size_t(j) + 1], deficit);
+    }
+    for (int j = 0; j < n_mu; ++j) row[j] = float(std::fmin(std::fmin(points[2 * j], 1.0) + lift[size_t(j)], 1.0));
+}
+
+}  // namespace
+
+std::vector<float> energy_slice(const std::function<double(float roughness, float mu)>& albedo, int n_r, int n_mu, int threads,
+                                int first, int last) {
+    // the rows first - 1 to last + 1 (in the grid) and the mid rows between them, at every mu point
+    const int lo = std::max(first - 1, 0), hi = std::min(last + 1, n_r - 1), per_row = 2 * n_mu - 1, half_rows = 2 * (hi - lo) + 1;
+    std::vector<double> points(size_t(half_rows) * size_t(per_row));
+    parallel_for(half_rows * per_row, threads, [&](int k) {
+        float roughness = 0.5f * float(2 * lo + k / per_row) / float(n_r - 1);
+        points[size_t(k)] = albedo(roughness, row_point_mu(k % per_row, n_mu));
+    });
+    const int rows = hi - lo + 1;
+    std::vector<float> base(size_t(rows) * size_t(n_mu));
+    for (int i = 0; i < rows; ++i) lift_row(points.data() + size_t(2 * i) * per_row, n_mu, base.data() + size_t(i) * n_mu);
+    // lift[i][j]: how far the mid rows on either side of row i lie above the bilinear interpolant near node j
+    std::vector<double> lift(base.size(), 0.0);
+    for (int i = 0; i + 1 < rows; ++i) {
+        const float *a = base.data() + size_t(i) * n_mu, *b = a + n_mu;
+        const double* mid = points.data() + size_t(2 * i + 1) * per_row;
+        auto raise = [&](int j, double deficit) {
+            for (int row : {i, i + 1}) lift[size_t(row) * n_mu + j] = std::fmax(lift[size_t(row) * n_mu + j], deficit);
+        };
+        for (int j = 0; j < n_mu; ++j) raise(j, std::fmin(mid[2 * j], 1.0) - 0.5 * (double(a[j]) + b[j]));
+        for (int j = 0; j + 1 < n_mu; ++j) {
+            double deficit = std::fmin(mid[2 * j + 1], 1.0) - 0.25 * (double(a[j]) + a[j + 1] + b[j] + b[j + 1]);
+            raise(j, deficit);
+            raise(j + 1, deficit);
+        }
+    }
+    std::vector<float> out;
+    for (int i = first; i <= last; ++i)
+        for (int j = 0; j < n_mu; ++j) {
+            size_t k = size_t(i - lo) * n_mu + j;
+            out.push_back(float(std::fmin(double(base[k]) + lift[k], 1.0)));
+        }
+    return out;
+}
+
+namespace {
+
 // one table of [roughness][mu] for a distribution and shape, and its averages
 void fill_slice(int distribution, float shape, int strata, int threads, float* albedo, float* average) {
-    parallel_for(ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU, threads, [&](int k) {
-        int i = k / ENERGY_GRID_MU, j = k % ENERGY_GRID_MU;
-        albedo[k] = float(std::fmin(1.0, single_scattering_albedo(distribution, shape, brdf::energy_grid_roughness(i),
-                                                                  brdf::energy_grid_mu(j), strata)));
-    });
+    std::vector<float> slice = energy_slice([&](float r, float mu) { return single_scattering_albedo(distribution, shape, r, mu, strata); },
+                                            ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, threads, 0, ENERGY_GRID_ROUGHNESS - 1);
+    std::copy(slice.begin(), slice.end(), albedo);
     for (int i = 0; i < ENERGY_GRID_ROUGHNESS; ++i) average[i] = average_albedo(albedo + i * ENERGY_GRID_MU);
 }
 
@@ -120,15 +179,13 @@ EnergyTables compute_energy_tables(int strata, int threads) {
     const int rows = 2 * DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS;
     t.dielectric_albedo.resize(size_t(rows) * DIELECTRIC_GRID_MU);
     t.dielectric_average.resize(size_t(rows));
-    parallel_for(rows * DIELECTRIC_GRID_MU, threads, [&](int n) {
-        int j = n % DIELECTRIC_GRID_MU, i = (n / DIELECTRIC_GRID_MU) % DIELECTRIC_GRID_ROUGHNESS;
-        int k = (n / (DIELECTRIC_GRID_MU * DIELECTRIC_GRID_ROUGHNESS)) % DIELECTRIC_GRID_IOR, side = n / (DIELECTRIC_GRID_MU * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_IOR);
-        t.dielectric_albedo[size_t(n)] = float(std::fmin(
-            1.0, dielectric_single_scattering_albedo(side, brdf::energy_grid_node(i, 0.0f, 1.0f, DIELECTRIC_GRID_ROUGHNESS),
-                                                     brdf::energy_grid_ior(k),
-                                                     brdf::energy_grid_node(j, 0.0f, 1.0f, DIELECTRIC_GRID_MU),
-                                                     strata * kDielectricStrataFactor)));
-    });
+    for (int side : {0, 1})
+        for (int k = 0; k < DIELECTRIC_GRID_IOR; ++k) {
+            std::vector<float> slice = energy_slice([&](float r, float mu) {
+                return dielectric_single_scattering_albedo(side, r, brdf::energy_grid_ior(k), mu, strata * kDielectricStrataFactor);
+            }, DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_MU, threads, 0, DIELECTRIC_GRID_ROUGHNESS - 1);
+            std::copy(slice.begin(), slice.end(), t.dielectric_albedo.begin() + ptrdiff_t((side * DIELECTRIC_GRID_IOR + k) * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU));
+        }
     for (int r = 0; r < rows; ++r) t.dielectric_average[size_t(r)] = average_albedo(t.dielectric_albedo.data() + size_t(r) * DIELECTRIC_GRID_MU, DIELECTRIC_GRID_MU);
     for (int k = 0; k < DIELECTRIC_GRID_IOR; ++k)
         t.dielectric_fresnel.push_back(dielectric_fresnel_average_of(std::fmax(brdf::energy_grid_ior(k), 1.01f)));

@@ -4,6 +4,7 @@
 // compare entries with an independent estimate and with a regeneration.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,18 @@ inline constexpr int kDielectricStrataFactor = 2;
 
 // E(mu) of the lab model's glossy lobe with F0 = 1 and compensation off, isotropic, by the lobe's
 // own visible-normal sampler over a strata x strata midpoint grid (the weight f cos / pdf is at most
-// 1, so the grid converges fast). 1 where the lobe is a mirror; mu below 1e-3 is taken as 1e-3.
+// 1, so the grid converges fast). 1 where the lobe is a mirror, and at mu = 0 (the limit).
 double single_scattering_albedo(int distribution, float shape, float roughness, float mu, int strata);
+
+// Rows first to last of a [roughness][mu] table of albedo(roughness, mu) over n_r nodes even in
+// roughness and the n_mu-node mu grid (brdf/energy_grid.h), made conservative. Compensated lobes add
+// 1 - E_table(mu), so a table below the true E (the interpolant between nodes, where E turns fast:
+// at grazing, or with roughness) would reflect more light than it receives. So E is also estimated
+// between the nodes (the midpoints in sqrt(mu) and in roughness, and the cells' centres); where one
+// lies above the interpolant, the nodes around it are raised by the difference. That trades the gain
+// for a loss no larger than the lift. Values are clamped to 1; the nodes' neighbours are computed too.
+std::vector<float> energy_slice(const std::function<double(float roughness, float mu)>& albedo, int n_r, int n_mu, int threads,
+                                int first, int last);
 
 // E_avg = 2 int_0^1 E(mu) mu dmu of one row of the table, integrating the interpolant the lookup uses.
 float average_albedo(const float* row, int n = ENERGY_GRID_MU);

