@@ -83,7 +83,7 @@ TEST_CASE("validate_material stops at once when cancelled, saying so", "[viewer]
     CHECK(v.smallest_p_value == 1.0);
 }
 
-TEST_CASE("--set goes through the preset loader: units, ranges and names", "[viewer]") {
+TEST_CASE("Viewer: --set goes through the preset loader: units, ranges and names", "[viewer]") {
     brdf::Preset p;
     p.name = "x";
     p.material = brdf::default_material();

@@ -282,6 +282,12 @@ set_tests_properties(cli.render.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT
 cli_bad_input(NAME bench.compare_to_missing EXPECT "${E}${D}/absent_binary: is not an executable file$"
               ARGS bench compare --to ${D}/absent_binary)
 
+# --- BDPT's strategies, one image each (render --strategies DIR) ------------------------------------
+add_test(NAME cli.render.strategy_images
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/strategy_images -DSOURCE=${PROJECT_SOURCE_DIR}
+                 -P ${CLI_TEST_DIR}/expect_strategy_images.cmake)
+set_tests_properties(cli.render.strategy_images PROPERTIES LABELS cli TIMEOUT 120)
+
 # --- a render split by sample range (render --samples A:B), merged (dtoadq merge) and resumed ----
 add_test(NAME cli.render.split_merge_resume
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/split_render -DSOURCE=${PROJECT_SOURCE_DIR}
