@@ -15,16 +15,8 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
                         __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts) {
     int pixel = (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
-    RenderScene scene;
-    scene.materials = materials;
-    scene.emission = emission;
-    scene.lights = lights;
-    scene.light_cdf = light_cdf;
-    scene.light_of_slot = light_of_slot;
-    scene.env = env;
-    scene.env_buffers.texels = env_texels;
-    scene.env_buffers.marginal_cdf = env_marginal_cdf;
-    scene.env_buffers.conditional_cdf = env_conditional_cdf;
+    RenderScene scene = render_scene_make(materials, emission, lights, light_cdf, light_of_slot, env, env_texels, env_marginal_cdf,
+                                          env_conditional_cdf);
     (void)splat; /* the path tracer adds to its own pixel only */
     path_tracer_pixel(&settings, &camera, &scene, pixel, accumulation, ray_counts, lost_ray_counts);
 }

@@ -27,4 +27,23 @@ typedef struct RenderScene {
     EnvironmentBuffers env_buffers;
 } RenderScene;
 
+/* The scene from its buffers, as every integrator's kernel entry (kernels/<integrator>.cl) binds them and the
+ * host renderer holds them. */
+SS_FN RenderScene render_scene_make(GLOBAL_MEM const Material* materials, GLOBAL_MEM const float4* emission, GLOBAL_MEM const Light* lights,
+                                    GLOBAL_MEM const float* light_cdf, GLOBAL_MEM const int* light_of_slot, EnvironmentMap env,
+                                    GLOBAL_MEM const float4* env_texels, GLOBAL_MEM const float* env_marginal_cdf,
+                                    GLOBAL_MEM const float* env_conditional_cdf) {
+    RenderScene scene;
+    scene.materials = materials;
+    scene.emission = emission;
+    scene.lights = lights;
+    scene.light_cdf = light_cdf;
+    scene.light_of_slot = light_of_slot;
+    scene.env = env;
+    scene.env_buffers.texels = env_texels;
+    scene.env_buffers.marginal_cdf = env_marginal_cdf;
+    scene.env_buffers.conditional_cdf = env_conditional_cdf;
+    return scene;
+}
+
 #endif

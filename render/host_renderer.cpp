@@ -41,16 +41,9 @@ void HostRenderer::clear_film() {
 
 void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
     const ibl::Environment& env = bound_environment();
-    kernel::RenderScene scene;
-    scene.materials = compiled_.materials.data();
-    scene.emission = emission_.data();
-    scene.lights = lights_.lights.data();
-    scene.light_cdf = lights_.selection_cdf.data();
-    scene.light_of_slot = lights_.light_of_slot.data();
-    scene.env = env.map();
-    scene.env_buffers.texels = env.texels().data();
-    scene.env_buffers.marginal_cdf = env.marginal_cdf().data();
-    scene.env_buffers.conditional_cdf = env.conditional_cdf().data();
+    kernel::RenderScene scene = kernel::render_scene_make(compiled_.materials.data(), emission_.data(), lights_.lights.data(),
+                                                          lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(),
+                                                          env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data());
 
     int pixels = input_.settings.width * input_.settings.height;
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());

@@ -69,15 +69,8 @@ struct Fixture {
         float3_to_array(float3(1.0f), p.emission);
         p.material_slot = -1;
         lights = {e, s, p};
-        scene.materials = materials.data();
-        scene.emission = emission.data();
-        scene.lights = lights.data();
-        scene.light_cdf = cdf.data();
-        scene.light_of_slot = light_of_slot.data();
-        scene.env = env.map();
-        scene.env_buffers.texels = env.texels().data();
-        scene.env_buffers.marginal_cdf = env.marginal_cdf().data();
-        scene.env_buffers.conditional_cdf = env.conditional_cdf().data();
+        scene = render_scene_make(materials.data(), emission.data(), lights.data(), cdf.data(), light_of_slot.data(), env.map(),
+                                  env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data());
         k.light_count = 3;
         k.scene_radius = 5.0f;
         lab::scene::Camera c;
