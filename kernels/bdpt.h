@@ -64,16 +64,7 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         float4 u = rng_next4(rng);
         CameraSample cs = camera_sample_wi(camera, qs->p, make_float2(u.x, u.y));
         if (!cs.visible) return zero;
-        sampled.type = VERTEX_CAMERA;
-        sampled.p = cs.lens_point;
-        sampled.frame = frame_from_normal(float3_from_array(camera->forward));
-        sampled.beta = float3_splat(cs.importance / cs.pdf);
-        sampled.pdf_fwd = 0.0f;
-        sampled.pdf_rev = 0.0f;
-        sampled.delta = 0;
-        sampled.on_surface = 0;
-        sampled.index = 0;
-        sampled.epsilon = 0.0f;
+        sampled = camera_vertex(camera, cs.lens_point, float3_splat(cs.importance / cs.pdf));
         float3 f = qs->type == VERTEX_SURFACE ? vertex_f(scene, qs, cs.wi, TRANSPORT_IMPORTANCE) : float3_splat(1.0f);
         float cos_q = qs->on_surface ? fabs(dot(qs->frame.n, cs.wi)) : 1.0f;
         L = qs->beta * f * sampled.beta * cos_q;

@@ -36,6 +36,23 @@ typedef struct PathVertex {
     int on_surface;     /* has a normal a density converts with (surfaces, sphere lights) */
 } PathVertex;
 
+/* A vertex on the camera's lens at p, facing along the camera's axis, with throughput beta. */
+SS_FN PathVertex camera_vertex(const Camera* camera, float3 p, float3 beta) {
+    PathVertex c;
+    c.type = VERTEX_CAMERA;
+    c.p = p;
+    c.frame = frame_from_normal(float3_from_array(camera->forward));
+    c.wo = make_float3(0.0f, 0.0f, 1.0f);
+    c.beta = beta;
+    c.pdf_fwd = 0.0f;
+    c.pdf_rev = 0.0f;
+    c.epsilon = 0.0f;
+    c.index = 0;
+    c.delta = 0;
+    c.on_surface = 0;
+    return c;
+}
+
 SS_FN bool vertex_emits(const RenderScene* scene, const PathVertex* v) {
     if (v->type == VERTEX_SURFACE) return scene->emission[v->index].w > 0.0f;
     return v->type != VERTEX_CAMERA;

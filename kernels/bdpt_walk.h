@@ -84,19 +84,8 @@ SS_FN int bdpt_camera_subpath(const RenderKernelSettings* k, MarchSettings s, co
     float4 u = rng_next4(rng);
     float3 origin, direction;
     camera_generate_ray(camera, x + u.x, y + u.y, make_float2(u.z, u.w), &origin, &direction);
-    PathVertex c;
-    c.type = VERTEX_CAMERA;
-    c.p = origin;
-    c.frame = frame_from_normal(float3_from_array(camera->forward));
-    c.wo = make_float3(0.0f, 0.0f, 1.0f);
-    c.beta = float3_splat(1.0f); /* W_e / (pdf_position pdf_direction) = 1 for the box filter */
-    c.pdf_fwd = 0.0f;
-    c.pdf_rev = 0.0f;
-    c.epsilon = 0.0f;
-    c.index = 0;
-    c.delta = 0;
-    c.on_surface = 0;
-    path[0] = c;
+    /* beta: W_e / (pdf_position pdf_direction) = 1 for the box filter */
+    path[0] = camera_vertex(camera, origin, float3_splat(1.0f));
     float pdf_position, pdf_direction;
     camera_pdf_we(camera, origin, direction, &pdf_position, &pdf_direction);
     bool inside = scene_distance(origin) < 0.0f;
