@@ -58,6 +58,24 @@ render::RenderStatistics measure(render::Renderer& renderer, double seconds) {
     return renderer.statistics();
 }
 
+// One scene at equal time: a long reference of `reference_input` (labelled `reference`), then each
+// run for c.seconds; prints each run's final RMSE relative to the last run's (`baseline`) and adds
+// the runs' series to the chart's.
+void compare_at_equal_time(const RendererFactory& on_device, const BenchRenderCommand& c, const std::string& reference,
+                           const render::RenderInput& reference_input, const std::vector<EqualTimeRun>& runs, const std::string& baseline,
+                           std::vector<plots::ConvergenceSeries>* series) {
+    std::printf("\n%s for %.0f s\n", reference.c_str(), c.reference_seconds);
+    Reference ref = render_reference(on_device, reference_input, c.reference_seconds);
+    std::printf("reference %d spp; its own noise (RMSE) about %.3g\n", ref.samples_per_pixel, ref.noise);
+    std::vector<EqualTimeResult> results = run_equal_time(on_device, runs, ref, c.seconds);
+    std::printf("equal-time RMSE relative to %s:", baseline.c_str());
+    for (const EqualTimeResult& r : results) {
+        std::printf("  %s %.2fx", r.series.name.c_str(), r.final_rmse() / results.back().final_rmse());
+        series->push_back(r.series);
+    }
+    std::printf("\n");
+}
+
 void run_bench_render(const BenchRenderCommand& c) {
     if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
     if (!(c.throughput_seconds > 0.0 && c.throughput_seconds <= 3600.0))
@@ -95,43 +113,26 @@ void run_bench_render(const BenchRenderCommand& c) {
     for (const std::string& file : c.compare) {
         RenderJob job = scene_job(c.job, file);
         std::string name = fs::path(file).stem().string();
-        std::printf("\n%s: reference (MIS) for %.0f s\n", name.c_str(), c.reference_seconds);
-        Reference reference = render_reference(on_device, job.input, c.reference_seconds);
-        std::printf("reference %d spp; its own noise (RMSE) about %.3g\n", reference.samples_per_pixel, reference.noise);
         std::vector<EqualTimeRun> runs;
         for (render::LightSampling sampling : {render::LightSampling::bsdf, render::LightSampling::lights, render::LightSampling::mis}) {
             EqualTimeRun run{name + " " + render::light_sampling_name(sampling), job.input};
             run.input.settings.light_sampling = sampling;
             runs.push_back(std::move(run));
         }
-        std::vector<EqualTimeResult> results = run_equal_time(on_device, runs, reference, c.seconds);
-        std::printf("equal-time RMSE relative to MIS:");
-        for (const EqualTimeResult& r : results) {
-            std::printf("  %s %.2fx", r.series.name.c_str(), r.final_rmse() / results.back().final_rmse());
-            series.push_back(r.series);
-        }
-        std::printf("\n");
+        compare_at_equal_time(on_device, c, name + ": reference (MIS)", job.input, runs, "MIS", &series);
     }
     for (const std::string& file : c.integrators) {
         RenderJob job = scene_job(c.job, file);
         job.input.settings.max_depth = job.input.settings.max_vertices - 2;  // pt over bdpt's path space
         std::string name = fs::path(file).stem().string();
-        std::printf("\n%s: reference (pt, max depth %d) for %.0f s\n", name.c_str(), job.input.settings.max_depth, c.reference_seconds);
-        Reference reference = render_reference(on_device, job.input, c.reference_seconds);
-        std::printf("reference %d spp; its own noise (RMSE) about %.3g\n", reference.samples_per_pixel, reference.noise);
         std::vector<EqualTimeRun> runs;
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::pt}) {
             EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
             run.input.settings.integrator = integrator;
             runs.push_back(std::move(run));
         }
-        std::vector<EqualTimeResult> results = run_equal_time(on_device, runs, reference, c.seconds);
-        std::printf("equal-time RMSE relative to pt:");
-        for (const EqualTimeResult& r : results) {
-            std::printf("  %s %.2fx", r.series.name.c_str(), r.final_rmse() / results.back().final_rmse());
-            series.push_back(r.series);
-        }
-        std::printf("\n");
+        compare_at_equal_time(on_device, c, name + ": reference (pt, max depth " + std::to_string(job.input.settings.max_depth) + ")",
+                              job.input, runs, "pt", &series);
     }
     if (!c.chart.empty() && !series.empty()) {
         plots::write_speed_accuracy_chart(series, "Render core: RMSE against render time, by light-sampling strategy and integrator", c.chart,
