@@ -128,8 +128,6 @@ int Renderer::add_samples(int max_samples, double budget_seconds) {
         int n = std::min(max_samples - added, samples_per_launch_);
         launch(kernel_settings(next_sample_, n));
         next_sample_ += n;
-        samples_ += n;
-        run_samples_ += n;
         added += n;
         if (seconds_since(start) >= budget_seconds) break;
     }
@@ -141,7 +139,6 @@ void Renderer::reset() {
     clear_film();
     restored_ = SampleRanges();
     run_first_ = next_sample_ = first_sample_;
-    samples_ = run_samples_ = 0;
     render_seconds_ = 0.0;
 }
 
@@ -161,8 +158,6 @@ void Renderer::restore_film(const FilmReadback& film, const SampleRanges& ranges
     write_film(film);
     restored_ = ranges;
     run_first_ = next_sample_ = int(ranges.end());
-    samples_ = int(ranges.count());
-    run_samples_ = 0;
     render_seconds_ = 0.0;
 }
 
@@ -216,16 +211,16 @@ void Renderer::set_show_background(bool show) {
 }
 
 film::ImageRgb Renderer::image() const {
-    return resolve_film(read_film(), samples_, input_.settings.width, input_.settings.height);
+    return resolve_film(read_film(), film_samples(), input_.settings.width, input_.settings.height);
 }
 
 RenderStatistics Renderer::statistics() const {
     FilmReadback film = read_film();
     RenderStatistics s;
-    s.samples_per_pixel = samples_;
+    s.samples_per_pixel = film_samples();
     s.render_seconds = render_seconds_;
     // this run's paths: render_seconds counts this run's time only
-    s.paths = uint64_t(run_samples_) * uint64_t(input_.settings.width) * uint64_t(input_.settings.height);
+    s.paths = uint64_t(run_samples()) * uint64_t(input_.settings.width) * uint64_t(input_.settings.height);
     read_ray_counts(&s.rays, &s.lost_rays);
     for (size_t p = 3; p < film.accumulation.size(); p += 4) s.nonfinite_samples += uint64_t(film.accumulation[p]);
     return s;

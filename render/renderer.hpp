@@ -141,8 +141,9 @@ private:
     SampleRanges restored_;   // the samples restore_film put on the film
     int run_first_ = 0;       // the first sample of this run (after the restored ones)
     int next_sample_ = 0;     // the index of the next sample to add
-    int samples_ = 0;         // samples per pixel on the film, restored ones included
-    int run_samples_ = 0;     // samples per pixel added since the last reset or restore
+    // Samples per pixel added since the last reset or restore, and on the film in all.
+    int run_samples() const { return next_sample_ - run_first_; }
+    int film_samples() const { return int(restored_.count()) + run_samples(); }
     int samples_per_launch_ = 1;
     double render_seconds_ = 0.0;
 };
