@@ -7,4 +7,5 @@
 namespace brdf {
 using namespace single_source;
 #include "bsdf.h"
+#include "merl.h"
 }  // namespace brdf
