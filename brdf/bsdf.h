@@ -1,7 +1,10 @@
 /* The BRDF module's entry points, shared by lobe plots, the IBL preview and the BDPT kernels.
  * Directions are unit vectors in the local shading frame (z = normal, x = tangent), both pointing
  * away from the surface: wo towards the viewer, wi towards the light. Every entry point clamps the
- * material to its documented ranges and turns the anisotropy tangent by tangent_rotation. */
+ * material to its documented ranges and turns the anisotropy tangent by tangent_rotation.
+ * `measured` is the measured-tables buffer (brdf/measured.h) a BRDF_MODEL_MEASURED material reads
+ * at its measured_offset; kernels pass their buffer argument. On the host, bsdf_eval, bsdf_pdf and
+ * bsdf_sample pass the process's registry (brdf/host/measured_registry.hpp). */
 #ifndef BRDF_BSDF_H
 #define BRDF_BSDF_H
 #include "bsdf_sample.h"
@@ -15,8 +18,11 @@
 #if BRDF_FEATURE_DTOADQ2017
 #include "dtoadq2017_model.h"
 #endif
+#if BRDF_FEATURE_MEASURED
+#include "measured.h"
+#endif
 
-SS_FN float3 bsdf_eval(const Material* material, float3 wo, float3 wi) {
+SS_FN float3 bsdf_eval_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
     Material m = material_clamped(material);
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     wi = rotate_about_normal(wi, -m.tangent_rotation);
@@ -26,10 +32,13 @@ SS_FN float3 bsdf_eval(const Material* material, float3 wo, float3 wi) {
 #if BRDF_FEATURE_LAB_MODEL
     if (m.model == BRDF_MODEL_LAB) return lab_eval(&m, wo, wi);
 #endif
+#if BRDF_FEATURE_MEASURED
+    if (m.model == BRDF_MODEL_MEASURED) return merl_eval(measured + m.measured_offset, wo, wi);
+#endif
     return float3_splat(0.0f);
 }
 
-SS_FN float bsdf_pdf(const Material* material, float3 wo, float3 wi) {
+SS_FN float bsdf_pdf_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
     Material m = material_clamped(material);
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     wi = rotate_about_normal(wi, -m.tangent_rotation);
@@ -39,11 +48,14 @@ SS_FN float bsdf_pdf(const Material* material, float3 wo, float3 wi) {
 #if BRDF_FEATURE_LAB_MODEL
     if (m.model == BRDF_MODEL_LAB) return lab_pdf(&m, wo, wi);
 #endif
+#if BRDF_FEATURE_MEASURED
+    if (m.model == BRDF_MODEL_MEASURED) return measured_pdf(measured + m.measured_offset, wo, wi);
+#endif
     return 0.0f;
 }
 
 /* u: three uniform numbers in [0, 1). */
-SS_FN BsdfSample bsdf_sample(const Material* material, float3 wo, float3 u) {
+SS_FN BsdfSample bsdf_sample_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 u) {
     Material m = material_clamped(material);
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     BsdfSample s = bsdf_sample_failed();
@@ -53,8 +65,19 @@ SS_FN BsdfSample bsdf_sample(const Material* material, float3 wo, float3 u) {
 #if BRDF_FEATURE_LAB_MODEL
     if (m.model == BRDF_MODEL_LAB) s = lab_sample(&m, wo, u);
 #endif
+#if BRDF_FEATURE_MEASURED
+    if (m.model == BRDF_MODEL_MEASURED) s = measured_sample(measured + m.measured_offset, wo, u);
+#endif
     s.wi = rotate_about_normal(s.wi, m.tangent_rotation);
     return s;
 }
+
+#ifndef __OPENCL_C_VERSION__
+/* The host's measured tables: the registry's buffer (brdf/host/measured_registry.cpp). */
+const float* measured_tables();
+inline float3 bsdf_eval(const Material* m, float3 wo, float3 wi) { return bsdf_eval_tables(m, measured_tables(), wo, wi); }
+inline float bsdf_pdf(const Material* m, float3 wo, float3 wi) { return bsdf_pdf_tables(m, measured_tables(), wo, wi); }
+inline BsdfSample bsdf_sample(const Material* m, float3 wo, float3 u) { return bsdf_sample_tables(m, measured_tables(), wo, u); }
+#endif
 
 #endif

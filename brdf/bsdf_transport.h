@@ -30,17 +30,17 @@ SS_FN float bsdf_radiance_scale(const Material* m, float3 wo, float3 wi) {
     return 1.0f / (etap * etap);
 }
 
-SS_FN float3 bsdf_eval_mode(const Material* m, float3 wo, float3 wi, int mode) {
-    if (mode == TRANSPORT_IMPORTANCE) return bsdf_is_reciprocal(m) ? bsdf_eval(m, wo, wi) : bsdf_eval(m, wi, wo);
-    return bsdf_eval(m, wo, wi) * bsdf_radiance_scale(m, wo, wi);
+SS_FN float3 bsdf_eval_mode(const Material* m, GLOBAL_MEM const float* measured, float3 wo, float3 wi, int mode) {
+    if (mode == TRANSPORT_IMPORTANCE) return bsdf_is_reciprocal(m) ? bsdf_eval_tables(m, measured, wo, wi) : bsdf_eval_tables(m, measured, wi, wo);
+    return bsdf_eval_tables(m, measured, wo, wi) * bsdf_radiance_scale(m, wo, wi);
 }
 
 /* bsdf_sample() with f in the given mode; pdf and flags are the sampler's. */
-SS_FN BsdfSample bsdf_sample_mode(const Material* m, float3 wo, float3 u, int mode) {
-    BsdfSample b = bsdf_sample(m, wo, u);
+SS_FN BsdfSample bsdf_sample_mode(const Material* m, GLOBAL_MEM const float* measured, float3 wo, float3 u, int mode) {
+    BsdfSample b = bsdf_sample_tables(m, measured, wo, u);
     if (b.flags == 0) return b;
     if (mode == TRANSPORT_RADIANCE) b.f = b.f * bsdf_radiance_scale(m, wo, b.wi);
-    else if (!bsdf_is_reciprocal(m) && (b.flags & BSDF_DELTA) == 0) b.f = bsdf_eval(m, b.wi, wo);
+    else if (!bsdf_is_reciprocal(m) && (b.flags & BSDF_DELTA) == 0) b.f = bsdf_eval_tables(m, measured, b.wi, wo);
     return b;
 }
 

@@ -13,6 +13,9 @@
 #ifndef BRDF_FEATURE_DTOADQ2017
 #define BRDF_FEATURE_DTOADQ2017 1 /* the 2017 formulas */
 #endif
+#ifndef BRDF_FEATURE_MEASURED
+#define BRDF_FEATURE_MEASURED 1 /* MERL tables and their sampler (brdf/measured.h) */
+#endif
 #ifndef BRDF_FEATURE_DIFFUSE
 #define BRDF_FEATURE_DIFFUSE 1 /* Lambert */
 #endif

@@ -8,6 +8,7 @@
 
 #define BRDF_MODEL_LAB 0        /* the physically plausible default model */
 #define BRDF_MODEL_DTOADQ2017 1 /* the 2017 write-up's formulas, kept for comparison */
+#define BRDF_MODEL_MEASURED 2   /* a MERL table (brdf/measured.h); measured_offset says where it lies */
 
 #define BRDF_DISTRIBUTION_GGX 0
 #define BRDF_DISTRIBUTION_HYPER_CAUCHY 1
@@ -31,6 +32,7 @@ typedef struct Material {
     int model;                  /* BRDF_MODEL_* */
     int distribution;           /* BRDF_DISTRIBUTION_*, used by glossy and rough transmission */
     int energy_compensation;    /* 1: microfacet lobes get Kulla-Conty multiple scattering; 0: single scattering only */
+    int measured_offset;        /* BRDF_MODEL_MEASURED: first float of its block in the measured-tables buffer */
 } Material;
 
 SS_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }

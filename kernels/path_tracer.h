@@ -47,13 +47,13 @@ SS_FN float3 estimate_direct(const RenderKernelSettings* k, MarchSettings s, con
     LightSample ls = sample_light(&light, &scene->env, scene->env_buffers, hit->p, make_float2(u.x, u.y));
     if (!(ls.pdf > 0.0f) || !(max_component(ls.radiance) > 0.0f)) return float3_splat(0.0f);
     float3 wl = frame_to_local(hit->frame, ls.wi);
-    float3 f = bsdf_eval(m, hit->wo, wl);
+    float3 f = bsdf_eval_tables(m, scene->measured, hit->wo, wl);
     if (!(max_component(f) > 0.0f)) return float3_splat(0.0f);
     float3 origin = offset_origin(hit->p, hit->frame.n, hit->epsilon, wl.z);
     if (!segment_unoccluded(origin, ls.wi, ls.distance, light.material_slot, s, counters)) return float3_splat(0.0f);
     float light_density = pmf * ls.pdf;
     float weight = (ls.delta || k->light_sampling != LIGHT_SAMPLING_MIS) ? 1.0f
-                                                                         : mis_power_heuristic(light_density, bsdf_pdf(m, hit->wo, wl));
+                                                                         : mis_power_heuristic(light_density, bsdf_pdf_tables(m, scene->measured, hit->wo, wl));
     return f * ls.radiance * (fabs(wl.z) * weight / light_density);
 }
 
@@ -100,7 +100,7 @@ SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene,
         if (k->light_sampling != LIGHT_SAMPLING_BSDF && k->light_count > 0)
             radiance += throughput * estimate_direct(k, s, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), counters);
 
-        BsdfSample b = bsdf_sample(&m, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
+        BsdfSample b = bsdf_sample_tables(&m, scene->measured, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
         if (b.flags == 0) break;
         throughput *= b.f * (fabs(b.wi.z) / b.pdf);
         previous_p = hit.p;

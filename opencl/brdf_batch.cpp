@@ -1,7 +1,9 @@
 #include "opencl/brdf_batch.hpp"
 
+#include <algorithm>
 #include <chrono>
 
+#include "brdf/host/measured_registry.hpp"
 #include "brdf/host/parameters.hpp"
 #include "opencl/material_layout.hpp"
 
@@ -54,6 +56,12 @@ void BrdfBatch::set_materials(const std::vector<brdf::Material>& materials) {
     materials_ = runtime_.buffer(materials.size() * sizeof(brdf::Material), CL_MEM_READ_ONLY);
     runtime_.write(materials_, materials.data(), materials.size() * sizeof(brdf::Material));
     material_count_ = materials.size();
+    // the measured tables as the host has them now, so measured materials keep their offsets; one
+    // float when there are none (a buffer cannot be empty)
+    const std::vector<float>& tables = brdf::measured_table_data();
+    size_t floats = std::max<size_t>(tables.size(), 1);
+    measured_ = runtime_.buffer(floats * sizeof(float), CL_MEM_READ_ONLY);
+    if (!tables.empty()) runtime_.write(measured_, tables.data(), tables.size() * sizeof(float));
 }
 
 void BrdfBatch::check_inputs(const std::vector<int>& material, size_t wo_count, size_t third_count) const {
@@ -98,10 +106,11 @@ std::vector<brdf::float3> BrdfBatch::eval(const std::vector<int>& material, cons
     BufferHandle f = runtime_.buffer(n * sizeof(brdf::float3), CL_MEM_WRITE_ONLY);
     set_kernel_arg(eval_, 0, int(n));
     set_kernel_arg(eval_, 1, materials_);
-    set_kernel_arg(eval_, 2, index);
-    set_kernel_arg(eval_, 3, wo_buffer);
-    set_kernel_arg(eval_, 4, wi_buffer);
-    set_kernel_arg(eval_, 5, f);
+    set_kernel_arg(eval_, 2, measured_);
+    set_kernel_arg(eval_, 3, index);
+    set_kernel_arg(eval_, 4, wo_buffer);
+    set_kernel_arg(eval_, 5, wi_buffer);
+    set_kernel_arg(eval_, 6, f);
     run(eval_, n);
     Clock::time_point start = Clock::now();
     std::vector<brdf::float3> out(n);
@@ -118,10 +127,11 @@ std::vector<float> BrdfBatch::pdf(const std::vector<int>& material, const std::v
     BufferHandle pdf = runtime_.buffer(n * sizeof(float), CL_MEM_WRITE_ONLY);
     set_kernel_arg(pdf_, 0, int(n));
     set_kernel_arg(pdf_, 1, materials_);
-    set_kernel_arg(pdf_, 2, index);
-    set_kernel_arg(pdf_, 3, wo_buffer);
-    set_kernel_arg(pdf_, 4, wi_buffer);
-    set_kernel_arg(pdf_, 5, pdf);
+    set_kernel_arg(pdf_, 2, measured_);
+    set_kernel_arg(pdf_, 3, index);
+    set_kernel_arg(pdf_, 4, wo_buffer);
+    set_kernel_arg(pdf_, 5, wi_buffer);
+    set_kernel_arg(pdf_, 6, pdf);
     run(pdf_, n);
     Clock::time_point start = Clock::now();
     std::vector<float> out(n);
@@ -141,13 +151,14 @@ std::vector<brdf::BsdfSample> BrdfBatch::sample(const std::vector<int>& material
     BufferHandle flags = runtime_.buffer(n * sizeof(int), CL_MEM_WRITE_ONLY);
     set_kernel_arg(sample_, 0, int(n));
     set_kernel_arg(sample_, 1, materials_);
-    set_kernel_arg(sample_, 2, index);
-    set_kernel_arg(sample_, 3, wo_buffer);
-    set_kernel_arg(sample_, 4, u_buffer);
-    set_kernel_arg(sample_, 5, wi);
-    set_kernel_arg(sample_, 6, f);
-    set_kernel_arg(sample_, 7, pdf);
-    set_kernel_arg(sample_, 8, flags);
+    set_kernel_arg(sample_, 2, measured_);
+    set_kernel_arg(sample_, 3, index);
+    set_kernel_arg(sample_, 4, wo_buffer);
+    set_kernel_arg(sample_, 5, u_buffer);
+    set_kernel_arg(sample_, 6, wi);
+    set_kernel_arg(sample_, 7, f);
+    set_kernel_arg(sample_, 8, pdf);
+    set_kernel_arg(sample_, 9, flags);
     run(sample_, n);
     Clock::time_point start = Clock::now();
     std::vector<brdf::float3> wi_out(n), f_out(n);

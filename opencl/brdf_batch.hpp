@@ -54,6 +54,7 @@ private:
     KernelHandle eval_, pdf_, sample_;
     size_t local_size_ = 64;
     BufferHandle materials_;
+    BufferHandle measured_;  // brdf::measured_table_data() when set_materials ran
     size_t material_count_ = 0;
     BatchTiming timing_;
 };

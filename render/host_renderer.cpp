@@ -41,7 +41,7 @@ void HostRenderer::clear_film() {
 
 void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
     const ibl::Environment& env = bound_environment();
-    kernel::RenderScene scene = kernel::render_scene_make(compiled_.materials.data(), emission_.data(), lights_.lights.data(),
+    kernel::RenderScene scene = kernel::render_scene_make(compiled_.materials.data(), brdf::measured_tables(), emission_.data(), lights_.lights.data(),
                                                           lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(),
                                                           env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data());
 

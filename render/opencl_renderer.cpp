@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "brdf/host/measured_registry.hpp"
 #include "opencl/material_layout.hpp"
 #include "scene/scene_source.hpp"
 
@@ -57,6 +58,14 @@ void OpenClRenderer::upload_scene() {
     marginal_ = upload(runtime_, env.marginal_cdf());
     conditional_ = upload(runtime_, env.conditional_cdf());
     materials_ = upload(runtime_, compiled_.materials);
+    // the measured tables only for a scene that has a measured material, and only when they changed
+    bool measured = false;
+    for (const brdf::Material& m : compiled_.materials) measured = measured || m.model == BRDF_MODEL_MEASURED;
+    size_t measured_floats = measured ? brdf::measured_table_data().size() : 0;
+    if (!measured_ || measured_floats != measured_floats_) {
+        measured_ = upload(runtime_, measured ? brdf::measured_table_data() : std::vector<float>());
+        measured_floats_ = measured_floats;
+    }
     emission_buffer_ = upload(runtime_, emission_);
     lights_buffer_ = upload(runtime_, lights_.lights);
     light_cdf_ = upload(runtime_, lights_.selection_cdf);
@@ -84,7 +93,7 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k) {
     opencl::set_kernel_arg(kernel_, a++, k);
     opencl::set_kernel_arg(kernel_, a++, camera_);
     opencl::set_kernel_arg(kernel_, a++, bound_environment().map());
-    for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &emission_buffer_, &lights_buffer_, &light_cdf_,
+    for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &measured_, &emission_buffer_, &lights_buffer_, &light_cdf_,
                                           &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
         opencl::set_kernel_arg(kernel_, a++, *b);
     runtime_.launch_1d(kernel_, size_t(input_.settings.width) * size_t(input_.settings.height), local_size_);

@@ -60,7 +60,7 @@ Camera parse_camera(const Json& value, const std::string& file) {
 brdf::Material parse_inline_preset(const Json& value, const std::string& file, const std::string& path) {
     const std::string source = file + ": " + path;
     try {
-        return brdf::parse_preset(nlohmann::json(value), source).material;
+        return brdf::parse_preset(nlohmann::json(value), source, fs::path(file).parent_path().string()).material;
     } catch (const InputError& e) {
         std::string message = e.what();
         const std::string prefix = source + ": ";

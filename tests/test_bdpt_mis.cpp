@@ -69,7 +69,7 @@ struct Fixture {
         float3_to_array(float3(1.0f), p.emission);
         p.material_slot = -1;
         lights = {e, s, p};
-        scene = render_scene_make(materials.data(), emission.data(), lights.data(), cdf.data(), light_of_slot.data(), env.map(),
+        scene = render_scene_make(materials.data(), brdf::measured_tables(), emission.data(), lights.data(), cdf.data(), light_of_slot.data(), env.map(),
                                   env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data());
         k.light_count = 3;
         k.scene_radius = 5.0f;

@@ -63,6 +63,10 @@ bool albedo_row(brdf::Material* m, const brdf::Material& preset) {
 
 bool material_panel(brdf::Material* m, const brdf::Material& preset) {
     bool changed = false;
+    if (m->model == BRDF_MODEL_MEASURED) {  // its table is the BRDF: no parameter applies
+        ImGui::TextUnformatted("measured (MERL table): no parameters to edit");
+        return false;
+    }
     int model = m->model == BRDF_MODEL_DTOADQ2017 ? 1 : 0;
     if (ImGui::Combo("model", &model, "lab\0dtoadq2017\0")) {
         m->model = model == 1 ? BRDF_MODEL_DTOADQ2017 : BRDF_MODEL_LAB;

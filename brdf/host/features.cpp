@@ -5,7 +5,7 @@ namespace brdf {
 namespace {
 
 struct Needs {
-    bool lab = false, dtoadq2017 = false, diffuse = false, retroreflection = false, subsurface = false, glossy = false,
+    bool lab = false, dtoadq2017 = false, measured = false, diffuse = false, retroreflection = false, subsurface = false, glossy = false,
          transmission = false, energy_compensation = false, ggx = false, hyper_cauchy = false;
 };
 
@@ -20,6 +20,10 @@ void add_material(const Material& input, Needs* needs) {
     Material m = material_clamped(&input);
     if (m.model == BRDF_MODEL_DTOADQ2017) {
         needs->dtoadq2017 = true;
+        return;
+    }
+    if (m.model == BRDF_MODEL_MEASURED) {
+        needs->measured = true;
         return;
     }
     needs->lab = true;
@@ -49,6 +53,7 @@ std::vector<std::pair<std::string, bool>> used_features(const std::vector<Materi
     for (const Material& m : materials) add_material(m, &n);
     return {{"BRDF_FEATURE_LAB_MODEL", n.lab},
             {"BRDF_FEATURE_DTOADQ2017", n.dtoadq2017},
+            {"BRDF_FEATURE_MEASURED", n.measured},
             {"BRDF_FEATURE_DIFFUSE", n.diffuse},
             {"BRDF_FEATURE_RETROREFLECTION", n.retroreflection},
             {"BRDF_FEATURE_SUBSURFACE", n.subsurface},

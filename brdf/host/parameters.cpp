@@ -2,7 +2,10 @@
 
 namespace brdf {
 
-const char* model_name(int model) { return model == BRDF_MODEL_DTOADQ2017 ? "dtoadq2017" : "lab"; }
+const char* model_name(int model) {
+    if (model == BRDF_MODEL_MEASURED) return "measured";
+    return model == BRDF_MODEL_DTOADQ2017 ? "dtoadq2017" : "lab";
+}
 
 const char* distribution_name(int distribution) {
     return distribution == BRDF_DISTRIBUTION_HYPER_CAUCHY ? "hyper_cauchy" : "ggx";

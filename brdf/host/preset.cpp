@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "brdf/host/measured_registry.hpp"
 #include "brdf/host/parameters.hpp"
 #include "common/input_error.hpp"
 #include "common/read_text_file.hpp"
@@ -63,7 +64,7 @@ int parse_enum(const json& doc, const std::string& source, const std::string& ke
 }
 
 void reject_unknown_keys(const json& doc, const std::string& source) {
-    std::set<std::string> top = {"name", "description", "model", "distribution", "energy_compensation", "lobes"};
+    std::set<std::string> top = {"name", "description", "model", "distribution", "energy_compensation", "lobes", "measured"};
     std::set<std::string> lobes;
     for (const ScalarParameter& p : scalar_parameters()) {
         std::string key = p.key;
@@ -82,9 +83,30 @@ void reject_unknown_keys(const json& doc, const std::string& source) {
     }
 }
 
+// "measured": a MERL file, relative to the preset's folder. Its problems (missing, truncated, bad
+// entries) are reported as the preset's field, with the MERL reader's line after it.
+void parse_measured(const json& doc, const std::string& source, const std::string& base_dir, Preset* preset) {
+    const json& value = doc.at("measured");
+    if (!value.is_string()) throw InputError(source, "measured", std::string("expected a file path (string), got ") + value.type_name());
+    if (doc.contains("model")) throw InputError(source, "model", "a measured preset has no model (its table is the BRDF)");
+    std::string relative = value.get<std::string>();
+    std::filesystem::path file(relative);
+    if (file.is_relative()) file = std::filesystem::path(base_dir) / file;
+    std::error_code ec;
+    if (relative.empty() || !std::filesystem::is_regular_file(file, ec))
+        throw InputError(source, "measured", "MERL file \"" + relative + "\" not found (looked for " + file.string() + ")");
+    try {
+        preset->material.measured_offset = register_measured_file(file.string());
+    } catch (const InputError& e) {
+        throw InputError(source, "measured", e.what());
+    }
+    preset->material.model = BRDF_MODEL_MEASURED;
+    preset->measured = relative;
+}
+
 }  // namespace
 
-Preset parse_preset(const json& doc, const std::string& source) {
+Preset parse_preset(const json& doc, const std::string& source, const std::string& base_dir) {
     if (!doc.is_object()) throw InputError(source, "", "a preset must be a JSON object");
     reject_unknown_keys(doc, source);
     Preset preset;
@@ -105,6 +127,8 @@ Preset parse_preset(const json& doc, const std::string& source) {
             throw InputError(source, "energy_compensation", std::string("expected true or false, got ") + value.type_name());
         preset.material.energy_compensation = value.get<bool>() ? 1 : 0;
     }
+    if (doc.contains("measured"))
+        parse_measured(doc, source, base_dir.empty() ? std::filesystem::path(source).parent_path().string() : base_dir, &preset);
     for (const ScalarParameter& p : scalar_parameters()) {
         const json* value = find_key(doc, p.key);
         if (!value) continue;
@@ -160,7 +184,10 @@ json preset_to_json(const Preset& preset) {
     json doc;
     doc["name"] = preset.name;
     if (!preset.description.empty()) doc["description"] = preset.description;
-    doc["model"] = model_name(preset.material.model);
+    if (preset.material.model == BRDF_MODEL_MEASURED)
+        doc["measured"] = preset.measured;
+    else
+        doc["model"] = model_name(preset.material.model);
     doc["distribution"] = distribution_name(preset.material.distribution);
     doc["energy_compensation"] = preset.material.energy_compensation != 0;
     for (const ScalarParameter& p : scalar_parameters()) {

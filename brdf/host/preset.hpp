@@ -13,6 +13,7 @@ struct Preset {
     std::string name;         // from the file, or the file's stem
     std::string description;
     std::string source;       // where it came from, for messages
+    std::string measured;     // a measured preset's MERL file as the preset names it (relative to it)
     Material material;
 };
 
@@ -21,7 +22,8 @@ struct Preset {
 Preset load_preset(const std::string& path);
 // The same from the file's text; `source` names it in messages.
 Preset parse_preset_text(const std::string& text, const std::string& source);
-Preset parse_preset(const nlohmann::json& document, const std::string& source);
+// `base_dir` resolves a relative "measured" path; empty: the folder of `source`.
+Preset parse_preset(const nlohmann::json& document, const std::string& source, const std::string& base_dir = "");
 
 nlohmann::json preset_to_json(const Preset& preset);
 void save_preset(const Preset& preset, const std::string& path);

@@ -1,0 +1,124 @@
+#include "brdf/host/measured_registry.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <mutex>
+
+#include "common/input_error.hpp"
+
+namespace brdf {
+namespace {
+
+struct Registry {
+    std::mutex mutex;
+    std::vector<float> data;
+    std::map<std::string, int> offsets;  // by file (canonical path) or table source
+};
+
+Registry& registry() {
+    static Registry r;
+    return r;
+}
+
+void append_cdf(const std::vector<double>& mass, std::vector<float>* out) {
+    double total = 0.0;
+    for (double m : mass) total += m;
+    double running = 0.0;
+    out->push_back(0.0f);
+    for (size_t i = 0; i + 1 < mass.size(); ++i) {
+        running += mass[i];
+        out->push_back(float(running / total));
+    }
+    out->push_back(1.0f);  // exactly: the last cell ends at 1 whatever the rounding
+}
+
+int register_block(const std::string& key, const std::function<std::vector<float>()>& make) {
+    Registry& r = registry();
+    {
+        std::lock_guard<std::mutex> lock(r.mutex);
+        auto it = r.offsets.find(key);
+        if (it != r.offsets.end()) return it->second;
+    }
+    std::vector<float> block = make();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    auto it = r.offsets.find(key);
+    if (it != r.offsets.end()) return it->second;
+    if (r.data.size() + block.size() > size_t(0x7fffffff))
+        throw lab::InputError(key, "", "too many measured tables for one process (2^31 floats)");
+    int offset = int(r.data.size());
+    r.data.insert(r.data.end(), block.begin(), block.end());
+    r.offsets[key] = offset;
+    return offset;
+}
+
+std::vector<float> block_of(const MeasuredTable& table) {
+    std::vector<float> block = table.rgb;
+    block.reserve(MEASURED_BLOCK_FLOATS);
+    append_measured_sampler(&block);
+    return block;
+}
+
+}  // namespace
+
+const float* measured_tables() { return registry().data.data(); }
+
+const std::vector<float>& measured_table_data() { return registry().data; }
+
+void append_measured_sampler(std::vector<float>* block) {
+    const float* table = block->data();
+    const int nt = MEASURED_THETA_I_BINS, np = MEASURED_PHI_BINS;
+    const double band = 0.5 * M_PI / nt, cell_phi = M_PI / np;
+    std::vector<float> sampler;
+    sampler.reserve(size_t(MEASURED_THETA_O_BINS) * MEASURED_SAMPLER_BIN_FLOATS);
+    for (int k = 0; k < MEASURED_THETA_O_BINS; ++k) {
+        float theta_o = (float(k) + 0.5f) * 0.5f * SS_PI / MEASURED_THETA_O_BINS;
+        float3 wo = make_float3(std::sin(theta_o), 0.0f, std::cos(theta_o));
+        std::vector<double> cells(size_t(nt) * np);
+        double total = 0.0, solid_angle = 0.0;
+        for (int j = 0; j < nt; ++j) {
+            double area = measured_cell_solid_angle(j);
+            for (int l = 0; l < np; ++l) {
+                double sum = 0.0;
+                for (int a = 0; a < 2; ++a)
+                    for (int b = 0; b < 2; ++b) {
+                        double theta = (j + 0.25 + 0.5 * a) * band, phi = (l + 0.25 + 0.5 * b) * cell_phi;
+                        float3 wi = make_float3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                                                float(std::cos(theta)));
+                        float3 f = merl_eval(table, wo, wi);
+                        sum += (f.x + f.y + f.z) / 3.0 * wi.z;
+                    }
+                cells[size_t(j) * np + l] = sum / 4.0 * area;
+                total += cells[size_t(j) * np + l];
+                solid_angle += area;
+            }
+        }
+        // the floor; a black table gets the uniform density
+        double floor = total > 0.0 ? 0.02 * total / solid_angle : 1.0;
+        std::vector<double> rows(nt, 0.0);
+        for (int j = 0; j < nt; ++j) {
+            double area = measured_cell_solid_angle(j);
+            for (int l = 0; l < np; ++l) rows[j] += (cells[size_t(j) * np + l] += floor * area);
+        }
+        append_cdf(rows, &sampler);
+        for (int j = 0; j < nt; ++j)
+            append_cdf(std::vector<double>(cells.begin() + size_t(j) * np, cells.begin() + size_t(j + 1) * np), &sampler);
+    }
+    block->insert(block->end(), sampler.begin(), sampler.end());
+}
+
+int register_measured_table(const MeasuredTable& table) {
+    if (table.rgb.size() != size_t(MEASURED_TABLE_FLOATS))
+        throw lab::InputError(table.source, "", "a measured table needs " + std::to_string(MEASURED_TABLE_FLOATS) + " floats");
+    return register_block(table.source, [&] { return block_of(table); });
+}
+
+int register_measured_file(const std::string& path) {
+    std::error_code ec;
+    std::string key = std::filesystem::weakly_canonical(path, ec).string();
+    if (ec) key = path;
+    return register_block(key, [&] { return block_of(read_merl_file(path)); });
+}
+
+}  // namespace brdf

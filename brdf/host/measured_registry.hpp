@@ -1,0 +1,31 @@
+// The measured tables of this process: every measured material's block (brdf/measured.h: its MERL
+// table and its sampler) in one float array, so that a material names its table by an offset that
+// means the same on the host and in a kernel's buffer (the renderers upload this array as it is).
+// A file is read and its sampler built once, however many presets name it.
+//
+// Registration appends and may move the array: register every table (load the presets) before
+// evaluating from other threads. Each block costs MEASURED_BLOCK_FLOATS floats (about 18 MB).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "brdf/host/merl_file.hpp"
+
+namespace brdf {
+
+// Reads the MERL file (read_merl_file's errors), builds its sampler and returns its block's offset.
+int register_measured_file(const std::string& path);
+// The same for a table in memory; `table.source` names it and is the key that shares it.
+int register_measured_table(const MeasuredTable& table);
+
+// The whole array: bsdf_eval's tables on the host, and what a kernel's buffer argument receives.
+const std::vector<float>& measured_table_data();
+
+// The sampler of one table, appended to `block` after the table (brdf/measured.h's layout): per bin of
+// theta_o, CDFs of the mean over RGB of f cos_i times solid angle, averaged over 2 x 2 points per cell,
+// plus a floor of 2% of the bin's mass spread uniformly in solid angle so that no cell where f may be
+// non-zero between its points is left out.
+void append_measured_sampler(std::vector<float>* block);
+
+}  // namespace brdf

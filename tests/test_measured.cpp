@@ -1,0 +1,224 @@
+// Measured materials (brdf/measured.h): a preset naming a MERL file, made at test time by tabulating a
+// lab material (brdf::tabulate_merl) and writing it (brdf::write_merl_file); one table serves the
+// whole file. Checks: the preset's errors, the feature switch, reciprocity, the chi-square test of the
+// tabulated sampler, the OpenCL build against the C++ build, and a render of a sphere against the
+// render of the lab material it was tabulated from.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "brdf/brdf.hpp"
+#include "brdf/host/angles.hpp"
+#include "brdf/host/features.hpp"
+#include "brdf/host/measured_registry.hpp"
+#include "brdf/host/merl_file.hpp"
+#include "brdf/host/preset.hpp"
+#include "common/input_error.hpp"
+#include "opencl/brdf_batch.hpp"
+#include "opencl/runtime.hpp"
+#include "render/opencl_renderer.hpp"
+#include "tests/lobe_material.hpp"
+#include "tests/render_inputs.hpp"
+#include "validation/chi_square.hpp"
+#include "validation/reciprocity.hpp"
+#include "validation/region_t_test.hpp"
+
+namespace fs = std::filesystem;
+using brdf::float3;
+
+namespace {
+
+// Diffuse under a rough GGX coat, coloured: smooth enough for the tables' resolution to matter, and
+// nothing a MERL table cannot hold (isotropic, no delta, no transmission).
+brdf::Material lab_material() {
+    brdf::Material m = lobe_material(0.6f, 0.4f, 0.0f, 0.0f);
+    m.albedo[0] = 0.7f, m.albedo[1] = 0.45f, m.albedo[2] = 0.25f;
+    m.roughness = 0.45f;
+    return m;
+}
+
+struct Fixture {
+    fs::path dir;
+    std::string preset;  // a preset naming table.binary
+    brdf::Material lab, measured;
+};
+
+fs::path write_text(const fs::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+    return path;
+}
+
+const Fixture& fixture() {
+    static const Fixture f = [] {
+        Fixture x;
+        x.dir = fs::temp_directory_path() / ("dtoadq_measured_" + std::to_string(::getpid()));
+        fs::create_directories(x.dir);
+        x.lab = lab_material();
+        const brdf::Material lab = x.lab;
+        brdf::write_merl_file((x.dir / "table.binary").string(),
+                              brdf::tabulate_merl([&](float3 wo, float3 wi) { return brdf::bsdf_eval(&lab, wo, wi); }, "lab"));
+        x.preset = write_text(x.dir / "measured.json", R"({"name": "tabulated", "measured": "table.binary"})").string();
+        x.measured = brdf::load_preset(x.preset).material;
+        return x;
+    }();
+    return f;
+}
+
+std::string load_error(const std::string& path) {
+    try {
+        brdf::load_preset(path);
+    } catch (const lab::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST_CASE("a measured preset reads its table once and evaluates it", "[measured]") {
+    const Fixture& f = fixture();
+    CHECK(f.measured.model == BRDF_MODEL_MEASURED);
+    // a second preset naming the same file shares its block
+    fs::path again = write_text(f.dir / "again.json", R"({"measured": "table.binary"})");
+    CHECK(brdf::load_preset(again.string()).material.measured_offset == f.measured.measured_offset);
+    const float* block = brdf::measured_table_data().data() + f.measured.measured_offset;
+    // at a bin centre the table holds the lab material's value
+    brdf::HalfDiffAngles a = brdf::merl_bin_center(40, 30, 50);
+    float3 wo, wi;
+    brdf::directions_from_half_diff(a, &wo, &wi);
+    float3 lab = brdf::bsdf_eval(&f.lab, wo, wi), measured = brdf::bsdf_eval(&f.measured, wo, wi);
+    CHECK(measured.x == Approx(lab.x).epsilon(1e-3));
+    CHECK(measured.z == Approx(lab.z).epsilon(1e-3));
+    CHECK(measured == brdf::merl_eval(block, wo, wi));
+    // below the horizon: nothing
+    CHECK(brdf::bsdf_eval(&f.measured, wo, float3(wi.x, wi.y, -wi.z)) == float3(0.0f));
+    CHECK(brdf::bsdf_pdf(&f.measured, wo, float3(wi.x, wi.y, -wi.z)) == 0.0f);
+}
+
+TEST_CASE("a measured preset's problems name the preset and the field", "[measured]") {
+    const Fixture& f = fixture();
+    const std::string missing = write_text(f.dir / "missing.json", R"({"measured": "nowhere.binary"})").string();
+    std::string e = load_error(missing);
+    CHECK(e.rfind(missing + ": measured: MERL file \"nowhere.binary\" not found", 0) == 0);
+
+    // a truncated table: the MERL reader's line after the preset's field
+    fs::path table = f.dir / "table.binary";
+    std::vector<char> bytes(size_t(fs::file_size(table)) / 2);
+    std::ifstream(table, std::ios::binary).read(bytes.data(), std::streamsize(bytes.size()));
+    std::ofstream(f.dir / "half.binary", std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    const std::string truncated = write_text(f.dir / "truncated.json", R"({"measured": "half.binary"})").string();
+    e = load_error(truncated);
+    INFO(e);
+    CHECK(e.rfind(truncated + ": measured: ", 0) == 0);
+    CHECK(e.find("half.binary") != std::string::npos);
+    CHECK(e.find('\n') == std::string::npos);
+
+    const std::string number = write_text(f.dir / "number.json", R"({"measured": 3})").string();
+    CHECK(load_error(number).rfind(number + ": measured: expected a file path", 0) == 0);
+    const std::string both = write_text(f.dir / "both.json", R"({"model": "lab", "measured": "table.binary"})").string();
+    CHECK(load_error(both).rfind(both + ": model: ", 0) == 0);
+}
+
+TEST_CASE("a measured material switches on its feature only", "[measured][features]") {
+    const Fixture& f = fixture();
+    for (const auto& [name, on] : brdf::used_features({f.measured})) CHECK(on == (name == "BRDF_FEATURE_MEASURED"));
+    for (const auto& [name, on] : brdf::used_features({f.lab}))
+        if (name == "BRDF_FEATURE_MEASURED") CHECK_FALSE(on);
+}
+
+TEST_CASE("a measured material is reciprocal", "[measured][reciprocity]") {
+    // float rounding of the half/difference angles only (the [merl] lookup test's tolerance)
+    lab::validation::ReciprocityResult r = lab::validation::reciprocity_error(fixture().measured, 20000, 7);
+    INFO("worst " << r.max_relative_error);
+    CHECK(r.max_relative_error <= 2e-4);
+}
+
+TEST_CASE("the measured sampler's pdf matches its samples (chi-square)", "[measured][chi_square]") {
+    const Fixture& f = fixture();
+    const float thetas[5] = {0.0f, 28.0f, 52.0f, 71.0f, 86.0f}, phis[5] = {0.0f, 40.0f, 200.0f, 115.0f, 300.0f};
+    for (int d = 0; d < 5; ++d) {
+        lab::validation::ChiSquareOptions options;
+        options.tests = 5;
+        options.seed = uint64_t(d) + 31;
+        lab::validation::ChiSquareResult r = lab::validation::chi_square_bsdf(f.measured, brdf::direction_from_degrees(thetas[d], phis[d]), options);
+        INFO("theta " << thetas[d] << ": " << lab::validation::describe(r));
+        CHECK(r.passed);
+        CHECK(r.pdf_integral == Approx(1.0).margin(1e-3));
+    }
+}
+
+TEST_CASE("measured eval, pdf and sample: the OpenCL build agrees with the C++ build", "[measured][opencl]") {
+    const Fixture& f = fixture();
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    auto direction = [&] {
+        float z = uniform(rng), phi = 2.0f * SS_PI * uniform(rng), r = std::sqrt(std::fmax(0.0f, 1.0f - z * z));
+        return float3(r * std::cos(phi), r * std::sin(phi), z);
+    };
+    const int n = 20000;
+    std::vector<int> index(n, 0);
+    std::vector<float3> wo(n), wi(n), u(n);
+    for (int i = 0; i < n; ++i) wo[i] = direction(), wi[i] = direction(), u[i] = float3(uniform(rng), uniform(rng), uniform(rng));
+    lab::opencl::Runtime runtime;
+    lab::opencl::BrdfBatch batch(runtime);
+    batch.set_materials({f.measured});
+    std::vector<float3> f_cl = batch.eval(index, wo, wi);
+    std::vector<float> pdf_cl = batch.pdf(index, wo, wi);
+    std::vector<brdf::BsdfSample> s_cl = batch.sample(index, wo, u);
+    auto close = [](float a, float b) { return std::fabs(a - b) <= 1e-5f * std::fmax(std::fabs(a), std::fabs(b)) + 1e-30f; };
+    // A direction on a bin's edge may fall on either side in the two builds (their sin, cos and atan2
+    // differ in the last bit): such items are allowed, and must stay rare.
+    int differ = 0, samples = 0;
+    for (int i = 0; i < n; ++i) {
+        float3 fh = brdf::bsdf_eval(&f.measured, wo[i], wi[i]);
+        float ph = brdf::bsdf_pdf(&f.measured, wo[i], wi[i]);
+        brdf::BsdfSample sh = brdf::bsdf_sample(&f.measured, wo[i], u[i]);
+        samples += sh.flags != 0;
+        bool same = close(fh.x, f_cl[i].x) && close(fh.y, f_cl[i].y) && close(fh.z, f_cl[i].z) && close(ph, pdf_cl[i]) &&
+                    sh.flags == s_cl[i].flags && close(sh.pdf, s_cl[i].pdf) && std::fabs(sh.wi.x - s_cl[i].wi.x) < 1e-5f &&
+                    std::fabs(sh.wi.y - s_cl[i].wi.y) < 1e-5f && std::fabs(sh.wi.z - s_cl[i].wi.z) < 1e-5f && close(sh.f.y, s_cl[i].f.y);
+        differ += !same;
+    }
+    std::printf("measured OpenCL agreement: %d items, %d samples, %d differ beyond 1e-5\n", n, samples, differ);
+    CHECK(samples > n / 3);
+    CHECK(differ <= n / 200);
+}
+
+TEST_CASE("a sphere of the tabulated material renders as the lab material does (region t-test)", "[measured][render][welch][opencl]") {
+    const Fixture& f = fixture();
+    const std::string sphere = R"({
+  "camera": {"type": "pinhole", "position": [0, 0, 3.2], "look_at": [0, 0, 0], "fov_degrees": 40},
+  "materials": {"sample": {"lobes": {"diffuse": 1}}},
+  "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}}]
+})";
+    lab::opencl::Runtime runtime("");
+    auto renders = [&](const brdf::Material& m, uint64_t first_seed) {
+        std::vector<lab::film::ImageRgb> out;
+        for (int k = 0; k < 6; ++k) {
+            lab::render::RenderInput input =
+                render_input(m, "envmaps/studio.exr", 24, lab::render::LightSampling::mis, first_seed + uint64_t(k), sphere, false);
+            input.settings.max_depth = 4;
+            lab::render::OpenClRenderer renderer(runtime, input);
+            out.push_back(render_samples(renderer, 32).image);
+        }
+        return out;
+    };
+    std::vector<lab::film::ImageRgb> lab = renders(f.lab, 100), measured = renders(f.measured, 200);
+    lab::validation::RegionComparison same = lab::validation::compare_by_region(lab, measured, 2, 2, 0.01);
+    const lab::validation::RegionTest* w = same.worst();
+    std::printf("region t-test, lab vs tabulated sphere: %d of %zu rejected at %.2g; worst p %.3g (means %.4g vs %.4g)\n", same.rejected,
+                same.regions.size(), same.level, w->result.p_value, w->result.mean_a, w->result.mean_b);
+    CHECK(same.rejected == 0);
+    // the test sees a 10 % difference at this budget
+    for (lab::film::ImageRgb& image : measured)
+        for (float& v : image.rgb) v *= 1.10f;
+    CHECK(lab::validation::compare_by_region(lab, measured, 2, 2, 0.01).rejected > 0);
+}
