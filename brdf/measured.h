@@ -60,8 +60,10 @@ SS_FN int measured_cdf_find(GLOBAL_MEM const float* cdf, int n, float u) {
 
 /* The solid angle of one cell of band j (half of it: the azimuth cells cover [0, pi] only). */
 SS_FN float measured_cell_solid_angle(int j) {
+    /* cos a - cos b as 2 sin((a + b) / 2) sin((b - a) / 2): no cancellation, so the OpenCL and C++
+     * builds (whose cos differ in the last bit) agree on it to a few ulps */
     float band = 0.5f * SS_PI / (float)MEASURED_THETA_I_BINS;
-    return (cos((float)j * band) - cos((float)(j + 1) * band)) * (SS_PI / (float)MEASURED_PHI_BINS);
+    return 2.0f * sin(((float)j + 0.5f) * band) * sin(0.5f * band) * (SS_PI / (float)MEASURED_PHI_BINS);
 }
 
 SS_FN float measured_pdf(GLOBAL_MEM const float* block, float3 wo, float3 wi) {

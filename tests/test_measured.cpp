@@ -61,6 +61,14 @@ const Fixture& fixture() {
         Fixture x;
         x.dir = fs::temp_directory_path() / ("dtoadq_measured_" + std::to_string(::getpid()));
         fs::create_directories(x.dir);
+        // removed at exit: the table is 33 MB
+        static struct Cleanup {
+            fs::path dir;
+            ~Cleanup() {
+                std::error_code ec;
+                fs::remove_all(dir, ec);
+            }
+        } cleanup{x.dir};
         x.lab = lab_material();
         const brdf::Material lab = x.lab;
         brdf::write_merl_file((x.dir / "table.binary").string(),
@@ -143,10 +151,11 @@ TEST_CASE("a measured material is reciprocal", "[measured][reciprocity]") {
 
 TEST_CASE("the measured sampler's pdf matches its samples (chi-square)", "[measured][chi_square]") {
     const Fixture& f = fixture();
-    const float thetas[5] = {0.0f, 28.0f, 52.0f, 71.0f, 86.0f}, phis[5] = {0.0f, 40.0f, 200.0f, 115.0f, 300.0f};
-    for (int d = 0; d < 5; ++d) {
+    // normal incidence (where wo has no azimuth of its own), middle, grazing
+    const float thetas[3] = {0.0f, 47.0f, 84.0f}, phis[3] = {0.0f, 200.0f, 115.0f};
+    for (int d = 0; d < 3; ++d) {
         lab::validation::ChiSquareOptions options;
-        options.tests = 5;
+        options.tests = 3;
         options.seed = uint64_t(d) + 31;
         lab::validation::ChiSquareResult r = lab::validation::chi_square_bsdf(f.measured, brdf::direction_from_degrees(thetas[d], phis[d]), options);
         INFO("theta " << thetas[d] << ": " << lab::validation::describe(r));
@@ -173,23 +182,33 @@ TEST_CASE("measured eval, pdf and sample: the OpenCL build agrees with the C++ b
     std::vector<float3> f_cl = batch.eval(index, wo, wi);
     std::vector<float> pdf_cl = batch.pdf(index, wo, wi);
     std::vector<brdf::BsdfSample> s_cl = batch.sample(index, wo, u);
-    auto close = [](float a, float b) { return std::fabs(a - b) <= 1e-5f * std::fmax(std::fabs(a), std::fabs(b)) + 1e-30f; };
-    // A direction on a bin's edge may fall on either side in the two builds (their sin, cos and atan2
-    // differ in the last bit): such items are allowed, and must stay rare.
-    int differ = 0, samples = 0;
+    // The two builds' sin, cos, atan2 and sqrt differ in the last bit; the lookup's sqrt-spaced theta_h
+    // coordinate and the interpolation between bins amplify that, and a direction on a bin's edge may
+    // fall on either side. Every value within 1e-4 relative, at most 1 % of the items beyond 1e-5 (the
+    // lab's agreement level, tests/test_opencl_agreement.cpp).
+    double worst = 0.0;
+    int beyond = 0, samples = 0;
+    auto relative = [](double a, double b) { return a == b ? 0.0 : std::fabs(a - b) / std::fmax(std::fabs(a), std::fabs(b)); };
     for (int i = 0; i < n; ++i) {
         float3 fh = brdf::bsdf_eval(&f.measured, wo[i], wi[i]);
         float ph = brdf::bsdf_pdf(&f.measured, wo[i], wi[i]);
         brdf::BsdfSample sh = brdf::bsdf_sample(&f.measured, wo[i], u[i]);
         samples += sh.flags != 0;
-        bool same = close(fh.x, f_cl[i].x) && close(fh.y, f_cl[i].y) && close(fh.z, f_cl[i].z) && close(ph, pdf_cl[i]) &&
-                    sh.flags == s_cl[i].flags && close(sh.pdf, s_cl[i].pdf) && std::fabs(sh.wi.x - s_cl[i].wi.x) < 1e-5f &&
-                    std::fabs(sh.wi.y - s_cl[i].wi.y) < 1e-5f && std::fabs(sh.wi.z - s_cl[i].wi.z) < 1e-5f && close(sh.f.y, s_cl[i].f.y);
-        differ += !same;
+        double d = 0.0;
+        for (int c = 0; c < 3; ++c) d = std::fmax(d, relative(fh[c], f_cl[i][c]));
+        d = std::fmax(d, relative(ph, pdf_cl[i]));
+        if (sh.flags != s_cl[i].flags) d = INFINITY;
+        for (int c = 0; c < 3; ++c) d = std::fmax(d, std::fabs(double(sh.wi[c]) - s_cl[i].wi[c]));
+        for (int c = 0; c < 3; ++c) d = std::fmax(d, relative(sh.f[c], s_cl[i].f[c]));
+        d = std::fmax(d, relative(sh.pdf, s_cl[i].pdf));
+        worst = std::fmax(worst, d);
+        beyond += d > 1e-5;
     }
-    std::printf("measured OpenCL agreement: %d items, %d samples, %d differ beyond 1e-5\n", n, samples, differ);
+    std::printf("measured OpenCL agreement: %d items, %d samples; worst relative difference %.3g, %d items beyond 1e-5\n", n, samples, worst,
+                beyond);
+    CHECK(worst <= 1e-4);
+    CHECK(beyond <= n / 100);
     CHECK(samples > n / 3);
-    CHECK(differ <= n / 200);
 }
 
 TEST_CASE("a sphere of the tabulated material renders as the lab material does (region t-test)", "[measured][render][welch][opencl]") {
@@ -200,13 +219,14 @@ TEST_CASE("a sphere of the tabulated material renders as the lab material does (
   "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}}]
 })";
     lab::opencl::Runtime runtime("");
-    auto renders = [&](const brdf::Material& m, uint64_t first_seed) {
+    // independent renders: one renderer, each render from other sample indices
+    auto renders = [&](const brdf::Material& m, uint64_t seed) {
+        lab::render::RenderInput input = render_input(m, "envmaps/studio.exr", 24, lab::render::LightSampling::mis, seed, sphere);
+        input.settings.max_depth = 4;
+        lab::render::OpenClRenderer renderer(runtime, input);
         std::vector<lab::film::ImageRgb> out;
         for (int k = 0; k < 6; ++k) {
-            lab::render::RenderInput input =
-                render_input(m, "envmaps/studio.exr", 24, lab::render::LightSampling::mis, first_seed + uint64_t(k), sphere, false);
-            input.settings.max_depth = 4;
-            lab::render::OpenClRenderer renderer(runtime, input);
+            renderer.set_first_sample(32 * k);
             out.push_back(render_samples(renderer, 32).image);
         }
         return out;
