@@ -71,7 +71,9 @@ SS_FN float measured_pdf(GLOBAL_MEM const float* block, float3 wo, float3 wi) {
     GLOBAL_MEM const float* bin = measured_sampler_bin(block, wo);
     int j = measured_polar_bin(measured_polar_angle(wi), MEASURED_THETA_I_BINS);
     float2 a = measured_azimuth_axis(wo);
-    float dphi = atan2(fabs(a.x * wi.y - a.y * wi.x), a.x * wi.x + a.y * wi.y);
+    float across = fabs(a.x * wi.y - a.y * wi.x), along = a.x * wi.x + a.y * wi.y;
+    /* at the pole both are zero, maybe negative zero, whose atan2 is pi: the pole is azimuth 0 */
+    float dphi = across == 0.0f && along == 0.0f ? 0.0f : atan2(across, along);
     int l = clamp((int)(dphi * ((float)MEASURED_PHI_BINS / SS_PI)), 0, MEASURED_PHI_BINS - 1);
     GLOBAL_MEM const float* row = bin + (MEASURED_THETA_I_BINS + 1) + j * (MEASURED_PHI_BINS + 1);
     float p = (bin[j + 1] - bin[j]) * (row[l + 1] - row[l]);

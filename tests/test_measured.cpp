@@ -106,6 +106,11 @@ TEST_CASE("a measured preset reads its table once and evaluates it", "[measured]
     CHECK(measured.x == Approx(lab.x).epsilon(1e-3));
     CHECK(measured.z == Approx(lab.z).epsilon(1e-3));
     CHECK(measured == brdf::merl_eval(block, wo, wi));
+    // at the pole the azimuth is 0 whatever the signs of the zeros (atan2(0, -0) is pi): the sampler
+    // may return (0, -0, 1) after its rotation, and its pdf must be the one bsdf_pdf gives there
+    const float3 oblique = brdf::direction_from_degrees(47.0f, 200.0f);
+    CHECK(brdf::bsdf_pdf(&f.measured, oblique, float3(0.0f, -0.0f, 1.0f)) == brdf::bsdf_pdf(&f.measured, oblique, float3(0.0f, 0.0f, 1.0f)));
+    CHECK(brdf::bsdf_pdf(&f.measured, oblique, float3(-0.0f, -0.0f, 1.0f)) == brdf::bsdf_pdf(&f.measured, oblique, float3(0.0f, 0.0f, 1.0f)));
     // below the horizon: nothing
     CHECK(brdf::bsdf_eval(&f.measured, wo, float3(wi.x, wi.y, -wi.z)) == float3(0.0f));
     CHECK(brdf::bsdf_pdf(&f.measured, wo, float3(wi.x, wi.y, -wi.z)) == 0.0f);
