@@ -77,16 +77,24 @@ TEST_CASE("switched-off features never reach the kernel source", "[features]") {
     CHECK(contains_file(source, "brdf/ggx.h"));
     CHECK(contains_file(source, "brdf/glossy.h"));
     for (const char* absent : {"brdf/hyper_cauchy.h", "brdf/special_functions.h", "brdf/henyey_greenstein.h", "brdf/dielectric.h",
-                               "brdf/diffuse.h", "brdf/dtoadq2017_model.h"}) {
+                               "brdf/diffuse.h", "brdf/dtoadq2017_model.h", "brdf/measured.h", "brdf/merl.h"}) {
         INFO(absent);
         CHECK_FALSE(contains_file(source, absent));
     }
     CHECK(source.text.find("BRDF_FEATURE_HYPER_CAUCHY") != std::string::npos);  // the define itself
     CHECK(source.text.find("hyper_cauchy_d") == std::string::npos);
 
+    // A measured-only scene: the table lookup and its sampler, and none of the lab model.
+    brdf::Material measured = brdf::default_material();
+    measured.model = BRDF_MODEL_MEASURED;
+    lab::opencl::AssembledSource table = assembled_with({measured});
+    CHECK(contains_file(table, "brdf/measured.h"));
+    CHECK(contains_file(table, "brdf/merl.h"));
+    CHECK_FALSE(contains_file(table, "brdf/lab_model.h"));
+
     // Without switches everything is there, and the #if lines are left to the compiler.
     lab::opencl::AssembledSource full = lab::opencl::assemble_embedded_source("kernels/brdf_batch.cl");
-    for (const char* present : {"brdf/hyper_cauchy.h", "brdf/henyey_greenstein.h", "brdf/dielectric.h", "brdf/dtoadq2017_model.h"}) {
+    for (const char* present : {"brdf/hyper_cauchy.h", "brdf/henyey_greenstein.h", "brdf/dielectric.h", "brdf/dtoadq2017_model.h", "brdf/measured.h"}) {
         INFO(present);
         CHECK(contains_file(full, present));
     }
