@@ -62,6 +62,13 @@ cli_bad_input(NAME lobe.overflowing_number ABSENT ${PNG} EXPECT "${E}${D}/overfl
               ARGS ${LOBE} ${D}/overflow.json)
 cli_bad_input(NAME lobe.nan_literal ABSENT ${PNG} EXPECT "${E}${D}/nan_literal\\.json: roughness: malformed JSON: .*invalid literal"
               ARGS ${LOBE} ${D}/nan_literal.json)
+# a measured preset: its MERL file missing, or truncated (a header alone: 12 bytes)
+cli_bad_input(NAME lobe.measured_missing ABSENT ${PNG}
+              EXPECT "${E}${D}/measured_missing\\.json: measured: MERL file \"absent\\.binary\" not found \\(looked for ${D}/absent\\.binary\\)$"
+              ARGS ${LOBE} ${D}/measured_missing.json)
+cli_bad_input(NAME lobe.measured_truncated ABSENT ${PNG}
+              EXPECT "${E}${D}/measured_truncated\\.json: measured: ${D}/truncated\\.binary: data: truncated: 12 bytes, expected 34992012$"
+              ARGS ${LOBE} ${D}/measured_truncated.json)
 # the second of several materials is the bad one
 cli_bad_input(NAME lobe.second_material_bad ABSENT ${PNG} EXPECT "${E}${D}/unknown_key\\.json: roughnes: unknown key$"
               ARGS ${LOBE} presets/gold.json --material ${D}/unknown_key.json)
