@@ -118,33 +118,36 @@ TEST_CASE("a measured preset reads its table once and evaluates it", "[measured]
 }
 
 TEST_CASE("a measured preset's problems name the preset and the field", "[measured]") {
-    const Fixture& f = fixture();
-    const std::string missing = write_text(f.dir / "missing.json", R"({"measured": "nowhere.binary"})").string();
+    // its own small files: no table needed
+    const fs::path dir = fs::temp_directory_path() / ("dtoadq_measured_errors_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string missing = write_text(dir / "missing.json", R"({"measured": "nowhere.binary"})").string();
     std::string e = load_error(missing);
     CHECK(e.rfind(missing + ": measured: MERL file \"nowhere.binary\" not found", 0) == 0);
 
-    // a truncated table: the MERL reader's line after the preset's field
-    fs::path table = f.dir / "table.binary";
-    std::vector<char> bytes(size_t(fs::file_size(table)) / 2);
-    std::ifstream(table, std::ios::binary).read(bytes.data(), std::streamsize(bytes.size()));
-    std::ofstream(f.dir / "half.binary", std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-    const std::string truncated = write_text(f.dir / "truncated.json", R"({"measured": "half.binary"})").string();
+    // a truncated table (the header alone): the MERL reader's line after the preset's field
+    const int header[3] = {90, 90, 180};
+    std::ofstream(dir / "header.binary", std::ios::binary).write(reinterpret_cast<const char*>(header), sizeof header);
+    const std::string truncated = write_text(dir / "truncated.json", R"({"measured": "header.binary"})").string();
     e = load_error(truncated);
     INFO(e);
     CHECK(e.rfind(truncated + ": measured: ", 0) == 0);
-    CHECK(e.find("half.binary") != std::string::npos);
+    CHECK(e.find("header.binary: data: truncated") != std::string::npos);
     CHECK(e.find('\n') == std::string::npos);
 
-    const std::string number = write_text(f.dir / "number.json", R"({"measured": 3})").string();
+    const std::string number = write_text(dir / "number.json", R"({"measured": 3})").string();
     CHECK(load_error(number).rfind(number + ": measured: expected a file path", 0) == 0);
-    const std::string both = write_text(f.dir / "both.json", R"({"model": "lab", "measured": "table.binary"})").string();
+    const std::string both = write_text(dir / "both.json", R"({"model": "lab", "measured": "header.binary"})").string();
     CHECK(load_error(both).rfind(both + ": model: ", 0) == 0);
+    std::error_code ec;
+    fs::remove_all(dir, ec);
 }
 
 TEST_CASE("a measured material switches on its feature only", "[measured][features]") {
-    const Fixture& f = fixture();
-    for (const auto& [name, on] : brdf::used_features({f.measured})) CHECK(on == (name == "BRDF_FEATURE_MEASURED"));
-    for (const auto& [name, on] : brdf::used_features({f.lab}))
+    brdf::Material measured = brdf::default_material();
+    measured.model = BRDF_MODEL_MEASURED;
+    for (const auto& [name, on] : brdf::used_features({measured})) CHECK(on == (name == "BRDF_FEATURE_MEASURED"));
+    for (const auto& [name, on] : brdf::used_features({lab_material()}))
         if (name == "BRDF_FEATURE_MEASURED") CHECK_FALSE(on);
 }
 
@@ -155,7 +158,8 @@ TEST_CASE("a measured material is reciprocal", "[measured][reciprocity]") {
     CHECK(r.max_relative_error <= 2e-4);
 }
 
-TEST_CASE("the measured sampler's pdf matches its samples (chi-square)", "[measured][chi_square]") {
+// [sweep]: the sanitized run covers the same sampler code with the efficiency test below.
+TEST_CASE("the measured sampler's pdf matches its samples (chi-square)", "[measured][chi_square][sweep]") {
     const Fixture& f = fixture();
     // normal incidence (where wo has no azimuth of its own), middle, grazing
     const float thetas[3] = {0.0f, 47.0f, 84.0f}, phis[3] = {0.0f, 200.0f, 115.0f};
