@@ -417,3 +417,16 @@ foreach(view_case accumulate set preset export env)
   # One at a time: xvfb-run -a started twice at once can pick the same display number.
   set_tests_properties(cli.view.${view_case} PROPERTIES LABELS cli TIMEOUT 240 SKIP_RETURN_CODE 77 RESOURCE_LOCK xvfb)
 endforeach()
+
+# --- fit (docs/fitting.md): a bad measured file and bad options, each one line, no preset written --
+set(FIT fit -o ${PNG}.json --quiet --measured)
+cli_bad_input(NAME fit.missing_file ABSENT ${PNG}.json EXPECT "${E}${D}/absent\\.binary: cannot open the measured BRDF file$"
+              ARGS ${FIT} ${D}/absent.binary)
+cli_bad_input(NAME fit.truncated_file ABSENT ${PNG}.json EXPECT "${E}${D}/truncated\\.binary: data: truncated: 44 bytes, expected 34992012$"
+              ARGS ${FIT} ${D}/truncated.binary)
+cli_bad_input(NAME fit.distribution ABSENT ${PNG}.json EXPECT "${E}command line: --distribution: expected ggx or hyper_cauchy, got \"beckmann\"$"
+              ARGS ${FIT} ${D}/truncated.binary --distribution beckmann)
+cli_bad_input(NAME fit.lobes ABSENT ${PNG}.json EXPECT "${E}command line: --lobes: \"transmission\" cannot be fitted"
+              ARGS ${FIT} ${D}/truncated.binary --lobes diffuse,transmission)
+cli_bad_input(NAME fit.stride ABSENT ${PNG}.json EXPECT "${E}command line: --stride: expected THETA_H,THETA_D,PHI_D bin strides, got \"3,3\"$"
+              ARGS ${FIT} ${D}/truncated.binary --stride 3,3)
