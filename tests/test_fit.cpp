@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "brdf/host/merl_file.hpp"
 #include "brdf/host/parameters.hpp"
 #include "common/input_error.hpp"
@@ -53,7 +55,9 @@ Material case_material(const RoundTripCase& c) {
 // The test's pairs and starts are fewer than the command's defaults (docs/fitting.md) to keep it
 // cheap; the data are noise-free and the model holds the truth, so the tolerances are the issue's
 // own: 5 % in roughness, 2 % in each albedo channel.
-TEST_CASE("fit: MERL files made from known lab materials give their roughness and albedo back", "[fit]") {
+// [sweep]: 7 s of CPU in the plain build; the sanitized run covers the same code through the short
+// search of the test below.
+TEST_CASE("fit: MERL files made from known lab materials give their roughness and albedo back", "[fit][sweep]") {
     const RoundTripCase cases[] = {
         {"ggx_smooth", BRDF_DISTRIBUTION_GGX, {0.70f, 0.40f, 0.20f}, 0.30f, 0.6f, 0.04f, 2.0f},
         {"ggx_rough", BRDF_DISTRIBUTION_GGX, {0.25f, 0.50f, 0.80f}, 0.60f, 1.0f, 0.08f, 2.0f},
@@ -107,6 +111,22 @@ TEST_CASE("fit: the error is zero at the truth and grows away from it", "[fit]")
     int counted = 0;
     for (const lab::fit::IncidenceBand& band : b.incidence) counted += band.pairs;
     CHECK(counted == int(pairs.size()));
+
+    // a short search: every start is kept and reported, and the best is no worse than the box's
+    // centre, where the first start begins
+    lab::fit::FitOptions options;
+    options.starts = 2;
+    options.max_evaluations = 40;
+    const lab::fit::FitResult r = lab::fit::fit_material(pairs, space, options);
+    REQUIRE(r.starts.size() == 2);
+    std::vector<double> centre;
+    for (const lab::fit::FitParameter& p : lab::fit::fit_parameters(space)) centre.push_back(0.5 * (p.min + p.max));
+    CHECK(r.error <= lab::fit::fit_error(lab::fit::material_from_parameters(space, centre), pairs));
+    CHECK(r.evaluations <= 80);
+    const nlohmann::json report = lab::fit::fit_report("t.binary", space, r, lab::fit::error_breakdown(r.material, pairs));
+    CHECK(report.at("starts").size() == 2);
+    CHECK(report.at("error").at("incidence").size() == 9);
+    CHECK(report.at("parameters").at("roughness").get<double>() == Approx(r.material.roughness).epsilon(1e-6));
 }
 
 TEST_CASE("fit: --lobes takes the reflection lobes and names what it refuses", "[fit]") {
