@@ -12,6 +12,7 @@
 
 #include "brdf/host/merl_file.hpp"
 #include "brdf/host/parameters.hpp"
+#include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
 #include "fit/fit_metric.hpp"
 #include "fit/fit_optimizer.hpp"
@@ -127,6 +128,15 @@ TEST_CASE("fit: the error is zero at the truth and grows away from it", "[fit]")
     CHECK(report.at("starts").size() == 2);
     CHECK(report.at("error").at("incidence").size() == 9);
     CHECK(report.at("parameters").at("roughness").get<double>() == Approx(r.material.roughness).epsilon(1e-6));
+    // the fitted material as the command writes it: a preset that loads back to the same error
+    brdf::Preset preset;
+    preset.name = "fitted";
+    preset.material = r.material;
+    const std::string path = (fs::temp_directory_path() / "dtoadq_fit_preset.json").string();
+    brdf::save_preset(preset, path);
+    const brdf::Preset loaded = brdf::load_preset(path);
+    fs::remove(path);
+    CHECK(lab::fit::fit_error(loaded.material, pairs) == Approx(r.error).epsilon(1e-5));
 }
 
 TEST_CASE("fit: --lobes takes the reflection lobes and names what it refuses", "[fit]") {
