@@ -1,7 +1,9 @@
 #include "fit/fit_metric.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
+#include <thread>
 
 namespace lab::fit {
 
@@ -13,13 +15,37 @@ brdf::float3 log_residual(brdf::float3 model, brdf::float3 measured, float cos_i
 
 brdf::float3 model_value(const brdf::Material& m, const FitPair& pair) { return brdf::bsdf_eval(&m, pair.wo, pair.wi); }
 
-double fit_error(const brdf::Material& m, const std::vector<FitPair>& pairs) {
-    if (pairs.empty()) return 0.0;
+namespace {
+
+double squared_residuals(const brdf::Material& m, const FitPair* begin, const FitPair* end) {
     double sum = 0.0;
-    for (const FitPair& p : pairs) {
-        const brdf::float3 r = log_residual(model_value(m, p), p.measured, p.wi.z);
+    for (const FitPair* p = begin; p != end; ++p) {
+        const brdf::float3 r = log_residual(model_value(m, *p), p->measured, p->wi.z);
         sum += double(r.x) * r.x + double(r.y) * r.y + double(r.z) * r.z;
     }
+    return sum;
+}
+
+}  // namespace
+
+double fit_error(const brdf::Material& m, const std::vector<FitPair>& pairs) {
+    if (pairs.empty()) return 0.0;
+    // Fixed chunks summed in order, whatever the thread count: the same error, bit for bit, on any
+    // machine, so a fit is repeatable. The threads share the chunks round-robin.
+    constexpr size_t kChunk = 2048;
+    const size_t chunks = (pairs.size() + kChunk - 1) / kChunk;
+    std::vector<double> partial(chunks, 0.0);
+    auto run = [&](size_t first, size_t step) {
+        for (size_t c = first; c < chunks; c += step)
+            partial[c] = squared_residuals(m, pairs.data() + c * kChunk, pairs.data() + std::min(pairs.size(), (c + 1) * kChunk));
+    };
+    const size_t threads = std::min<size_t>(chunks, std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> workers;
+    for (size_t t = 1; t < threads; ++t) workers.emplace_back(run, t, threads);
+    run(0, threads);
+    for (std::thread& w : workers) w.join();
+    double sum = 0.0;
+    for (double p : partial) sum += p;
     return std::sqrt(sum / (3.0 * double(pairs.size())));
 }
 

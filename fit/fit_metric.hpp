@@ -19,7 +19,7 @@ brdf::float3 log_residual(brdf::float3 model, brdf::float3 measured, float cos_i
 // The model f(wo, wi) as the fit evaluates it: the lab BSDF without the cosine.
 brdf::float3 model_value(const brdf::Material& m, const FitPair& pair);
 
-// E over the pairs (0 for none).
+// E over the pairs (0 for none), on the machine's threads.
 double fit_error(const brdf::Material& m, const std::vector<FitPair>& pairs);
 
 // E split up: per channel, and per band of incident angle theta_i.
