@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +20,8 @@
 #include "fit/fit_pairs.hpp"
 #include "fit/fit_report.hpp"
 #include "fit/fit_space.hpp"
+#include "plots/fit_chart.hpp"
+#include "plots/lobe_data.hpp"
 
 namespace fs = std::filesystem;
 using brdf::float3;
@@ -152,4 +155,40 @@ TEST_CASE("fit: --lobes takes the reflection lobes and names what it refuses", "
     s.distribution = BRDF_DISTRIBUTION_HYPER_CAUCHY;
     s.anisotropic = true;
     for (const lab::fit::FitParameter& p : lab::fit::fit_parameters(s)) CHECK(p.min < p.max);
+}
+
+TEST_CASE("fit chart: the measured slice of a Lambert table is albedo / pi cos, and the chart is a PNG", "[fit][python]") {
+    Material lambert = brdf::default_material();
+    for (int k = 0; k < 3; ++k) lambert.albedo[k] = 0.5f;
+    lambert.weight_diffuse = 1.0f;
+    lambert.weight_glossy = lambert.weight_specular = lambert.weight_transmission = 0.0f;
+    const brdf::MeasuredTable table = brdf::tabulate_merl([&](float3 wo, float3 wi) { return brdf::bsdf_eval(&lambert, wo, wi); }, "lambert");
+    // the chart's measured curve: the lobe plot's slice of merl_eval, in closed form for Lambert
+    const auto slice = lab::plots::plane_slice([&table](float3 wi, float3 wo) { return brdf::merl_eval(table.rgb.data(), wo, wi); },
+                                               40.0f, 0.0f, 5.0f, false);
+    REQUIRE(slice.size() == 37u);
+    for (const lab::plots::PlaneSample& s : slice)
+        CHECK(s.value == Approx(0.5 / M_PI * std::cos(s.angle_deg * M_PI / 180.0)).margin(1e-6));
+
+    brdf::Preset fitted;
+    fitted.name = "lambert_fit";
+    fitted.material = lambert;
+    lab::plots::FitChartData data;
+    data.error_map = lab::fit::error_map(table, lambert, 30).error;
+    const std::string png = (fs::temp_directory_path() / "dtoadq_fit_chart.png").string();
+    lab::plots::write_fit_chart(table, fitted, data, png);
+    std::ifstream in(png, std::ios::binary);
+    char signature[4] = {};
+    in.read(signature, 4);
+    CHECK(std::string(signature + 1, 3) == "PNG");
+    CHECK(fs::file_size(png) > 30000u);
+    fs::remove(png);
+    // the map is zero where the model is the table, and blank (NaN) only below the horizon
+    int blank = 0;
+    for (double e : data.error_map) {
+        if (std::isnan(e)) ++blank;
+        else CHECK(e == 0.0);
+    }
+    CHECK(blank > 0);
+    CHECK(blank < int(data.error_map.size()) / 2);
 }
