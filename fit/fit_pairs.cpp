@@ -41,8 +41,8 @@ std::vector<FitPair> fit_pairs(const brdf::MeasuredTable& table, const PairGrid&
                 brdf::directions_from_half_diff(brdf::merl_bin_center(ih, id, ip), &wo, &wi);
                 if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) continue;
                 const brdf::float3 measured = brdf::merl_entry(table.rgb.data(), brdf::merl_entry_index(ih, id, ip));
-                // MERL marks unmeasured entries with -1 in every channel; none is a measurement to fit
-                if (!(measured.x >= 0.0f && measured.y >= 0.0f && measured.z >= 0.0f)) continue;
+                // MERL marks unmeasured entries with -1 in every channel; the reader's fill is no measurement to fit
+                if (brdf::is_unmeasured(table, brdf::merl_entry_index(ih, id, ip))) continue;
                 for (int k = 0; k < grid.phi_h_count; ++k) {
                     const float phi_h = float(M_PI) * float(k) / float(grid.phi_h_count);
                     pairs.push_back({turned(wo, phi_h), turned(wi, phi_h), measured, ih, id, ip});

@@ -3,7 +3,7 @@
 // stride bins along theta_h, theta_d and phi_d; each contributes the bin at its middle. Like the
 // table, they are dense near the highlight (theta_h bins are spaced as sqrt(theta_h)). Pairs with
 // either direction at or below the horizon are left out: the table holds no measurement there; so
-// are entries marked unmeasured (negative: MERL's files hold -1 there).
+// are entries the file marks unmeasured (MERL's files hold -1 there; brdf::is_unmeasured).
 #pragma once
 
 #include <vector>

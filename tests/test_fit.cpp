@@ -105,7 +105,8 @@ TEST_CASE("fit: the error is zero at the truth and grows away from it", "[fit]")
     // an entry marked unmeasured (MERL's -1) is no pair
     brdf::MeasuredTable marked = table;
     const lab::fit::FitPair& first = pairs.front();
-    for (int c = 0; c < 3; ++c) marked.rgb[3 * std::size_t(brdf::merl_entry_index(first.ih, first.id, first.ip)) + c] = -1.0f;
+    marked.unmeasured.assign(MERL_ENTRY_COUNT, false);
+    marked.unmeasured[std::size_t(brdf::merl_entry_index(first.ih, first.id, first.ip))] = true;
     CHECK(lab::fit::fit_pairs(marked, lab::fit::PairGrid{6, 6, 20, 1}).size() == pairs.size() - 1);
     Material rougher = truth;
     rougher.roughness = 0.42f;
