@@ -234,6 +234,7 @@ public:
     // A surface at distance `expression`, index `index`.
     void candidate(const std::string& expression, int index, const std::string& indent) {
         body_ << indent << "e = " << expression << ";\n"
+              << indent << "SCENE_COUNT_EVALUATION;\n"
               << indent << "if (e < d || (e == d && " << index << " < k)) { d = e; k = " << index << "; }\n";
     }
     const std::string body() const { return body_.str(); }
@@ -329,10 +330,19 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
         << "#include \"single_source/vocabulary.h\"\n";
     for (const std::string& h : headers) out << "#include \"" << h << "\"\n";
     out << "\n" << functions.str();
+    // A measurement build (-DSCENE_COUNT_EVALUATIONS, `dtoadq bench breakdown`) counts the distance
+    // functions evaluated; the default build has no counter at all.
     out << "/* The nearest object or emitter (index: objects, then emitters) and its distance. */\n"
-        << "SS_FN float scene_nearest(float3 p, int* nearest) {\n    int k = 0;\n    float d = INFINITY, e;\n";
+        << "#ifdef SCENE_COUNT_EVALUATIONS\n#define SCENE_COUNT_EVALUATION (*evaluations += 1u)\n"
+        << "SS_FN float scene_nearest_counted(float3 p, int* nearest, uint* evaluations) {\n"
+        << "#else\n#define SCENE_COUNT_EVALUATION ((void)0)\n"
+        << "SS_FN float scene_nearest(float3 p, int* nearest) {\n#endif\n    int k = 0;\n    float d = INFINITY, e;\n";
     if (nearest.box_tests()) out << "    float b; /* a box test */\n";
     out << nearest.body() << "    *nearest = k;\n    return d;\n}\n\n"
+        << "#ifdef SCENE_COUNT_EVALUATIONS\n"
+        << "SS_FN float scene_nearest(float3 p, int* nearest) {\n    uint n = 0u;\n    return scene_nearest_counted(p, nearest, &n);\n}\n\n"
+        << "SS_FN float scene_distance_counted(float3 p, uint* evaluations) {\n    int k;\n"
+        << "    return scene_nearest_counted(p, &k, evaluations);\n}\n#endif\n\n"
         << "SS_FN int scene_material_slot(int nearest) {\n    switch (nearest) {\n"
         << slot_cases.str() << "    default: return 0;\n    }\n}\n\n"
         << "SS_FN float scene_distance(float3 p) {\n    int k;\n    return scene_nearest(p, &k);\n}\n\n"
