@@ -192,10 +192,13 @@ float evaluation_cost(const Node& node) {
 constexpr float kBoundedObjectCost = 2.5f;
 
 // Whether an object is worth a box test of its own: it costs more than the test, and its box
-// bounds it along some axis (with f >= dist(p, box), which a broken repetition does not keep).
+// bounds it along two axes or more (with f >= dist(p, box), which a broken repetition does not
+// keep). A box bounded along one axis is a slab that most rays of a scene cross: the repetition
+// scene's colonnade, an endless row of columns, had a test that skipped nothing (3.00 distance
+// evaluations per step with and without it) and cost 13-17 % of its paths/s (bench objects).
 bool worth_bounding(const Object& object, const ShapeAnalysis& a) {
-    bool any_bounded = std::isfinite(a.box_half.x) || std::isfinite(a.box_half.y) || std::isfinite(a.box_half.z);
-    return any_bounded && a.broken.empty() && evaluation_cost(object.shape) >= kBoundedObjectCost;
+    int bounded = int(std::isfinite(a.box_half.x)) + int(std::isfinite(a.box_half.y)) + int(std::isfinite(a.box_half.z));
+    return bounded >= 2 && a.broken.empty() && evaluation_cost(object.shape) >= kBoundedObjectCost;
 }
 
 // The body of scene_nearest: the nearest object or emitter (index: objects in file order, then
