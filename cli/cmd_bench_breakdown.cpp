@@ -1,5 +1,5 @@
 // dtoadq bench breakdown: where the path tracer's time goes, per scene. (1) March work: rays per
-// path, march steps per ray, distance functions evaluated per step (cli/bench_work.hpp). (2) Parts:
+// path, march steps per ray, distance functions evaluated per step (render/march_work.hpp). (2) Parts:
 // paths/s with the random numbers, the environment's importance sampling or the BSDF replaced by a
 // nearly free stand-in (kernels/bench_standins.h), against the default build, interleaved in one
 // run; 1 - default/stand-in is the part's share of the time, as far as the stand-in keeps the
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cli/bench_convergence.hpp"
-#include "cli/bench_work.hpp"
+#include "render/march_work.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -74,9 +74,9 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         if (!scene.environment && scene.emitters.empty() && scene.point_lights.empty()) o.default_env = "envmaps/courtyard.exr";
         RenderJob job = prepare_render_job(o);
         std::printf("\n%s\n", fs::path(file).filename().string().c_str());
-        MarchWork w = count_march_work(runtime, job.input, c.count_samples);
-        std::printf("  rays/path %.2f, march steps/ray %.1f, distance evaluations/step %.2f\n", w.rays_per_path, w.steps_per_ray,
-                    w.evaluations_per_step);
+        render::MarchWork w = render::count_march_work(runtime, job.input, c.count_samples);
+        std::printf("  rays/path %.2f, march steps/ray %.1f, distance evaluations/step %.2f%s\n", w.rays_per_path, w.steps_per_ray,
+                    w.evaluations_per_step, w.same_film ? "" : " (the counting build's film differs: figures doubtful)");
 
         const char* parts[] = {"RNG", "ENVIRONMENT", "BSDF"};
         std::vector<render::RenderInput> variants{job.input};
@@ -86,10 +86,13 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         }
         std::vector<Speed> s = interleaved(runtime, variants, c);
         std::printf("  default: %.3g paths/s, %.2f rays/path\n", s[0].paths_per_second, s[0].rays_per_path);
-        for (size_t i = 0; i < 3; ++i)
-            std::printf("  stand-in %-12s %.3g paths/s (%.2fx), %.2f rays/path; share of the time about %.0f %%\n", parts[i],
+        // the share from rays/s: a stand-in that changes the path length (the grey Lambert BSDF) changes paths/s for that too
+        for (size_t i = 0; i < 3; ++i) {
+            double rays = s[i + 1].paths_per_second * s[i + 1].rays_per_path, default_rays = s[0].paths_per_second * s[0].rays_per_path;
+            std::printf("  stand-in %-12s %.3g paths/s (%.2fx), %.2f rays/path, rays/s %.2fx: share of the time about %.0f %%\n", parts[i],
                         s[i + 1].paths_per_second, s[i + 1].paths_per_second / s[0].paths_per_second, s[i + 1].rays_per_path,
-                        100.0 * (1.0 - s[0].paths_per_second / s[i + 1].paths_per_second));
+                        rays / default_rays, 100.0 * (1.0 - default_rays / rays));
+        }
 
         std::vector<render::RenderInput> sizes{job.input};
         for (int l : c.local_sizes) {

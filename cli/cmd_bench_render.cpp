@@ -1,7 +1,7 @@
 // dtoadq bench render: the render core's figures per bundled scene. Paths/s and rays/s of the path
 // tracer on the OpenCL device and of the same integrator built as C++ on the host's threads, as a
-// ratio, with march steps per ray and distance evaluations per step (cli/bench_work.hpp); and on the scenes where the choice matters (the Cornell box, Veach's MIS scene) the
-// equal-time error of next-event estimation with MIS against BSDF sampling alone (what the
+// ratio, with march steps per ray and distance evaluations per step (render/march_work.hpp); and
+// on the scenes where the choice matters (the Cornell box, Veach's MIS scene) the equal-time error of next-event estimation with MIS against BSDF sampling alone (what the
 // preview did before the render core) and light sampling alone, against a long reference. Then,
 // on the scenes of --integrators (the Cornell box, the caustic), the equal-time error of bdpt and lt
 // against pt over the same path space (pt's max depth = bdpt's max vertices - 2), against a long pt
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cli/bench_convergence.hpp"
-#include "cli/bench_work.hpp"
+#include "render/march_work.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -95,7 +95,7 @@ void run_bench_render(const BenchRenderCommand& c) {
         RenderJob job = scene_job(c.job, file);
         std::unique_ptr<render::Renderer> device = on_device(job.input);
         render::RenderStatistics d = measure(*device, c.throughput_seconds);
-        MarchWork work = count_march_work(runtime, job.input, 1);
+        render::MarchWork work = render::count_march_work(runtime, job.input, 1);
         render::HostRenderer host(job.input);
         render::RenderStatistics h = measure(host, c.throughput_seconds);
         double bidirectional[2];

@@ -7,15 +7,16 @@
 #include "opencl/runtime.hpp"
 #include "render/renderer.hpp"
 
-namespace lab::cli {
+namespace lab::render {
 
 struct MarchWork {
     double rays_per_path = 0.0;
     double steps_per_ray = 0.0;         // distance-field evaluations of the marches (normals not included)
     double evaluations_per_step = 0.0;  // objects' and emitters' distance functions per march step
+    bool same_film = false;             // the counting build's film has the default build's bits
 };
 
 // Renders `samples` samples per pixel of `input` twice (default and counting builds).
-MarchWork count_march_work(const opencl::Runtime& runtime, render::RenderInput input, int samples);
+MarchWork count_march_work(const opencl::Runtime& runtime, RenderInput input, int samples);
 
-}  // namespace lab::cli
+}  // namespace lab::render
