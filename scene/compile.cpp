@@ -191,6 +191,9 @@ float evaluation_cost(const Node& node) {
 
 constexpr float kBoundedObjectCost = 2.5f;
 
+// Object trees of at least this many objects start with the nearer-first guess (NearestWriter).
+constexpr size_t kGuessMinObjects = 16;
+
 // Whether an object is worth a box test of its own: it costs more than the test, and its box
 // bounds it along two axes or more (with f >= dist(p, box), which a broken repetition does not
 // keep). A box bounded along one axis is a slab that most rays of a scene cross: the repetition
@@ -263,6 +266,10 @@ private:
     // are tested against a small distance. Then every group in tree order, each guarded by its box
     // test, skipping the guessed object (variable g).
     void traversal(const std::vector<ObjectTreeNode>& tree) {
+        // The guess's box tests pay on a large tree only: 1.95x paths/s on the 64-object grid, 0.92x
+        // on the primitives scene (a tree of a few objects, 1.27 evaluations per step without it).
+        if (tree.size() < 2 * kGuessMinObjects - 1) return node(tree, 0, "    ");
+        guessed_ = true;
         open_test(0.5f * (tree[0].lo + tree[0].hi), 0.5f * (tree[0].hi - tree[0].lo), "    ");
         body_ << "        int g;\n        float b_left, b_right; /* the guess */\n";
         guess(tree, 0, "        ");
@@ -292,6 +299,7 @@ private:
         const ObjectTreeNode& n = tree[size_t(k)];
         if (n.object >= 0) {
             const std::optional<ShapeAnalysis>& own = own_test_[n.object];
+            if (!guessed_) return object(n.object, own ? &*own : nullptr, indent);
             body_ << indent << "if (g != " << n.object << ") {\n";
             object(n.object, own ? &*own : nullptr, indent + "    ");
             body_ << indent << "}\n";
@@ -318,6 +326,7 @@ private:
     std::ostringstream body_;
     std::map<int, std::optional<ShapeAnalysis>> own_test_;
     int box_tests_ = 0;
+    bool guessed_ = false;
 };
 
 std::string list_names(const std::vector<std::string>& names) {
