@@ -234,8 +234,7 @@ public:
         }
         std::vector<ObjectTreeNode> tree = build_object_tree(boxes);
         for (const ObjectBox& box : boxes) own_test_[box.object] = box.own_test ? analyses[size_t(box.object)] : std::optional<ShapeAnalysis>();
-        if (tree.size() == 1) object(tree[0].object, own_test_[tree[0].object] ? &*own_test_[tree[0].object] : nullptr, "    ");
-        else if (!tree.empty()) traversal(tree);
+        if (!tree.empty()) traversal(tree);
     }
 
     // A surface at distance `expression`, index `index`.
