@@ -27,5 +27,7 @@ void register_bench_objects(CLI::App& bench);
 void register_bench_compare(CLI::App& bench);
 // `bench vectorization`, likewise
 void register_bench_vectorization(CLI::App& bench);
+// `bench breakdown`, likewise
+void register_bench_breakdown(CLI::App& bench);
 
 }  // namespace lab::cli

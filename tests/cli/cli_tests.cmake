@@ -253,6 +253,10 @@ cli_bad_input(NAME preview.no_device ABSENT ${PNG} STATUS 1 EXPECT "${E}no OpenC
               ARGS ${PREVIEW} --device no-such-device)
 cli_bad_input(NAME bench_preview.bad_seconds EXPECT "${E}--seconds: must be more than 0 and at most 3600$"
               ARGS bench preview --seconds 0)
+cli_bad_input(NAME bench_breakdown.bad_local_size EXPECT "${E}--local-sizes: each size must be in \\[1, 4096\\]$"
+              ARGS bench breakdown --local-sizes 0)
+cli_bad_input(NAME bench_breakdown.bad_repeats EXPECT "${E}--repeats: must be in \\[1, 100\\]$"
+              ARGS bench breakdown --repeats 0)
 
 # --- render: bad input ------------------------------------------------------------------------
 set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
