@@ -242,6 +242,7 @@ void register_bench(CLI::App& app) {
     register_bench_objects(*bench);
     register_bench_compare(*bench);
     register_bench_vectorization(*bench);
+    register_bench_breakdown(*bench);
 }
 
 }  // namespace lab::cli

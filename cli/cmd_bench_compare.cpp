@@ -18,6 +18,7 @@
 #include "common/input_error.hpp"
 #include "film/image_metadata.hpp"
 #include "film/image_output.hpp"
+#include "scene/load_scene.hpp"
 
 namespace lab::cli {
 namespace {
@@ -26,7 +27,8 @@ namespace fs = std::filesystem;
 
 struct BenchCompareCommand {
     std::string other;
-    std::vector<std::string> scenes{"scenes/shader_ball.json", "scenes/cornell_box.json", "scenes/repetition.json", "scenes/primitives.json"};
+    std::vector<std::string> scenes{"scenes/shader_ball.json", "tools/bench_scenes/sphere.json", "scenes/cornell_box.json",
+                                    "scenes/repetition.json", "scenes/primitives.json"};
     std::string size = "128x128";
     double seconds = 3.0;
     int repeats = 3;
@@ -64,6 +66,10 @@ int metadata_int(const film::ImageMetadata& m, const std::string& key, const std
 // paths/s of one `render --time` of `exe`, from its EXR's metadata.
 double render_paths_per_second(const std::string& exe, const BenchCompareCommand& c, const std::string& scene, const fs::path& out) {
     std::vector<std::string> argv = {exe, "render", scene, "--size", c.size, "--time", std::to_string(c.seconds), "--quiet", "-o", out.string()};
+    // lit like the other benches: a scene with no light of its own under envmaps/courtyard.exr
+    scene::Scene loaded = scene::load_scene(scene);
+    if (!loaded.environment && loaded.emitters.empty() && loaded.point_lights.empty())
+        argv.insert(argv.end(), {"--env", "envmaps/courtyard.exr"});
     argv.insert(argv.end(), c.extra.begin(), c.extra.end());
     fs::remove(out);
     int status = run_quietly(argv);

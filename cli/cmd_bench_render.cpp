@@ -1,7 +1,7 @@
 // dtoadq bench render: the render core's figures per bundled scene. Paths/s and rays/s of the path
 // tracer on the OpenCL device and of the same integrator built as C++ on the host's threads, as a
-// ratio; and on the scenes where the choice matters (the Cornell box, Veach's MIS scene) the
-// equal-time error of next-event estimation with MIS against BSDF sampling alone (what the
+// ratio, with march steps per ray and distance evaluations per step (render/march_work.hpp); and
+// on the scenes where the choice matters (the Cornell box, Veach's MIS scene) the equal-time error of next-event estimation with MIS against BSDF sampling alone (what the
 // preview did before the render core) and light sampling alone, against a long reference. Then,
 // on the scenes of --integrators (the Cornell box, the caustic), the equal-time error of bdpt and lt
 // against pt over the same path space (pt's max depth = bdpt's max vertices - 2), against a long pt
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/bench_convergence.hpp"
+#include "render/march_work.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -88,12 +89,13 @@ void run_bench_render(const BenchRenderCommand& c) {
     std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());
 
     std::printf("(a scene with no light of its own is lit by envmaps/courtyard.exr)\n");
-    std::printf("%-28s %12s %12s %10s %14s %12s %12s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "host paths/s", "device/host",
-                "bdpt paths/s", "lt paths/s");
+    std::printf("%-28s %12s %12s %10s %10s %10s %14s %12s %12s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "steps/ray", "evals/step",
+                "host paths/s", "device/host", "bdpt paths/s", "lt paths/s");
     for (const std::string& file : c.scenes) {
         RenderJob job = scene_job(c.job, file);
         std::unique_ptr<render::Renderer> device = on_device(job.input);
         render::RenderStatistics d = measure(*device, c.throughput_seconds);
+        render::MarchWork work = render::count_march_work(runtime, job.input, 1);
         render::HostRenderer host(job.input);
         render::RenderStatistics h = measure(host, c.throughput_seconds);
         double bidirectional[2];
@@ -103,8 +105,9 @@ void run_bench_render(const BenchRenderCommand& c) {
             std::unique_ptr<render::Renderer> r = on_device(input);
             bidirectional[integrator == render::Integrator::lt] = measure(*r, c.throughput_seconds).paths_per_second();
         }
-        std::printf("%-28s %12.3g %12.3g %10.2f %14.3g %11.2fx %12.3g %12.3g\n", fs::path(file).filename().string().c_str(),
-                    d.paths_per_second(), d.rays_per_second(), double(d.rays) / double(d.paths), h.paths_per_second(),
+        std::printf("%-28s %12.3g %12.3g %10.2f %10.1f %10.2f %14.3g %11.2fx %12.3g %12.3g\n", fs::path(file).filename().string().c_str(),
+                    d.paths_per_second(), d.rays_per_second(), double(d.rays) / double(d.paths), work.steps_per_ray,
+                    work.evaluations_per_step, h.paths_per_second(),
                     d.paths_per_second() / h.paths_per_second(), bidirectional[0], bidirectional[1]);
         std::fflush(stdout);
     }

@@ -16,6 +16,7 @@ void register_preview(CLI::App& app);
 void register_render(CLI::App& app);
 void register_merge(CLI::App& app);
 void register_view(CLI::App& app);
+void register_fit(CLI::App& app);
 // `bench preview`, registered under the bench group by register_bench
 void register_bench_preview(CLI::App& bench);
 // `bench render`, likewise
@@ -26,5 +27,7 @@ void register_bench_objects(CLI::App& bench);
 void register_bench_compare(CLI::App& bench);
 // `bench vectorization`, likewise
 void register_bench_vectorization(CLI::App& bench);
+// `bench breakdown`, likewise
+void register_bench_breakdown(CLI::App& bench);
 
 }  // namespace lab::cli

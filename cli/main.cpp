@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     lab::cli::register_render(app);
     lab::cli::register_merge(app);
     lab::cli::register_view(app);
+    lab::cli::register_fit(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {

@@ -29,8 +29,15 @@ SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
 
 SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings s, PathCounters* counters) {
     MarchResult r = march(origin, direction, 0.0f, s);
+#ifdef SCENE_COUNT_EVALUATIONS
+    /* a measurement build (`dtoadq bench breakdown`): the counters hold march steps and distance
+     * evaluations instead; the paths are the same as the default build's */
+    counters->rays += (uint)r.steps;
+    counters->lost_rays += r.evaluations;
+#else
     counters->rays += 1u;
     if (r.status == MARCH_OUT_OF_STEPS) counters->lost_rays += 1u;
+#endif
     return r;
 }
 

@@ -20,6 +20,7 @@
 #include "kernels/path.h"
 #include "kernels/render_scene.h"
 #include "kernels/rng.h"
+#include "kernels/bench_standins.h" /* nothing unless a BENCH_STANDIN_* measurement build */
 
 /* The MIS weight of light `index` reached by a ray sampled from the BSDF at `from` with solid-angle
  * density `bsdf_pdf`: 1 after a delta event (no light sample could have made it) or with BSDF

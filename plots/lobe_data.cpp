@@ -93,14 +93,22 @@ LobeData compute_lobe(const brdf::Preset& preset, float theta_in_deg, float phi_
         data.grid.resize(size_t(data.theta_count) * size_t(data.phi_count));
     }
 
-    const int plane_half = steps_in_90(resolution.plane_step_deg);
-    const int extent = data.transmits ? 2 * plane_half : plane_half;
+    data.plane = plane_slice([&m](brdf::float3 in, brdf::float3 out) { return brdf::bsdf_eval(&m, in, out); }, theta_in_deg,
+                             phi_in_deg, resolution.plane_step_deg, data.transmits);
+    return data;
+}
+
+std::vector<PlaneSample> plane_slice(const BsdfFunction& f, float theta_in_deg, float phi_in_deg, float step_deg, bool below) {
+    const brdf::float3 wi = direction_from_degrees(theta_in_deg, phi_in_deg);
+    const int plane_half = steps_in_90(step_deg);
+    const int extent = below ? 2 * plane_half : plane_half;
+    std::vector<PlaneSample> plane;
     for (int k = -extent; k <= extent; ++k) {
         float angle = float(k) * 90.0f / float(plane_half);
         brdf::float3 wo = plane_direction(angle, phi_in_deg);
-        data.plane.push_back({angle, luminance(brdf::bsdf_eval(&m, wi, wo)) * std::fabs(wo.z)});
+        plane.push_back({angle, luminance(f(wi, wo)) * std::fabs(wo.z)});
     }
-    return data;
+    return plane;
 }
 
 }  // namespace lab::plots

@@ -4,6 +4,7 @@
 // conditioning argument; values are f(wi, wo) and pdf(wi, wo) as functions of wo.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,12 @@ struct LobeResolution {
 
 // True when step_deg splits [0, 90] into whole steps, as a grid step must.
 bool is_lobe_grid_step(float step_deg);
+
+// The slice through the plane of incidence of any BSDF f(wi, wo) (a material's, or a measured
+// table's): luminance of f |cos theta_o| every step_deg (which must divide 90), over the upper half
+// (+-90) or, with below, the whole circle (+-180).
+using BsdfFunction = std::function<brdf::float3(brdf::float3 wi, brdf::float3 wo)>;
+std::vector<PlaneSample> plane_slice(const BsdfFunction& f, float theta_in_deg, float phi_in_deg, float step_deg, bool below);
 
 LobeData compute_lobe(const brdf::Preset& preset, float theta_in_deg, float phi_in_deg, const LobeResolution& resolution);
 

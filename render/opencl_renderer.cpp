@@ -45,7 +45,8 @@ void OpenClRenderer::build_kernel() {
     opencl::check_cl(clGetKernelWorkGroupInfo(kernel.get(), runtime_.device().device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max),
                                               &kernel_max, nullptr),
                      "clGetKernelWorkGroupInfo");
-    local_size_ = 64;
+    // 64 work-items unless set (`dtoadq bench breakdown` compares sizes), at most the kernel's maximum
+    local_size_ = s.local_size > 0 ? size_t(s.local_size) : 64;
     while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     program_.emplace(std::move(program));
     kernel_ = std::move(kernel);

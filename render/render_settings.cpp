@@ -60,6 +60,8 @@ void check_render_settings(const RenderSettings& settings) {
         throw InputError("--max-depth", "", "must be in [0, 1024], got " + std::to_string(settings.max_depth));
     if (settings.max_vertices < 2 || settings.max_vertices > 16)
         throw InputError("--max-vertices", "", "must be in [2, 16], got " + std::to_string(settings.max_vertices));
+    if (settings.local_size < 0 || settings.local_size > 4096)
+        throw InputError("local size", "", "must be in [0, 4096], got " + std::to_string(settings.local_size));
     if (settings.max_steps < 1 || settings.max_steps > 1 << 20)
         throw InputError("--max-steps", "", "must be in [1, 1048576], got " + std::to_string(settings.max_steps));
     if (!(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f))

@@ -54,6 +54,7 @@ struct RenderSettings {
     bool show_background = true;   // false: escaping camera rays see black (lighting unchanged)
     bool object_bounds = true;     // box tests skip far objects (scene::CompileOptions; the field is unchanged)
     uint64_t seed = 0;
+    int local_size = 0;               // OpenCL work-group size; 0: the renderer's default (64, or the kernel's maximum)
     std::string extra_build_options;  // appended to the OpenCL build options (e.g. a -D forcing a cold build)
 };
 

@@ -25,7 +25,16 @@ typedef struct MarchResult {
     float t;     /* hit: the distance along the ray; otherwise where the march stopped */
     int status;  /* MARCH_HIT, MARCH_MISS or MARCH_OUT_OF_STEPS */
     int steps;   /* distance evaluations made */
+#ifdef SCENE_COUNT_EVALUATIONS
+    uint evaluations; /* a measurement build: the objects' distance functions evaluated (scene/compile.cpp) */
+#endif
 } MarchResult;
+
+#ifdef SCENE_COUNT_EVALUATIONS
+#define MARCH_SCENE_DISTANCE(p, result) scene_distance_counted(p, &(result).evaluations)
+#else
+#define MARCH_SCENE_DISTANCE(p, result) scene_distance(p)
+#endif
 
 /* Defaults for scenes of a few units to a few tens of units across:
  *  - epsilon_relative 1e-4: the hit threshold grows with t like a pixel's footprint (1e-4 rad is
@@ -69,6 +78,9 @@ SS_FN MarchResult march(float3 origin, float3 direction, float t_start, MarchSet
     result.t = t_start;
     result.status = MARCH_OUT_OF_STEPS;
     result.steps = 0;
+#ifdef SCENE_COUNT_EVALUATIONS
+    result.evaluations = 0u;
+#endif
     if (t_start > s.max_distance) {
         result.status = MARCH_MISS;
         return result;
@@ -81,7 +93,7 @@ SS_FN MarchResult march(float3 origin, float3 direction, float t_start, MarchSet
     float r_prev = 0.0f;
     float step = 0.0f;
     for (int i = 0; i < s.max_steps; ++i) {
-        float d = scene_distance(origin + direction * t) * inv_lipschitz;
+        float d = MARCH_SCENE_DISTANCE(origin + direction * t, result) * inv_lipschitz;
         result.steps = i + 1;
         if (i == 0) side = d < 0.0f ? -1.0f : 1.0f;
         float r = side * d; /* > 0 on the starting side */

@@ -105,7 +105,7 @@ TEST_CASE("half/difference angles invert, and bin centres follow MERL's sqrt spa
 TEST_CASE("a tabulated lab material survives writing and reading, and the lookup is exact at bin centres", "[merl]") {
     const Material m = load_preset("presets/glossy_plastic.json").material;
     const brdf::MeasuredTable t = brdf::tabulate_merl(
-        [&](float3 wo, float3 wi) { return bsdf_eval(&m, wo, wi) / wi.z; }, "glossy_plastic");
+        [&](float3 wo, float3 wi) { return bsdf_eval(&m, wo, wi); }, "glossy_plastic");
     const std::string path = temp_path("roundtrip.binary");
     brdf::write_merl_file(path, t);
     const brdf::MeasuredTable back = brdf::read_merl_file(path);
@@ -134,7 +134,7 @@ TEST_CASE("a tabulated lab material survives writing and reading, and the lookup
 TEST_CASE("the measured lookup is reciprocal, never negative, and continuous across the phi_d seam", "[merl]") {
     const Material m = load_preset("presets/rubber.json").material;
     const brdf::MeasuredTable t = brdf::tabulate_merl(
-        [&](float3 wo, float3 wi) { return bsdf_eval(&m, wo, wi) / wi.z; }, "rubber");
+        [&](float3 wo, float3 wi) { return bsdf_eval(&m, wo, wi); }, "rubber");
     std::mt19937 rng(11);
     for (int i = 0; i < 5000; ++i) {
         const float3 wo = random_direction_above(rng), wi = random_direction_above(rng);
@@ -172,13 +172,36 @@ TEST_CASE("bad MERL files give one line naming the file and what is wrong", "[me
     write_raw(path, 90, 90, 180, full, std::nan(""), MERL_ENTRY_COUNT + 181);
     CHECK_THAT(read_error(path), Catch::Contains("green entry 181 (theta_h bin 0, theta_d bin 1, phi_d bin 1): not a finite number"));
 
-    write_raw(path, 90, 90, 180, full, -1.0, 5);
-    CHECK_THAT(read_error(path), Catch::Contains("red entry 5 (theta_h bin 0, theta_d bin 0, phi_d bin 5): negative"));
+    write_raw(path, 90, 90, 180, full, -1.0, 5);  // negative in red only: not MERL's unmeasured marker
+    CHECK_THAT(read_error(path), Catch::Contains("red entry 5 (theta_h bin 0, theta_d bin 0, phi_d bin 5): negative (-1.000000) while other channels are measured"));
 
     write_raw(path, 90, 90, 180, full, 0.0, std::size_t(-1), 8);
     CHECK_THAT(read_error(path), Catch::Contains("8 bytes after the last entry"));
 
     std::ofstream(path, std::ios::binary | std::ios::trunc) << "MERL";
     CHECK_THAT(read_error(path), Catch::Contains("dimensions: truncated"));
+    fs::remove(path);
+}
+
+TEST_CASE("entries MERL marks unmeasured (-1 in every channel) are masked and filled from smaller theta_d", "[merl]") {
+    const Material m = load_preset("presets/rubber.json").material;
+    MeasuredTable t = tabulate_merl([&](float3 wo, float3 wi) { return bsdf_eval(&m, wo, wi); }, "rubber");
+    const int hole = merl_entry_index(10, 70, 33), below = merl_entry_index(10, 69, 33);
+    const int column_start = merl_entry_index(20, 0, 3);  // a hole with nothing below: filled from above
+    t.unmeasured.assign(MERL_ENTRY_COUNT, false);
+    t.unmeasured[std::size_t(hole)] = t.unmeasured[std::size_t(column_start)] = true;
+    const std::string path = temp_path("holes.binary");
+    write_merl_file(path, t);  // writes -1 in all three channels there
+    const MeasuredTable back = read_merl_file(path);
+    REQUIRE(back.unmeasured.size() == std::size_t(MERL_ENTRY_COUNT));
+    int holes = 0;
+    for (bool u : back.unmeasured) holes += u;
+    CHECK(holes == 2);
+    CHECK(is_unmeasured(back, hole));
+    CHECK(!is_unmeasured(back, below));
+    for (int c = 0; c < 3; ++c) {
+        CHECK(back.rgb[std::size_t(3) * hole + c] == back.rgb[std::size_t(3) * below + c]);
+        CHECK(back.rgb[std::size_t(3) * column_start + c] == back.rgb[std::size_t(3) * merl_entry_index(20, 1, 3) + c]);
+    }
     fs::remove(path);
 }

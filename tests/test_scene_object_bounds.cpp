@@ -96,7 +96,8 @@ TEST_CASE("Object bounds: the tree holds every bounded object once, each inside 
 
 TEST_CASE("Object bounds: renders with and without the box tests are the same bits", "[scene][object-bounds][opencl]") {
     lab::opencl::Runtime runtime("");
-    for (const char* file : {"scenes/primitives.json", "scenes/shader_ball.json", "scenes/metaballs.json", "scenes/cornell_box.json"}) {
+    for (const char* file : {"scenes/primitives.json", "scenes/shader_ball.json", "scenes/metaballs.json", "scenes/cornell_box.json",
+                             "tests/scene_data/object_grid.json"}) {
         lab::film::ImageRgb images[2];
         for (int bounds = 0; bounds < 2; ++bounds) {
             lab::render::RenderInput input;

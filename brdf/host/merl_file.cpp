@@ -24,6 +24,24 @@ std::string entry_name(int channel, int e) {
     return s.str();
 }
 
+// The fill of read_merl_file's comment: per (theta_h, phi_d) column, holes take the nearest measured
+// entry below them in theta_d, or above when there is none below.
+void fill_unmeasured(MeasuredTable& t) {
+    if (t.unmeasured.empty()) return;
+    for (int ih = 0; ih < MERL_THETA_H_BINS; ++ih)
+        for (int ip = 0; ip < MERL_PHI_D_BINS; ++ip)
+            for (int id = 0; id < MERL_THETA_D_BINS; ++id) {
+                const int e = merl_entry_index(ih, id, ip);
+                if (!t.unmeasured[std::size_t(e)]) continue;
+                int from = -1;
+                for (int k = id - 1; k >= 0 && from < 0; --k)
+                    if (!t.unmeasured[std::size_t(merl_entry_index(ih, k, ip))]) from = merl_entry_index(ih, k, ip);
+                for (int k = id + 1; k < MERL_THETA_D_BINS && from < 0; ++k)
+                    if (!t.unmeasured[std::size_t(merl_entry_index(ih, k, ip))]) from = merl_entry_index(ih, k, ip);
+                for (int c = 0; c < 3; ++c) t.rgb[std::size_t(3) * e + c] = from < 0 ? 0.0f : t.rgb[std::size_t(3) * from + c];
+            }
+}
+
 }  // namespace
 
 MeasuredTable read_merl_file(const std::string& path) {
@@ -55,17 +73,30 @@ MeasuredTable read_merl_file(const std::string& path) {
     MeasuredTable table;
     table.source = path;
     table.rgb.resize(std::size_t(3) * MERL_ENTRY_COUNT);
-    std::vector<double> block(MERL_ENTRY_COUNT);
-    for (int c = 0; c < 3; ++c) {
-        in.read(reinterpret_cast<char*>(block.data()), std::streamsize(block.size() * sizeof(double)));
-        if (!in) throw lab::InputError(path, "data", "read failed in the " + std::string(kChannelName[c]) + " block");
-        for (int e = 0; e < MERL_ENTRY_COUNT; ++e) {
-            const double v = block[e] * kMerlScale[c];
+    std::vector<double> file(std::size_t(3) * MERL_ENTRY_COUNT);  // channel blocks, file units
+    in.read(reinterpret_cast<char*>(file.data()), std::streamsize(file.size() * sizeof(double)));
+    if (!in) throw lab::InputError(path, "data", "read failed");
+    for (int e = 0; e < MERL_ENTRY_COUNT; ++e) {
+        int negative = 0;
+        for (int c = 0; c < 3; ++c) {
+            const double v = file[std::size_t(c) * MERL_ENTRY_COUNT + e];
             if (!std::isfinite(v)) throw lab::InputError(path, entry_name(c, e), "not a finite number");
-            if (v < 0.0) throw lab::InputError(path, entry_name(c, e), "negative (" + std::to_string(block[e]) + ")");
-            table.rgb[std::size_t(3) * e + c] = float(v);
+            negative += v < 0.0;
+        }
+        if (negative == 3) {
+            if (table.unmeasured.empty()) table.unmeasured.assign(MERL_ENTRY_COUNT, false);
+            table.unmeasured[std::size_t(e)] = true;
+            continue;
+        }
+        for (int c = 0; c < 3; ++c) {
+            const double v = file[std::size_t(c) * MERL_ENTRY_COUNT + e];
+            if (v < 0.0)
+                throw lab::InputError(path, entry_name(c, e),
+                                      "negative (" + std::to_string(v) + ") while other channels are measured");
+            table.rgb[std::size_t(3) * e + c] = float(v * kMerlScale[c]);
         }
     }
+    fill_unmeasured(table);
     return table;
 }
 
@@ -80,7 +111,8 @@ void write_merl_file(const std::string& path, const MeasuredTable& table) {
         out.write(reinterpret_cast<const char*>(dims), sizeof dims);
         std::vector<double> block(MERL_ENTRY_COUNT);
         for (int c = 0; c < 3; ++c) {
-            for (int e = 0; e < MERL_ENTRY_COUNT; ++e) block[e] = double(table.rgb[std::size_t(3) * e + c]) / kMerlScale[c];
+            for (int e = 0; e < MERL_ENTRY_COUNT; ++e)
+                block[e] = is_unmeasured(table, e) ? -1.0 : double(table.rgb[std::size_t(3) * e + c]) / kMerlScale[c];
             out.write(reinterpret_cast<const char*>(block.data()), std::streamsize(block.size() * sizeof(double)));
         }
         if (!out.flush()) throw lab::InputError(path, "", "write failed");

@@ -67,7 +67,7 @@ cli_bad_input(NAME lobe.measured_missing ABSENT ${PNG}
               EXPECT "${E}${D}/measured_missing\\.json: measured: MERL file \"absent\\.binary\" not found \\(looked for ${D}/absent\\.binary\\)$"
               ARGS ${LOBE} ${D}/measured_missing.json)
 cli_bad_input(NAME lobe.measured_truncated ABSENT ${PNG}
-              EXPECT "${E}${D}/measured_truncated\\.json: measured: ${D}/truncated\\.binary: data: truncated: 12 bytes, expected 34992012$"
+              EXPECT "${E}${D}/measured_truncated\\.json: measured: ${D}/header_only\\.binary: data: truncated: 12 bytes, expected 34992012$"
               ARGS ${LOBE} ${D}/measured_truncated.json)
 # the second of several materials is the bad one
 cli_bad_input(NAME lobe.second_material_bad ABSENT ${PNG} EXPECT "${E}${D}/unknown_key\\.json: roughnes: unknown key$"
@@ -260,6 +260,10 @@ cli_bad_input(NAME preview.no_device ABSENT ${PNG} STATUS 1 EXPECT "${E}no OpenC
               ARGS ${PREVIEW} --device no-such-device)
 cli_bad_input(NAME bench_preview.bad_seconds EXPECT "${E}--seconds: must be more than 0 and at most 3600$"
               ARGS bench preview --seconds 0)
+cli_bad_input(NAME bench_breakdown.bad_local_size EXPECT "${E}--local-sizes: each size must be in \\[1, 4096\\]$"
+              ARGS bench breakdown --local-sizes 0)
+cli_bad_input(NAME bench_breakdown.bad_repeats EXPECT "${E}--repeats: must be in \\[1, 100\\]$"
+              ARGS bench breakdown --repeats 0)
 
 # --- render: bad input ------------------------------------------------------------------------
 set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
@@ -424,3 +428,16 @@ foreach(view_case accumulate set preset export env)
   # One at a time: xvfb-run -a started twice at once can pick the same display number.
   set_tests_properties(cli.view.${view_case} PROPERTIES LABELS cli TIMEOUT 240 SKIP_RETURN_CODE 77 RESOURCE_LOCK xvfb)
 endforeach()
+
+# --- fit (docs/fitting.md): a bad measured file and bad options, each one line, no preset written --
+set(FIT fit -o ${PNG}.json --quiet --measured)
+cli_bad_input(NAME fit.missing_file ABSENT ${PNG}.json EXPECT "${E}${D}/absent\\.binary: cannot open the measured BRDF file$"
+              ARGS ${FIT} ${D}/absent.binary)
+cli_bad_input(NAME fit.truncated_file ABSENT ${PNG}.json EXPECT "${E}${D}/truncated\\.binary: data: truncated: 44 bytes, expected 34992012$"
+              ARGS ${FIT} ${D}/truncated.binary)
+cli_bad_input(NAME fit.distribution ABSENT ${PNG}.json EXPECT "${E}command line: --distribution: expected ggx or hyper_cauchy, got \"beckmann\"$"
+              ARGS ${FIT} ${D}/truncated.binary --distribution beckmann)
+cli_bad_input(NAME fit.lobes ABSENT ${PNG}.json EXPECT "${E}command line: --lobes: \"transmission\" cannot be fitted"
+              ARGS ${FIT} ${D}/truncated.binary --lobes diffuse,transmission)
+cli_bad_input(NAME fit.stride ABSENT ${PNG}.json EXPECT "${E}command line: --stride: expected THETA_H,THETA_D,PHI_D bin strides, got \"3,3\"$"
+              ARGS ${FIT} ${D}/truncated.binary --stride 3,3)

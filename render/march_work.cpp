@@ -1,0 +1,24 @@
+#include "render/march_work.hpp"
+
+#include "render/opencl_renderer.hpp"
+
+namespace lab::render {
+
+MarchWork count_march_work(const opencl::Runtime& runtime, RenderInput input, int samples) {
+    OpenClRenderer plain(runtime, input);
+    plain.add_samples(samples);
+    RenderStatistics p = plain.statistics();
+    input.settings.extra_build_options += " -DSCENE_COUNT_EVALUATIONS";
+    OpenClRenderer counting(runtime, input);
+    counting.add_samples(samples);
+    RenderStatistics c = counting.statistics();  // rays: march steps; lost rays: evaluations
+    MarchWork w;
+    FilmReadback a = plain.film(), b = counting.film();
+    w.same_film = a.accumulation == b.accumulation && a.splat == b.splat;
+    w.rays_per_path = p.paths ? double(p.rays) / double(p.paths) : 0.0;
+    w.steps_per_ray = p.rays ? double(c.rays) / double(p.rays) : 0.0;
+    w.evaluations_per_step = c.rays ? double(c.lost_rays) / double(c.rays) : 0.0;
+    return w;
+}
+
+}  // namespace lab::render

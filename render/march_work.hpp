@@ -1,0 +1,22 @@
+// What a path costs in march work, from the measurement build of the kernel: rays per path, march
+// steps per ray and distance functions evaluated per step (scene/compile.cpp's
+// SCENE_COUNT_EVALUATIONS). The counting build traces the very paths of the default build, so the
+// three come from two renders of the same samples. Used by `bench render` and `bench breakdown`.
+#pragma once
+
+#include "opencl/runtime.hpp"
+#include "render/renderer.hpp"
+
+namespace lab::render {
+
+struct MarchWork {
+    double rays_per_path = 0.0;
+    double steps_per_ray = 0.0;         // distance-field evaluations of the marches (normals not included)
+    double evaluations_per_step = 0.0;  // objects' and emitters' distance functions per march step
+    bool same_film = false;             // the counting build's film has the default build's bits
+};
+
+// Renders `samples` samples per pixel of `input` twice (default and counting builds).
+MarchWork count_march_work(const opencl::Runtime& runtime, RenderInput input, int samples);
+
+}  // namespace lab::render
