@@ -1,9 +1,11 @@
 #include "brdf/host/measured_registry.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 
 #include "common/input_error.hpp"
@@ -11,9 +13,15 @@
 namespace brdf {
 namespace {
 
+// Registration copies the array and publishes the copy; earlier arrays stay alive (retired), so a
+// thread evaluating through a pointer it read before a registration never reads freed memory. A few
+// tables per process make the copies cheap next to reading a file.
+using Array = std::shared_ptr<const std::vector<float>>;
 struct Registry {
-    std::mutex mutex;
-    std::vector<float> data;
+    std::mutex mutex;  // serialises registrations
+    Array current = std::make_shared<const std::vector<float>>();
+    std::vector<Array> retired;
+    std::atomic<const float*> data{nullptr};  // current->data(), read on every host evaluation
     std::map<std::string, int> offsets;  // by file (canonical path) or table source
 };
 
@@ -45,10 +53,15 @@ int register_block(const std::string& key, const std::function<std::vector<float
     std::lock_guard<std::mutex> lock(r.mutex);
     auto it = r.offsets.find(key);
     if (it != r.offsets.end()) return it->second;
-    if (r.data.size() + block.size() > size_t(0x7fffffff))
+    const Array old = std::atomic_load(&r.current);
+    if (old->size() + block.size() > size_t(0x7fffffff))
         throw lab::InputError(key, "", "too many measured tables for one process (2^31 floats)");
-    int offset = int(r.data.size());
-    r.data.insert(r.data.end(), block.begin(), block.end());
+    int offset = int(old->size());
+    auto grown = std::make_shared<std::vector<float>>(*old);
+    grown->insert(grown->end(), block.begin(), block.end());
+    r.retired.push_back(old);
+    r.data.store(grown->data(), std::memory_order_release);
+    std::atomic_store(&r.current, Array(std::move(grown)));
     r.offsets[key] = offset;
     return offset;
 }
@@ -62,9 +75,9 @@ std::vector<float> block_of(const MeasuredTable& table) {
 
 }  // namespace
 
-const float* measured_tables() { return registry().data.data(); }
+const float* measured_tables() { return registry().data.load(std::memory_order_acquire); }
 
-const std::vector<float>& measured_table_data() { return registry().data; }
+const std::vector<float>& measured_table_data() { return *std::atomic_load(&registry().current); }
 
 void append_measured_sampler(std::vector<float>* block) {
     const float* table = block->data();

@@ -3,8 +3,10 @@
 // means the same on the host and in a kernel's buffer (the renderers upload this array as it is).
 // A file is read and its sampler built once, however many presets name it.
 //
-// Registration appends and may move the array: register every table (load the presets) before
-// evaluating from other threads. Each block costs MEASURED_BLOCK_FLOATS floats (about 18 MB).
+// Registration publishes a grown copy of the array and keeps the earlier ones alive, so presets may
+// be loaded (the viewer) while other threads evaluate: a pointer read before stays valid, and an
+// offset handed out stays the same. Each block costs MEASURED_BLOCK_FLOATS floats (about 18 MB);
+// the retired copies cost as much again per registration, for the few tables a session loads.
 #pragma once
 
 #include <string>
@@ -19,7 +21,8 @@ int register_measured_file(const std::string& path);
 // The same for a table in memory; `table.source` names it and is the key that shares it.
 int register_measured_table(const MeasuredTable& table);
 
-// The whole array: bsdf_eval's tables on the host, and what a kernel's buffer argument receives.
+// The whole array as of now: bsdf_eval's tables on the host, and what a kernel's buffer argument
+// receives. The reference stays valid for the life of the process.
 const std::vector<float>& measured_table_data();
 
 // The sampler of one table, appended to `block` after the table (brdf/measured.h's layout): per bin of
