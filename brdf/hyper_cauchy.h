@@ -52,15 +52,9 @@ SS_FN float hyper_cauchy_slope_cdf(float x, float g, float log_norm) {
  *   A(x) = mu CDF(x) + C (2 + x^2)^(3/2 - g) / (2g - 3)     (int t P2(t) dt = -C (2+t^2)^(3/2-g) / (2g-3)).
  * Given x, the slope y has density P22(x, y) / P2(x), proportional to (2 + x^2 + y^2)^(-g): a Student-t
  * with nu = 2g - 1, y = sqrt((2 + x^2) / nu) t. Neither CDF has a closed-form inverse; both are inverted
- * by Newton's method on their densities, safeguarded by bisection on a bracket, to the precision the
- * CDFs are evaluated to, so the normals follow D_wo and the pdf is its closed form. */
+ * by Newton's method on their densities, safeguarded by bisection on a bracket, to float precision,
+ * so the normals follow D_wo and the pdf is its closed form. */
 #define HYPER_CAUCHY_INVERSION_STEPS 40
-/* An inversion stops when its Newton step, or its bracket, is below this (relative to max(1, |v|)).
- * The CDFs themselves are only good to a few 1e-6 in log near the median (the incomplete beta's
- * fraction stops at 3e-7, then 1 - I cancels), so smaller steps chase noise: with 1e-7 a quarter of
- * the inversions at shape 1.6 ran all 40 steps. 1e-6 in v moves a slope by 1e-6 relative, far below
- * what the pdf's float evaluation resolves. */
-#define HYPER_CAUCHY_INVERSION_TOLERANCE 1e-6f
 
 /* Both inversions run Newton's method on log CDF against v = asinh(x): in the power-law tails of these
  * densities log CDF is nearly linear in v, so a handful of steps reach float precision even for the
@@ -77,9 +71,7 @@ SS_FN float hyper_cauchy_sinh(float v) { float e = exp(v); return 0.5f * (e - 1.
 #define HYPER_CAUCHY_LOWEST_V -40.0f
 
 /* The next iterate: Newton's where it stays inside the bracket, else bisection, or a step twice as far
- * left while the bracket is open. The caller first stops on a step below the tolerance: a converged
- * iterate sits on an end of the bracket (f = 0 moves hi onto it), where Newton's next point is not
- * strictly inside, and bisecting away from it cost up to 30 more steps. */
+ * left while the bracket is open. */
 SS_FN float hyper_cauchy_next_iterate(float newton, float lo, float hi) {
     if (newton > lo && newton < hi) return fmax(newton, HYPER_CAUCHY_LOWEST_V);
     if (lo < -1e30f) return fmax(fmin(2.0f * hi, hi - 1.0f), HYPER_CAUCHY_LOWEST_V);
@@ -108,9 +100,9 @@ SS_FN float hyper_cauchy_sample_visible_slope_x(float mu, float g, float u) {
         if (f < 0.0f) lo = fmax(lo, v);
         else hi = fmin(hi, v);
         float slope = (mu - x) * (2.0f * g - 3.0f) * power / mass * sqrt(1.0f + x * x);
-        float step = f / slope, tolerance = HYPER_CAUCHY_INVERSION_TOLERANCE * fmax(1.0f, fabs(v));
-        if (fabs(step) <= tolerance || hi - lo <= tolerance) return hyper_cauchy_sinh(v - step);
-        v = hyper_cauchy_next_iterate(v - step, lo, hi);
+        float v_next = hyper_cauchy_next_iterate(v - f / slope, lo, hi);
+        if (fabs(v_next - v) <= 1e-7f * fmax(1.0f, fabs(v))) return hyper_cauchy_sinh(v_next);
+        v = v_next;
     }
     return hyper_cauchy_sinh(v);
 }
@@ -121,22 +113,20 @@ SS_FN float hyper_cauchy_sample_student_t(float nu, float u) {
     float log_norm = incomplete_beta_log_norm(0.5f * nu, 0.5f);
     float k = exp(lgamma(0.5f * (nu + 1.0f)) - lgamma(0.5f * nu)) / sqrt(nu * SS_PI);
     float log_target = log(fmin(u, 1.0f - u));
-    /* start where the density's peak K would put the quantile, (u - 1/2) / K: the root lies at or
-     * beyond it, and from there Newton needs about one step fewer than from a fixed start */
-    float lo = -INFINITY, hi = 0.0f, v = -hyper_cauchy_asinh((0.5f - fmin(u, 1.0f - u)) / k);
-    for (int i = 0; i < HYPER_CAUCHY_INVERSION_STEPS; ++i) {
+    float lo = -INFINITY, hi = 0.0f, v = -1.0f;
+    for (int step = 0; step < HYPER_CAUCHY_INVERSION_STEPS; ++step) {
         float t = hyper_cauchy_sinh(v);
         float cdf = 0.5f * incomplete_beta_normed(0.5f * nu, 0.5f, nu / (nu + t * t), log_norm);
         float f = log(cdf) - log_target;
         if (f < 0.0f) lo = fmax(lo, v);
         else hi = fmin(hi, v);
         float slope = k * pow(1.0f + t * t / nu, -0.5f * (nu + 1.0f)) / cdf * sqrt(1.0f + t * t);
-        float step = f / slope, tolerance = HYPER_CAUCHY_INVERSION_TOLERANCE * fmax(1.0f, fabs(v));
-        if (fabs(step) <= tolerance || hi - lo <= tolerance) {
-            v -= step;
+        float v_next = hyper_cauchy_next_iterate(v - f / slope, lo, hi);
+        if (fabs(v_next - v) <= 1e-7f * fmax(1.0f, fabs(v))) {
+            v = v_next;
             break;
         }
-        v = hyper_cauchy_next_iterate(v - step, lo, hi);
+        v = v_next;
     }
     float t = hyper_cauchy_sinh(v);
     return u < 0.5f ? t : -t;
