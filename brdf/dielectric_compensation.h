@@ -35,8 +35,9 @@ SS_FN float dielectric_energy_albedo(int side, float r, float eta, float mu) {
     float z = energy_grid_mu_coordinate_of(mu, DIELECTRIC_GRID_MU);
     float e[2];
     for (int dk = 0; dk < 2; ++dk) {
-        CONSTANT_MEM const float* slice = energy_dielectric_albedo + ((side * DIELECTRIC_GRID_IOR + k + dk) * DIELECTRIC_GRID_ROUGHNESS + i) * DIELECTRIC_GRID_MU;
-        e[dk] = mix(energy_grid_lerp(slice, DIELECTRIC_GRID_MU, z), energy_grid_lerp(slice + DIELECTRIC_GRID_MU, DIELECTRIC_GRID_MU, z), y - (float)i);
+        CONSTANT_MEM const ushort* slice = energy_dielectric_albedo + ((side * DIELECTRIC_GRID_IOR + k + dk) * DIELECTRIC_GRID_ROUGHNESS + i) * DIELECTRIC_GRID_MU;
+        e[dk] = mix(energy_grid_lerp_albedo(slice, DIELECTRIC_GRID_MU, z), energy_grid_lerp_albedo(slice + DIELECTRIC_GRID_MU, DIELECTRIC_GRID_MU, z),
+                    y - (float)i);
     }
     return mix(e[0], e[1], x - (float)k);
 }

@@ -30,12 +30,12 @@ typedef struct MicrofacetEnergy {
 SS_FN float energy_roughness(Microfacet mf) { return sqrt(sqrt(mf.ax * mf.ay)); }
 
 /* E(mu) of a (roughness, mu) table of ENERGY_GRID_ROUGHNESS rows, interpolated in both. */
-SS_FN float energy_table_albedo(CONSTANT_MEM const float* table, float r, float mu) {
+SS_FN float energy_table_albedo(CONSTANT_MEM const ushort* table, float r, float mu) {
     float x = energy_grid_roughness_coordinate(r);
     int i = min((int)x, ENERGY_GRID_ROUGHNESS - 2);
     float m = energy_grid_mu_coordinate(mu);
-    float lo = energy_grid_lerp(table + i * ENERGY_GRID_MU, ENERGY_GRID_MU, m);
-    float hi = energy_grid_lerp(table + (i + 1) * ENERGY_GRID_MU, ENERGY_GRID_MU, m);
+    float lo = energy_grid_lerp_albedo(table + i * ENERGY_GRID_MU, ENERGY_GRID_MU, m);
+    float hi = energy_grid_lerp_albedo(table + (i + 1) * ENERGY_GRID_MU, ENERGY_GRID_MU, m);
     return mix(lo, hi, x - (float)i);
 }
 
@@ -53,7 +53,7 @@ SS_FN float microfacet_energy_albedo(Microfacet mf, float mu) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) {
         float t;
-        CONSTANT_MEM const float* slice = energy_hyper_cauchy_albedo + energy_shape_slice(mf.shape, &t) * ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU;
+        CONSTANT_MEM const ushort* slice = energy_hyper_cauchy_albedo + energy_shape_slice(mf.shape, &t) * ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU;
         return mix(energy_table_albedo(slice, r, mu), energy_table_albedo(slice + ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU, r, mu), t);
     }
 #endif

@@ -67,4 +67,18 @@ SS_FN float energy_grid_lerp(CONSTANT_MEM const float* row, int n, float x) {
     return mix(row[i], row[i + 1], t);
 }
 
+/* The albedo tables E(mu) are stored in 16 bits, E = q / 65535, q rounded up by the generator
+ * (validation/energy_tables.cpp), so the stored E is never below the estimate and compensation stays
+ * conservative; a step of 1.5e-5 is far below the estimate's own error. Half the size of floats keeps
+ * every table a kernel can hold under the 64 KB of __constant memory OpenCL guarantees (docs/materials.md). */
+#define ENERGY_TABLE_ONE 65535.0f
+SS_FN float energy_grid_albedo_value(CONSTANT_MEM const ushort* table, int index) { return (float)table[index] * (1.0f / ENERGY_TABLE_ONE); }
+
+/* energy_grid_lerp() of a stored albedo row. */
+SS_FN float energy_grid_lerp_albedo(CONSTANT_MEM const ushort* row, int n, float x) {
+    int i = min((int)x, n - 2);
+    float t = x - (float)i;
+    return mix(energy_grid_albedo_value(row, i), energy_grid_albedo_value(row, i + 1), t);
+}
+
 #endif

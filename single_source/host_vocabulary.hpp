@@ -18,6 +18,7 @@ using float2 = glm::vec2;
 using float3 = glm::vec3;
 using float4 = glm::vec4;
 using uint = unsigned int;
+using ushort = unsigned short;
 
 // Float overloads from <cmath>: without these, C's double versions would be picked and the
 // host would compute in a different precision than the OpenCL build.

@@ -128,12 +128,26 @@ std::vector<float> energy_slice(const std::function<double(float roughness, floa
     return out;
 }
 
+unsigned short energy_table_code(float e) {
+    float q = std::ceil(std::fmin(std::fmax(e, 0.0f), 1.0f) * ENERGY_TABLE_ONE);
+    // the kernel decodes q * (1 / 65535) in float: step up where that lands below e
+    while (q < ENERGY_TABLE_ONE && q * (1.0f / ENERGY_TABLE_ONE) < e) q += 1.0f;
+    return static_cast<unsigned short>(q);
+}
+
+float energy_table_round_up(float e) { return float(energy_table_code(e)) * (1.0f / ENERGY_TABLE_ONE); }
+
 namespace {
+
+void round_up(std::vector<float>& values) {
+    for (float& v : values) v = energy_table_round_up(v);
+}
 
 // one table of [roughness][mu] for a distribution and shape, and its averages
 void fill_slice(int distribution, float shape, int strata, int threads, float* albedo, float* average) {
     std::vector<float> slice = energy_slice([&](float r, float mu) { return single_scattering_albedo(distribution, shape, r, mu, strata); },
                                             ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, threads, 0, ENERGY_GRID_ROUGHNESS - 1);
+    round_up(slice);
     std::copy(slice.begin(), slice.end(), albedo);
     for (int i = 0; i < ENERGY_GRID_ROUGHNESS; ++i) average[i] = average_albedo(albedo + i * ENERGY_GRID_MU);
 }
@@ -145,6 +159,20 @@ std::string array_text(const char* name, const char* size, const std::vector<flo
         char number[32];
         std::snprintf(number, sizeof number, "%.7ff", double(values[k]));
         out << (k % size_t(per_line) == 0 ? "    " : " ") << number << (k + 1 < values.size() ? "," : "");
+        if ((k + 1) % size_t(per_line) == 0 || k + 1 == values.size()) out << "\n";
+    }
+    out << "};\n";
+    return out.str();
+}
+
+// an albedo table, already rounded up, as its 16-bit codes
+std::string albedo_array_text(const char* name, const char* size, const std::vector<float>& values) {
+    const int per_line = 12;
+    std::ostringstream out;
+    out << "CONSTANT_MEM const ushort " << name << "[" << size << "] = {\n";
+    for (size_t k = 0; k < values.size(); ++k) {
+        long code = std::lround(double(values[k]) * double(ENERGY_TABLE_ONE));  // values are codes / 65535 already
+        out << (k % size_t(per_line) == 0 ? "    " : " ") << code << (k + 1 < values.size() ? "," : "");
         if ((k + 1) % size_t(per_line) == 0 || k + 1 == values.size()) out << "\n";
     }
     out << "};\n";
@@ -184,6 +212,7 @@ EnergyTables compute_energy_tables(int strata, int threads) {
             std::vector<float> slice = energy_slice([&](float r, float mu) {
                 return dielectric_single_scattering_albedo(side, r, brdf::energy_grid_ior(k), mu, strata * kDielectricStrataFactor);
             }, DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_MU, threads, 0, DIELECTRIC_GRID_ROUGHNESS - 1);
+            round_up(slice);
             std::copy(slice.begin(), slice.end(), t.dielectric_albedo.begin() + ptrdiff_t((side * DIELECTRIC_GRID_IOR + k) * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU));
         }
     for (int r = 0; r < rows; ++r) t.dielectric_average[size_t(r)] = average_albedo(t.dielectric_albedo.data() + size_t(r) * DIELECTRIC_GRID_MU, DIELECTRIC_GRID_MU);
@@ -193,27 +222,27 @@ EnergyTables compute_energy_tables(int strata, int threads) {
 }
 
 std::string ggx_table_header(const EnergyTables& t, int strata) {
-    return header("BRDF_ENERGY_TABLE_GGX_H", "GGX: E(mu) [roughness][mu] and E_avg [roughness].", strata,
-                  array_text("energy_ggx_albedo", "ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU", t.ggx_albedo, 8) + "\n" +
+    return header("BRDF_ENERGY_TABLE_GGX_H", "GGX: E(mu) [roughness][mu] (16-bit, rounded up) and E_avg [roughness].", strata,
+                  albedo_array_text("energy_ggx_albedo", "ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU", t.ggx_albedo) + "\n" +
                       array_text("energy_ggx_average", "ENERGY_GRID_ROUGHNESS", t.ggx_average, 8));
 }
 
 std::string hyper_cauchy_table_header(const EnergyTables& t, int strata) {
-    return header("BRDF_ENERGY_TABLE_HYPER_CAUCHY_H", "Hyper-Cauchy: E(mu) [shape][roughness][mu] and E_avg [shape][roughness].",
+    return header("BRDF_ENERGY_TABLE_HYPER_CAUCHY_H", "Hyper-Cauchy: E(mu) [shape][roughness][mu] (16-bit, rounded up) and E_avg [shape][roughness].",
                   strata,
-                  array_text("energy_hyper_cauchy_albedo", "ENERGY_GRID_SHAPE * ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU",
-                             t.hyper_cauchy_albedo, 8) +
+                  albedo_array_text("energy_hyper_cauchy_albedo", "ENERGY_GRID_SHAPE * ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU",
+                                    t.hyper_cauchy_albedo) +
                       "\n" +
                       array_text("energy_hyper_cauchy_average", "ENERGY_GRID_SHAPE * ENERGY_GRID_ROUGHNESS", t.hyper_cauchy_average, 8));
 }
 
 std::string dielectric_table_header(const EnergyTables& t, int strata) {
     return header("BRDF_ENERGY_TABLE_DIELECTRIC_H",
-                  "Rough GGX dielectric, white, reflection + transmission: E(mu) [side][ior][roughness][mu] (side 0 outside, 1 "
+                  "Rough GGX dielectric, white, reflection + transmission: E(mu) [side][ior][roughness][mu] (16-bit, rounded up; side 0 outside, 1 "
                   "inside), E_avg [side][ior][roughness], and the Fresnel average from outside [ior].",
                   strata * kDielectricStrataFactor,
-                  array_text("energy_dielectric_albedo", "2 * DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU",
-                             t.dielectric_albedo, 8) +
+                  albedo_array_text("energy_dielectric_albedo", "2 * DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU",
+                                    t.dielectric_albedo) +
                       "\n" +
                       array_text("energy_dielectric_average", "2 * DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS", t.dielectric_average, 8) +
                       "\n" + array_text("energy_dielectric_fresnel_average", "DIELECTRIC_GRID_IOR", t.dielectric_fresnel, 8));

@@ -32,6 +32,12 @@ double single_scattering_albedo(int distribution, float shape, float roughness, 
 std::vector<float> energy_slice(const std::function<double(float roughness, float mu)>& albedo, int n_r, int n_mu, int threads,
                                 int first, int last);
 
+// The 16-bit code of a stored albedo (brdf/energy_grid.h): the least q with q / 65535 >= e, so the
+// stored table is never below the estimate; and the value it stands for. compute_energy_tables()
+// rounds its albedo tables up this way before it averages them, so E_avg is that of the stored rows.
+unsigned short energy_table_code(float e);
+float energy_table_round_up(float e);
+
 // E_avg = 2 int_0^1 E(mu) mu dmu of one row of the table, integrating the interpolant the lookup uses.
 float average_albedo(const float* row, int n = ENERGY_GRID_MU);
 
@@ -43,7 +49,7 @@ double dielectric_single_scattering_albedo(int side, float roughness, float ior,
 float dielectric_fresnel_average_of(float ior);
 
 struct EnergyTables {
-    std::vector<float> ggx_albedo;           // [roughness][mu]
+    std::vector<float> ggx_albedo;           // [roughness][mu], rounded up to 16 bits (energy_table_round_up)
     std::vector<float> ggx_average;          // [roughness]
     std::vector<float> hyper_cauchy_albedo;  // [shape][roughness][mu]
     std::vector<float> hyper_cauchy_average; // [shape][roughness]
