@@ -44,7 +44,7 @@ void OpenClRenderer::build_kernel() {
     opencl::check_cl(clGetKernelWorkGroupInfo(kernel.get(), runtime_.device().device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max),
                                               &kernel_max, nullptr),
                      "clGetKernelWorkGroupInfo");
-    local_size_ = 64;
+    local_size_ = size_t(kLaunchGranularity);
     while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     program_.emplace(std::move(program));
     kernel_ = std::move(kernel);
@@ -79,7 +79,7 @@ void OpenClRenderer::clear_film() {
     runtime_.write(lost_, zeros.data(), pixels * sizeof(cl_uint));
 }
 
-void OpenClRenderer::launch(const kernel::RenderKernelSettings& k) {
+void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pixels) {
     cl_uint a = 0;
     opencl::set_kernel_arg(kernel_, a++, k);
     opencl::set_kernel_arg(kernel_, a++, camera_);
@@ -87,7 +87,9 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k) {
     for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &emission_buffer_, &lights_buffer_, &light_cdf_,
                                           &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
         opencl::set_kernel_arg(kernel_, a++, *b);
-    runtime_.launch_1d(kernel_, size_t(input_.settings.width) * size_t(input_.settings.height), local_size_);
+    // The range starts at a multiple of kLaunchGranularity, which the work-group size divides, and
+    // spans whole groups unless it ends the image, where the kernels stop at width * height.
+    runtime_.launch_1d(kernel_, size_t(pixels.count), local_size_, size_t(pixels.first));
     runtime_.finish();
 }
 

@@ -177,3 +177,45 @@ TEST_CASE("the render worker accumulates, and a new state restarts it with the n
     CHECK(sum_black < 0.5 * sum_red);
     CHECK(worker.error().empty());
 }
+
+TEST_CASE("the render worker's first pass at a reduced size never mixes into the full-size image", "[viewer]") {
+    // 48 x 48: the first state is rendered first at a reduced size (nothing measured yet: the largest
+    // reduction), shown enlarged, then at full size in launches of part of the image. The final
+    // image must be exactly a plain render of the same samples: a low-res sample in the film, or the
+    // enlarged first pass left on the screen where the full size has reached, would change it.
+    lab::render::RenderInput input;
+    input.scene = lab::scene::load_test_model();
+    input.environment = lab::ibl::Environment::constant(brdf::float3(1.0f), "white", {});
+    input.settings.width = input.settings.height = 48;
+    lab::viewer::ViewState state;
+    for (const lab::scene::MaterialSlot& s : input.scene.materials) state.materials.push_back(s.material);
+    state.camera = input.scene.camera;
+    // A chunk of 1 ms: launches of a few work-groups, many per pass.
+    lab::viewer::RenderWorker worker([input] { return std::make_unique<lab::render::HostRenderer>(input, 1); }, state, 0.001, 3);
+    lab::viewer::RenderFrame frame;
+    bool saw_first_pass = false;
+    std::vector<lab::viewer::RenderFrame> full_size;  // every frame taken that says it is full size
+    REQUIRE(eventually([&] {
+        if (!worker.take_frame(&frame)) return false;
+        saw_first_pass |= frame.scale > 1;
+        if (frame.scale == 1) full_size.push_back(frame);
+        return frame.scale == 1 && frame.samples_per_pixel == 3;
+    }));
+    CHECK(saw_first_pass);
+    lab::render::HostRenderer plain(input, 1);
+    std::vector<lab::film::ImageRgb> plain_spp{lab::film::ImageRgb(48, 48)};  // 0 spp: black
+    for (int n = 1; n <= 3; ++n) {
+        plain.add_samples(1);
+        plain_spp.push_back(plain.image());
+    }
+    CHECK(frame.image.rgb == plain_spp[3].rgb);
+    // A full-size frame with n complete samples shows, per pixel, the plain render's n or n + 1
+    // (a pass in progress), never the first pass.
+    size_t mixed = 0;
+    for (const lab::viewer::RenderFrame& f : full_size)
+        for (size_t i = 0; i < f.image.rgb.size(); ++i) {
+            const int n = f.samples_per_pixel;
+            if (f.image.rgb[i] != plain_spp[size_t(n)].rgb[i] && (n == 3 || f.image.rgb[i] != plain_spp[size_t(n + 1)].rgb[i])) ++mixed;
+        }
+    CHECK(mixed == 0);
+}
