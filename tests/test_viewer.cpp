@@ -21,6 +21,7 @@
 #include "scene/test_model.hpp"
 #include "validation/report.hpp"
 #include "viewer/frame_stats.hpp"
+#include "viewer/json_members.hpp"
 #include "viewer/latest_job.hpp"
 #include "viewer/material_edit.hpp"
 #include "viewer/render_worker.hpp"
@@ -109,13 +110,29 @@ TEST_CASE("export to scene adds or replaces one material and keeps the rest in p
                    "materials": {"b": {"albedo": [0.5, 0.5, 0.5]}, "a": {"albedo": [0.2, 0.2, 0.2]}},
                    "objects": [{"name": "ball", "material": "a", "shape": {"type": "sphere", "radius": 1}}]})";
     }
-    const nlohmann::ordered_json before = nlohmann::ordered_json::parse(read(file));
+    const std::string text = read(file);
+    const nlohmann::ordered_json before = nlohmann::ordered_json::parse(text);
     brdf::Preset p;
     p.name = "ignored";
     p.material = brdf::default_material();
     p.material.roughness = 0.125f;
-    lab::viewer::export_to_scene(p, file.string(), "a");      // replaces
+    lab::viewer::export_to_scene(p, file.string(), "a");  // replaces
+    // Every byte around the material's value is the file's own.
+    const std::string old_value = R"({"albedo": [0.2, 0.2, 0.2]})";
+    const size_t at = text.find(old_value);
+    const std::string replaced = read(file);
+    CHECK(replaced.compare(0, at, text, 0, at) == 0);
+    const size_t tail = text.size() - at - old_value.size();
+    REQUIRE(replaced.size() > tail);
+    CHECK(replaced.compare(replaced.size() - tail, tail, text, at + old_value.size(), tail) == 0);
+    const std::optional<lab::viewer::JsonObjectSpan> new_a = lab::viewer::json_object_at(replaced, at);
+    REQUIRE(new_a);
+    CHECK(replaced.find('\n', at) > new_a->close);  // on one line, as the material it replaces
     lab::viewer::export_to_scene(p, file.string(), "fresh");  // adds, last
+    const std::string added = read(file);
+    const size_t end_of_a = new_a->close + 1;
+    CHECK(added.compare(0, end_of_a, replaced, 0, end_of_a) == 0);
+    CHECK(added.compare(added.size() - (replaced.size() - end_of_a), std::string::npos, replaced, end_of_a) == 0);
     const nlohmann::ordered_json after = nlohmann::ordered_json::parse(read(file));
     std::vector<std::string> keys, material_keys;
     for (const auto& [k, v] : after.items()) keys.push_back(k);
