@@ -53,9 +53,14 @@ void OpenClRenderer::build_kernel() {
 
 void OpenClRenderer::upload_scene() {
     const ibl::Environment& env = bound_environment();
-    texels_ = upload(runtime_, env.texels());
-    marginal_ = upload(runtime_, env.marginal_cdf());
-    conditional_ = upload(runtime_, env.conditional_cdf());
+    // The map's texels and sampling tables (megabytes) stay as they are when the materials, or the
+    // environment's rotation and exposure (kernel arguments), change: uploaded once per map.
+    if (env.texels().data() != uploaded_texels_) {
+        texels_ = upload(runtime_, env.texels());
+        marginal_ = upload(runtime_, env.marginal_cdf());
+        conditional_ = upload(runtime_, env.conditional_cdf());
+        uploaded_texels_ = env.texels().data();
+    }
     materials_ = upload(runtime_, compiled_.materials);
     emission_buffer_ = upload(runtime_, emission_);
     lights_buffer_ = upload(runtime_, lights_.lights);

@@ -32,6 +32,7 @@ private:
     opencl::BufferHandle texels_, marginal_, conditional_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
     opencl::BufferHandle accumulation_, splat_, rays_, lost_;
     size_t film_pixels_ = 0;  // the size the film buffers were made for
+    const brdf::float4* uploaded_texels_ = nullptr;  // the environment texels texels_ holds
 };
 
 }  // namespace lab::render

@@ -122,12 +122,24 @@ std::string RenderWorker::device_description() const {
 // Only what differs from the state already applied is set: each setter resets the film, and a
 // material with new BRDF features rebuilds the kernel.
 void RenderWorker::apply(render::Renderer& renderer, const ViewState& s, const ViewState* applied) {
-    if (!applied || !same_materials(s.materials, applied->materials)) renderer.set_materials(s.materials);
-    if (!applied || !same_camera(s.camera, applied->camera)) renderer.set_camera(s.camera);
-    if (!applied || s.env_rotation_degrees != applied->env_rotation_degrees || s.env_exposure_stops != applied->env_exposure_stops)
+    bool restarted = false;
+    if (!applied || !same_materials(s.materials, applied->materials)) {
+        renderer.set_materials(s.materials);
+        restarted = true;
+    }
+    if (!applied || !same_camera(s.camera, applied->camera)) {
+        renderer.set_camera(s.camera);
+        restarted = true;
+    }
+    if (!applied || s.env_rotation_degrees != applied->env_rotation_degrees || s.env_exposure_stops != applied->env_exposure_stops) {
         renderer.set_environment_transform(s.env_rotation_degrees, s.env_exposure_stops);
-    if (!applied || s.show_background != applied->show_background) renderer.set_show_background(s.show_background);
-    renderer.reset();  // a state equal to the applied one still restarts: the user asked for it
+        restarted = true;
+    }
+    if (!applied || s.show_background != applied->show_background) {
+        renderer.set_show_background(s.show_background);
+        restarted = true;
+    }
+    if (!restarted) renderer.reset();  // a state equal to the applied one still restarts: the user asked for it
 }
 
 void RenderWorker::run() {
