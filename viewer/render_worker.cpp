@@ -62,6 +62,22 @@ film::ImageRgb enlarged(const film::ImageRgb& small, int width, int height) {
     return out;
 }
 
+// Pixels for the next launch of a pass, from pixel `first` on, so that it takes about `budget`: the
+// cost of each row as last measured there (the sky is cheap, the model dear), else `pixel_seconds`.
+int launch_pixels(const std::vector<double>& row_seconds, double pixel_seconds, double budget, int first, int width) {
+    if (pixel_seconds <= 0.0) return render::Renderer::kLaunchGranularity;  // nothing measured yet: a small launch measures
+    double predicted = 0.0;
+    int pixels = 0;
+    for (size_t row = size_t(first / width); row < row_seconds.size() && predicted < budget; ++row) {
+        const int in_row = pixels == 0 ? width - first % width : width;
+        const double cost = row_seconds[row] > 0.0 ? row_seconds[row] : pixel_seconds;
+        const int fit = int(std::min(double(in_row), (budget - predicted) / cost));
+        pixels += std::max(fit, 1);
+        predicted += double(std::max(fit, 1)) * cost;
+    }
+    return std::max(pixels, render::Renderer::kLaunchGranularity);
+}
+
 // Where the first full-size pass has not reached yet (pixels from `reached` on, in row order), the
 // enlarged first pass shows instead: a display composite only, the film holds full-size samples.
 void show_first_pass_beyond(film::ImageRgb* image, const film::ImageRgb& first_pass, int reached) {
@@ -169,6 +185,7 @@ void RenderWorker::run() {
     film::ImageRgb first_pass;    // the last first pass, enlarged: shown where the full size has not reached
     int first_pass_scale_shown = 1;
     uint64_t generation = 0, sequence = 0;
+    std::vector<double> row_seconds(size_t(height), 0.0);  // per pixel and sample, by full-size row, as last measured
     auto measured = [&](double seconds, int pixels) {
         if (pixels <= 0) return;
         const double m = seconds / double(pixels);
@@ -236,14 +253,14 @@ void RenderWorker::run() {
                 // first full pass is complete; a newer state waits at most one launch.
                 const int first_spp = renderer->samples_per_pixel();
                 while (renderer->samples_per_pixel() < max_samples_) {
-                    const double launch_budget = kLaunchShare * chunk_seconds_.load();
-                    const int tile = pixel_seconds > 0.0 ? int(std::min(launch_budget / pixel_seconds, double(width) * double(height))) : 0;
-                    renderer->set_launch_pixels(std::max(tile, render::Renderer::kLaunchGranularity));
                     const int before = renderer->pass_pixels();
+                    renderer->set_launch_pixels(launch_pixels(row_seconds, pixel_seconds, kLaunchShare * chunk_seconds_.load(), before, width));
                     const auto launch_start = std::chrono::steady_clock::now();
                     renderer->add_samples(max_samples_ - renderer->samples_per_pixel(), 0.0);  // one launch
-                    const int after = renderer->pass_pixels();
-                    measured(since(launch_start), (after > before ? after : width * height) - before);
+                    const int after = renderer->pass_pixels(), end = after > before ? after : width * height;
+                    const double seconds = since(launch_start);
+                    measured(seconds, end - before);
+                    for (int row = before / width; row <= (end - 1) / width; ++row) row_seconds[size_t(row)] = seconds / double(end - before);
                     if (since(chunk_start) >= chunk_seconds_.load() || (first_spp == 0 && renderer->samples_per_pixel() > 0)) break;
                     std::lock_guard<std::mutex> lock(mutex_);
                     if (generation != pending_generation_ || stop_.load()) break;
