@@ -236,3 +236,31 @@ TEST_CASE("the render worker's first pass at a reduced size never mixes into the
         }
     CHECK(mixed == 0);
 }
+
+TEST_CASE("export to scene keeps a file's own layout: 4-space indents and one-line arrays stay, the new material follows its neighbours' indent",
+          "[viewer]") {
+    const fs::path dir = fs::temp_directory_path() / ("dtoadq_viewer_layout_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "s.json";
+    const std::string head = "{\n    \"camera\": {\"type\": \"pinhole\", \"position\": [0, 1, 4], \"look_at\": [0, 0, 0], \"fov_degrees\": 40},\n"
+                             "    \"materials\": {\n        \"a\": ";
+    const std::string a = "{\n            \"albedo\": [0.2, 0.2, 0.2]\n        }";
+    const std::string tail = "\n    },\n    \"objects\": [{\"name\": \"ball\", \"material\": \"a\", \"shape\": {\"type\": \"sphere\", \"radius\": 1}}]\n}\n";
+    { std::ofstream(file) << head << a << tail; }
+    brdf::Preset p;
+    p.name = "ignored";
+    p.material = brdf::default_material();
+    lab::viewer::export_to_scene(p, file.string(), "new");
+    const std::string added = read(file);
+    REQUIRE(added.size() > head.size() + a.size() + tail.size());
+    CHECK(added.compare(0, head.size() + a.size(), head + a) == 0);
+    CHECK(added.compare(head.size() + a.size(), 19, ",\n        \"new\": {\n") == 0);  // the new member after the last, indented as it
+    CHECK(added.compare(added.size() - tail.size(), tail.size(), tail) == 0);
+    lab::viewer::export_to_scene(p, file.string(), "a");
+    const std::string replaced = read(file);
+    CHECK(replaced.compare(0, head.size(), head) == 0);
+    const std::string after_a = added.substr(head.size() + a.size());  // the new member and the tail
+    CHECK(replaced.compare(replaced.size() - after_a.size(), after_a.size(), after_a) == 0);
+    CHECK(lab::scene::load_scene(file.string()).materials.size() == 2);
+    fs::remove_all(dir);
+}
