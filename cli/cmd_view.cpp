@@ -22,7 +22,7 @@ namespace {
 struct ViewOptions {
     RenderJobOptions job;
     std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces";
-    std::vector<std::string> sets, inspect, env_loads;
+    std::vector<std::string> sets, moves, inspect, env_loads;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
@@ -81,6 +81,13 @@ void run_view(const ViewOptions& o) {
     config.display_exposure = o.exposure;
     config.frames = o.frames;
     config.sets = sets;
+    for (const std::string& text : o.moves) {
+        viewer::ScriptedSet move = viewer::parse_scripted_set(text);
+        if (o.frames == 0) throw InputError("--move", "", "needs --frames (a scripted run)");
+        viewer::ViewState trial_state = config.initial;
+        viewer::apply_move(&trial_state, move.key, move.value);  // a bad key or value stops before the window opens
+        config.moves.push_back(move);
+    }
     config.min_samples = o.min_spp;
     for (const std::string& text : o.env_loads) {
         viewer::ScriptedSet load = viewer::parse_scripted_set("env=" + text);  // PATH@FRAME
@@ -149,6 +156,9 @@ void register_view(CLI::App& app) {
     cmd->add_option("--frames", o->frames, "Headless: close after N frames (and once the image shows every --set)");
     cmd->add_option("--min-spp", o->min_spp, "Headless: and once the image has at least this many samples per pixel")->capture_default_str();
     cmd->add_option("--set", o->sets, "Headless: KEY=VALUE@FRAME, a material parameter changed at a frame (repeatable)");
+    cmd->add_option("--move", o->moves,
+                    "Headless: KEY=VALUE@FRAME, a camera or environment change at a frame: orbit=DX,DY (pixels of drag), "
+                    "env_rotation=DEG, env_exposure=STOPS (repeatable)");
     cmd->add_option("--screenshot", o->screenshot, "Headless: the window as a PNG at the last frame");
     cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
     cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");

@@ -70,10 +70,10 @@ void Runtime::read(const BufferHandle& buffer, void* data, size_t bytes) const {
     check_cl(clEnqueueReadBuffer(queue_.get(), buffer.get(), CL_TRUE, 0, bytes, data, 0, nullptr, nullptr), "clEnqueueReadBuffer");
 }
 
-void Runtime::launch_1d(const KernelHandle& kernel, size_t count, size_t local) const {
+void Runtime::launch_1d(const KernelHandle& kernel, size_t count, size_t local, size_t offset) const {
     if (count == 0) return;
     size_t global = (count + local - 1) / local * local;
-    check_cl(clEnqueueNDRangeKernel(queue_.get(), kernel.get(), 1, nullptr, &global, &local, 0, nullptr, nullptr),
+    check_cl(clEnqueueNDRangeKernel(queue_.get(), kernel.get(), 1, offset ? &offset : nullptr, &global, &local, 0, nullptr, nullptr),
              "clEnqueueNDRangeKernel");
 }
 

@@ -6,9 +6,19 @@
 
 namespace lab::render {
 
-// Per pixel: accumulation.xyz / (samples - non-finite count) + splat / samples. A pixel whose
-// samples were all non-finite is NaN (it shows, magenta in a PNG); before the first sample every
-// pixel is 0.
-film::ImageRgb resolve_film(const FilmReadback& film, int samples_per_pixel, int width, int height);
+// A pass of launches over part of the image so far (Renderer::set_launch_pixels): its first `pixels`
+// pixels, in row order, hold `samples` more samples than the others.
+struct PartialPass {
+    int pixels = 0;
+    int samples = 0;
+};
+
+// Per pixel: accumulation.xyz / (own samples - non-finite count) + splat / light paths per pixel.
+// A pixel's own samples are samples_per_pixel, plus the partial pass's where it has reached. The
+// splats come from light paths every pixel's work-item traced, one per sample, landing anywhere:
+// they are scaled by all of them, samples_per_pixel + partial.samples * partial.pixels / pixels
+// per pixel (pbrt-v4's splat scale when there is no partial pass). A pixel whose samples were all
+// non-finite is NaN (it shows, magenta in a PNG); a pixel without a sample is 0.
+film::ImageRgb resolve_film(const FilmReadback& film, int samples_per_pixel, int width, int height, PartialPass partial = {});
 
 }  // namespace lab::render

@@ -39,18 +39,18 @@ void HostRenderer::clear_film() {
     lost_.assign(pixels, 0u);
 }
 
-void HostRenderer::launch(const kernel::RenderKernelSettings& k) {
+void HostRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange range) {
     const ibl::Environment& env = bound_environment();
     kernel::RenderScene scene = kernel::render_scene_make(compiled_.materials.data(), brdf::measured_tables(), emission_.data(), lights_.lights.data(),
                                                           lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(),
                                                           env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data());
 
-    int pixels = input_.settings.width * input_.settings.height;
+    const int pixels = range.first + range.count;
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());
     // The splat buffer holds floats as their bits (kernels/film.h), which the film reads back as floats.
     auto* splat = reinterpret_cast<unsigned*>(film_.splat.data());
     const bool bidirectional = input_.settings.integrator != Integrator::pt;
-    std::atomic<int> next{0};
+    std::atomic<int> next{range.first};
     auto work = [&] {
         scene::host_field::current_scene = &input_.scene;
         // Rows of pixels at a time: few enough atomics, small enough to balance the threads.

@@ -45,8 +45,9 @@ void OpenClRenderer::build_kernel() {
     opencl::check_cl(clGetKernelWorkGroupInfo(kernel.get(), runtime_.device().device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max),
                                               &kernel_max, nullptr),
                      "clGetKernelWorkGroupInfo");
-    // 64 work-items unless set (`dtoadq bench breakdown` compares sizes), at most the kernel's maximum
-    local_size_ = s.local_size > 0 ? size_t(s.local_size) : 64;
+    // kLaunchGranularity (64) work-items unless set (`dtoadq bench breakdown` compares sizes), at
+    // most the kernel's maximum
+    local_size_ = s.local_size > 0 ? size_t(s.local_size) : size_t(kLaunchGranularity);
     while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     program_.emplace(std::move(program));
     kernel_ = std::move(kernel);
@@ -55,9 +56,14 @@ void OpenClRenderer::build_kernel() {
 
 void OpenClRenderer::upload_scene() {
     const ibl::Environment& env = bound_environment();
-    texels_ = upload(runtime_, env.texels());
-    marginal_ = upload(runtime_, env.marginal_cdf());
-    conditional_ = upload(runtime_, env.conditional_cdf());
+    // The map's texels and sampling tables (megabytes) stay as they are when the materials, or the
+    // environment's rotation and exposure (kernel arguments), change: uploaded once per map.
+    if (env.texels().data() != uploaded_texels_) {
+        texels_ = upload(runtime_, env.texels());
+        marginal_ = upload(runtime_, env.marginal_cdf());
+        conditional_ = upload(runtime_, env.conditional_cdf());
+        uploaded_texels_ = env.texels().data();
+    }
     materials_ = upload(runtime_, compiled_.materials);
     // the measured tables only for a scene that has a measured material, and only when they changed
     bool measured = false;
@@ -89,7 +95,7 @@ void OpenClRenderer::clear_film() {
     runtime_.write(lost_, zeros.data(), pixels * sizeof(cl_uint));
 }
 
-void OpenClRenderer::launch(const kernel::RenderKernelSettings& k) {
+void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pixels) {
     cl_uint a = 0;
     opencl::set_kernel_arg(kernel_, a++, k);
     opencl::set_kernel_arg(kernel_, a++, camera_);
@@ -97,7 +103,15 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k) {
     for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &measured_, &emission_buffer_, &lights_buffer_, &light_cdf_,
                                           &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
         opencl::set_kernel_arg(kernel_, a++, *b);
-    runtime_.launch_1d(kernel_, size_t(input_.settings.width) * size_t(input_.settings.height), local_size_);
+    // The range starts at a multiple of kLaunchGranularity and spans whole granules unless it ends the
+    // image, where the kernels stop at width * height. A work-group size set above the granularity
+    // (bench breakdown's study) would round a partial range up into pixels of the next launch: such
+    // a launch takes the largest halving of it that fits the range.
+    const size_t image = size_t(input_.settings.width) * size_t(input_.settings.height);
+    const bool ends_image = size_t(pixels.first) + size_t(pixels.count) >= image;
+    size_t local = local_size_;
+    while (local > 1 && (size_t(pixels.first) % local != 0 || (!ends_image && size_t(pixels.count) % local != 0))) local /= 2;
+    runtime_.launch_1d(kernel_, size_t(pixels.count), local, size_t(pixels.first));
     runtime_.finish();
 }
 

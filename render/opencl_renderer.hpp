@@ -20,7 +20,7 @@ private:
     void build_kernel() override;
     void upload_scene() override;
     void clear_film() override;
-    void launch(const kernel::RenderKernelSettings& k) override;
+    void launch(const kernel::RenderKernelSettings& k, PixelRange pixels) override;
     FilmReadback read_film() const override;
     void write_film(const FilmReadback& film) override;
     void read_ray_counts(uint64_t* rays, uint64_t* lost) const override;
@@ -34,6 +34,7 @@ private:
     size_t measured_floats_ = 0;
     opencl::BufferHandle accumulation_, splat_, rays_, lost_;
     size_t film_pixels_ = 0;  // the size the film buffers were made for
+    const brdf::float4* uploaded_texels_ = nullptr;  // the environment texels texels_ holds
 };
 
 }  // namespace lab::render

@@ -124,11 +124,21 @@ int Renderer::add_samples(int max_samples, double budget_seconds) {
     int added = 0;
     if (max_samples > 0 && int64_t(next_sample_) + max_samples > SampleRanges::kMaxEnd)
         throw std::invalid_argument("Renderer::add_samples: sample indices past " + std::to_string(SampleRanges::kMaxEnd));
+    const int pixels = input_.settings.width * input_.settings.height;
     while (added < max_samples) {
-        int n = std::min(max_samples - added, samples_per_launch_);
-        launch(kernel_settings(next_sample_, n));
-        next_sample_ += n;
-        added += n;
+        if (pass_pixels_ == 0) pass_samples_ = std::min(max_samples - added, samples_per_launch_);
+        int count = pixels - pass_pixels_;
+        if (launch_pixels_ > 0) {
+            const int tile = (launch_pixels_ + kLaunchGranularity - 1) / kLaunchGranularity * kLaunchGranularity;
+            count = std::min(count, tile);
+        }
+        launch(kernel_settings(next_sample_, pass_samples_), PixelRange{pass_pixels_, count});
+        pass_pixels_ += count;
+        if (pass_pixels_ == pixels) {  // the pass is complete
+            next_sample_ += pass_samples_;
+            added += pass_samples_;
+            pass_pixels_ = 0;
+        }
         if (seconds_since(start) >= budget_seconds) break;
     }
     render_seconds_ += seconds_since(start);
@@ -137,6 +147,7 @@ int Renderer::add_samples(int max_samples, double budget_seconds) {
 
 void Renderer::reset() {
     clear_film();
+    pass_pixels_ = 0;
     restored_ = SampleRanges();
     run_first_ = next_sample_ = first_sample_;
     render_seconds_ = 0.0;
@@ -148,6 +159,11 @@ void Renderer::set_first_sample(int first) {
     reset();
 }
 
+FilmReadback Renderer::film() const {
+    if (pass_pixels_ > 0) throw std::logic_error("Renderer::film: a pass is in progress (add_samples ended inside a pass)");
+    return read_film();
+}
+
 SampleRanges Renderer::sample_ranges() const { return restored_.joined(SampleRanges(run_first_, next_sample_)); }
 
 void Renderer::restore_film(const FilmReadback& film, const SampleRanges& ranges) {
@@ -156,6 +172,7 @@ void Renderer::restore_film(const FilmReadback& film, const SampleRanges& ranges
         throw std::invalid_argument("Renderer::restore_film: the film's buffers do not match the image size");
     if (ranges.end() > SampleRanges::kMaxEnd) throw std::invalid_argument("Renderer::restore_film: sample indices out of range");
     write_film(film);
+    pass_pixels_ = 0;
     restored_ = ranges;
     run_first_ = next_sample_ = int(ranges.end());
     render_seconds_ = 0.0;
@@ -211,7 +228,8 @@ void Renderer::set_show_background(bool show) {
 }
 
 film::ImageRgb Renderer::image() const {
-    return resolve_film(read_film(), film_samples(), input_.settings.width, input_.settings.height);
+    return resolve_film(read_film(), film_samples(), input_.settings.width, input_.settings.height,
+                        PartialPass{pass_pixels_, pass_pixels_ > 0 ? pass_samples_ : 0});
 }
 
 RenderStatistics Renderer::statistics() const {
@@ -221,6 +239,7 @@ RenderStatistics Renderer::statistics() const {
     s.render_seconds = render_seconds_;
     // this run's paths: render_seconds counts this run's time only
     s.paths = uint64_t(run_samples()) * uint64_t(input_.settings.width) * uint64_t(input_.settings.height);
+    if (pass_pixels_ > 0) s.paths += uint64_t(pass_pixels_) * uint64_t(pass_samples_);  // the pass in progress, so far
     read_ray_counts(&s.rays, &s.lost_rays);
     for (size_t p = 3; p < film.accumulation.size(); p += 4) s.nonfinite_samples += uint64_t(film.accumulation[p]);
     return s;

@@ -44,6 +44,13 @@ struct RenderStatistics {
     double rays_per_second() const { return render_seconds > 0.0 ? double(rays) / render_seconds : 0.0; }
 };
 
+// Pixels [first, first + count) in row order (pixel k is (k % width, k / width)): what one launch
+// covers. A range starts at a multiple of Renderer::kLaunchGranularity and spans a multiple of it
+// unless it ends the image, so an OpenCL launch of whole work-groups covers it exactly.
+struct PixelRange {
+    int first = 0, count = 0;
+};
+
 // The film as the device holds it (kernels/film.h), read back.
 struct FilmReadback {
     std::vector<float> accumulation;  // 4 per pixel: sum of finite samples, count of non-finite ones
@@ -66,18 +73,37 @@ public:
     // `budget_seconds` have passed; returns how many were added (at least one launch when
     // max_samples > 0). A launch is not cut short, so a call overruns its budget by at most one
     // launch: callers that need a frame-time budget keep launches small (set_samples_per_launch).
+    //
+    // With set_launch_pixels(n), a pass of samples_per_launch() samples over the image is split into
+    // launches of about n pixels each (rounded up to kLaunchGranularity), so that a caller waits at
+    // most one such launch. A call may then end in the middle of a pass; the next call continues
+    // it (with the pass's sample count). Only complete passes count as added, in sample_ranges()
+    // and in statistics().samples_per_pixel; image() resolves the pass in progress per pixel (the
+    // pixels it has reached hold its samples, the others not yet). Any integrator: every pixel's
+    // work-item is keyed by its pixel and sample index, whatever launch it runs in, so the split
+    // changes no pixel's samples.
     int add_samples(int max_samples, double budget_seconds = std::numeric_limits<double>::infinity());
     int samples_per_launch() const { return samples_per_launch_; }
     void set_samples_per_launch(int n) { samples_per_launch_ = n < 1 ? 1 : n; }
+    static constexpr int kLaunchGranularity = 64;  // the largest OpenCL work-group the renderers use
+    // Pixels per launch at most; 0 (the default): a launch covers the whole image.
+    void set_launch_pixels(int pixels) { launch_pixels_ = pixels < 0 ? 0 : pixels; }
+    int launch_pixels() const { return launch_pixels_; }
+    // Pixels of the pass in progress done so far (the first ones in row order); 0: none in progress.
+    int pass_pixels() const { return pass_pixels_; }
 
     // Drops every sample so far.
     void reset();
     // Renders from sample index `first` on (--samples A:B renders indices A to B-1); resets.
     void set_first_sample(int first);
+    // Samples per pixel of the complete passes on the film (statistics() without reading the film back).
+    int samples_per_pixel() const { return film_samples(); }
     // The sample indices the film holds.
     SampleRanges sample_ranges() const;
-    // The film's buffers as they are now (render/film_file.hpp writes them beside the image).
-    FilmReadback film() const { return read_film(); }
+    // The film's buffers as they are now (render/film_file.hpp writes them beside the image). Not
+    // during a pass in progress (std::logic_error): its samples are on part of the film only, which
+    // sample_ranges() cannot say.
+    FilmReadback film() const;
     // Continues a render from its film (--resume): the film's buffers, of this renderer's size, and
     // the sample indices they hold; the next sample is the one after the last of them. Own-pixel
     // accumulation continues in sample order, so the result is bit-identical to one run.
@@ -115,8 +141,8 @@ protected:
     virtual void upload_scene() = 0;
     // A zeroed film (and ray counters) of the current size.
     virtual void clear_film() = 0;
-    // Adds k.sample_count samples to every pixel, the first keyed by k.first_sample; blocks.
-    virtual void launch(const kernel::RenderKernelSettings& k) = 0;
+    // Adds k.sample_count samples to every pixel of the range, the first keyed by k.first_sample; blocks.
+    virtual void launch(const kernel::RenderKernelSettings& k, PixelRange pixels) = 0;
     virtual FilmReadback read_film() const = 0;
     // Replaces the film's buffers (restore_film has checked their sizes).
     virtual void write_film(const FilmReadback& film) = 0;
@@ -145,6 +171,9 @@ private:
     int run_samples() const { return next_sample_ - run_first_; }
     int film_samples() const { return int(restored_.count()) + run_samples(); }
     int samples_per_launch_ = 1;
+    int launch_pixels_ = 0;  // 0: whole image
+    int pass_pixels_ = 0;    // the pass in progress has reached pixels [0, pass_pixels_)
+    int pass_samples_ = 0;   // and adds samples next_sample_ .. next_sample_ + pass_samples_ - 1 to them
     double render_seconds_ = 0.0;
 };
 

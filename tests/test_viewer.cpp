@@ -21,6 +21,7 @@
 #include "scene/test_model.hpp"
 #include "validation/report.hpp"
 #include "viewer/frame_stats.hpp"
+#include "viewer/json_members.hpp"
 #include "viewer/latest_job.hpp"
 #include "viewer/material_edit.hpp"
 #include "viewer/render_worker.hpp"
@@ -109,13 +110,29 @@ TEST_CASE("export to scene adds or replaces one material and keeps the rest in p
                    "materials": {"b": {"albedo": [0.5, 0.5, 0.5]}, "a": {"albedo": [0.2, 0.2, 0.2]}},
                    "objects": [{"name": "ball", "material": "a", "shape": {"type": "sphere", "radius": 1}}]})";
     }
-    const nlohmann::ordered_json before = nlohmann::ordered_json::parse(read(file));
+    const std::string text = read(file);
+    const nlohmann::ordered_json before = nlohmann::ordered_json::parse(text);
     brdf::Preset p;
     p.name = "ignored";
     p.material = brdf::default_material();
     p.material.roughness = 0.125f;
-    lab::viewer::export_to_scene(p, file.string(), "a");      // replaces
+    lab::viewer::export_to_scene(p, file.string(), "a");  // replaces
+    // Every byte around the material's value is the file's own.
+    const std::string old_value = R"({"albedo": [0.2, 0.2, 0.2]})";
+    const size_t at = text.find(old_value);
+    const std::string replaced = read(file);
+    CHECK(replaced.compare(0, at, text, 0, at) == 0);
+    const size_t tail = text.size() - at - old_value.size();
+    REQUIRE(replaced.size() > tail);
+    CHECK(replaced.compare(replaced.size() - tail, tail, text, at + old_value.size(), tail) == 0);
+    const std::optional<lab::viewer::JsonObjectSpan> new_a = lab::viewer::json_object_at(replaced, at);
+    REQUIRE(new_a);
+    CHECK(replaced.find('\n', at) > new_a->close);  // on one line, as the material it replaces
     lab::viewer::export_to_scene(p, file.string(), "fresh");  // adds, last
+    const std::string added = read(file);
+    const size_t end_of_a = new_a->close + 1;
+    CHECK(added.compare(0, end_of_a, replaced, 0, end_of_a) == 0);
+    CHECK(added.compare(added.size() - (replaced.size() - end_of_a), std::string::npos, replaced, end_of_a) == 0);
     const nlohmann::ordered_json after = nlohmann::ordered_json::parse(read(file));
     std::vector<std::string> keys, material_keys;
     for (const auto& [k, v] : after.items()) keys.push_back(k);
@@ -176,4 +193,74 @@ TEST_CASE("the render worker accumulates, and a new state restarts it with the n
         }
     CHECK(sum_black < 0.5 * sum_red);
     CHECK(worker.error().empty());
+}
+
+TEST_CASE("the render worker's first pass at a reduced size never mixes into the full-size image", "[viewer]") {
+    // 48 x 48: the first state is rendered first at a reduced size (nothing measured yet: the largest
+    // reduction), shown enlarged, then at full size in launches of part of the image. The final
+    // image must be exactly a plain render of the same samples: a low-res sample in the film, or the
+    // enlarged first pass left on the screen where the full size has reached, would change it.
+    lab::render::RenderInput input;
+    input.scene = lab::scene::load_test_model();
+    input.environment = lab::ibl::Environment::constant(brdf::float3(1.0f), "white", {});
+    input.settings.width = input.settings.height = 48;
+    lab::viewer::ViewState state;
+    for (const lab::scene::MaterialSlot& s : input.scene.materials) state.materials.push_back(s.material);
+    state.camera = input.scene.camera;
+    // A chunk of 1 ms: launches of a few work-groups, many per pass.
+    lab::viewer::RenderWorker worker([input] { return std::make_unique<lab::render::HostRenderer>(input, 1); }, state, 0.001, 3);
+    lab::viewer::RenderFrame frame;
+    bool saw_first_pass = false;
+    std::vector<lab::viewer::RenderFrame> full_size;  // every frame taken that says it is full size
+    REQUIRE(eventually([&] {
+        if (!worker.take_frame(&frame)) return false;
+        saw_first_pass |= frame.scale > 1;
+        if (frame.scale == 1) full_size.push_back(frame);
+        return frame.scale == 1 && frame.samples_per_pixel == 3;
+    }));
+    CHECK(saw_first_pass);
+    lab::render::HostRenderer plain(input, 1);
+    std::vector<lab::film::ImageRgb> plain_spp{lab::film::ImageRgb(48, 48)};  // 0 spp: black
+    for (int n = 1; n <= 3; ++n) {
+        plain.add_samples(1);
+        plain_spp.push_back(plain.image());
+    }
+    CHECK(frame.image.rgb == plain_spp[3].rgb);
+    // A full-size frame with n complete samples shows, per pixel, the plain render's n or n + 1
+    // (a pass in progress), never the first pass.
+    size_t mixed = 0;
+    for (const lab::viewer::RenderFrame& f : full_size)
+        for (size_t i = 0; i < f.image.rgb.size(); ++i) {
+            const int n = f.samples_per_pixel;
+            if (f.image.rgb[i] != plain_spp[size_t(n)].rgb[i] && (n == 3 || f.image.rgb[i] != plain_spp[size_t(n + 1)].rgb[i])) ++mixed;
+        }
+    CHECK(mixed == 0);
+}
+
+TEST_CASE("export to scene keeps a file's own layout: 4-space indents and one-line arrays stay, the new material follows its neighbours' indent",
+          "[viewer]") {
+    const fs::path dir = fs::temp_directory_path() / ("dtoadq_viewer_layout_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "s.json";
+    const std::string head = "{\n    \"camera\": {\"type\": \"pinhole\", \"position\": [0, 1, 4], \"look_at\": [0, 0, 0], \"fov_degrees\": 40},\n"
+                             "    \"materials\": {\n        \"a\": ";
+    const std::string a = "{\n            \"albedo\": [0.2, 0.2, 0.2]\n        }";
+    const std::string tail = "\n    },\n    \"objects\": [{\"name\": \"ball\", \"material\": \"a\", \"shape\": {\"type\": \"sphere\", \"radius\": 1}}]\n}\n";
+    { std::ofstream(file) << head << a << tail; }
+    brdf::Preset p;
+    p.name = "ignored";
+    p.material = brdf::default_material();
+    lab::viewer::export_to_scene(p, file.string(), "new");
+    const std::string added = read(file);
+    REQUIRE(added.size() > head.size() + a.size() + tail.size());
+    CHECK(added.compare(0, head.size() + a.size(), head + a) == 0);
+    CHECK(added.compare(head.size() + a.size(), 19, ",\n        \"new\": {\n") == 0);  // the new member after the last, indented as it
+    CHECK(added.compare(added.size() - tail.size(), tail.size(), tail) == 0);
+    lab::viewer::export_to_scene(p, file.string(), "a");
+    const std::string replaced = read(file);
+    CHECK(replaced.compare(0, head.size(), head) == 0);
+    const std::string after_a = added.substr(head.size() + a.size());  // the new member and the tail
+    CHECK(replaced.compare(replaced.size() - after_a.size(), after_a.size(), after_a) == 0);
+    CHECK(lab::scene::load_scene(file.string()).materials.size() == 2);
+    fs::remove_all(dir);
 }

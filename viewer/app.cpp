@@ -86,6 +86,7 @@ int run_viewer(const ViewerConfig& config) {
     // A scripted run lasts at least until its last --set has been applied.
     int last_frame = config.frames;
     for (const ScriptedSet& s : config.sets) last_frame = std::max(last_frame, s.frame + 1);
+    for (const ScriptedSet& s : config.moves) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.env_loads) last_frame = std::max(last_frame, s.frame + 1);
     int exit_status = 0;
     FrameStats stats;
@@ -122,10 +123,19 @@ int run_viewer(const ViewerConfig& config) {
                 changed = true;
             }
             if (changed) {
-                submitted = worker->submit(ui.view);
-                waiting.emplace_back(submitted, Clock::now());
                 lobes.set_materials(ui.preset, config.compare);
                 checks.set_material(ui.preset);
+            }
+            bool moved = false;  // the camera or environment: B's view changes too
+            for (const ScriptedSet& s : config.moves) {
+                if (s.frame != n) continue;
+                apply_move(&ui.view, s.key, s.value);
+                moved = true;
+            }
+            if (changed || moved) {
+                submitted = worker->submit(ui.view);
+                if (worker_b && moved) worker_b->submit(state_b());
+                waiting.emplace_back(submitted, Clock::now());
                 changed = false;
             }
             // A new map: the old renderer shows until the new one is ready; a failure keeps the old.

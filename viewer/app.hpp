@@ -39,6 +39,7 @@ struct ViewerConfig {
     int frames = 0;
     int min_samples = 1;               // ... and the image has at least this many samples per pixel
     std::vector<ScriptedSet> sets;
+    std::vector<ScriptedSet> moves;      // --move KEY=VALUE@FRAME: camera and environment changes (viewer/script.hpp)
     std::vector<ScriptedSet> env_loads;  // --load-env PATH@FRAME: as the environment panel's "load map" (key unused)
     std::string screenshot;            // PNG of the whole window at the last frame
     std::string save_preset;           // written on exit

@@ -15,7 +15,8 @@ struct FrameStats {
 // The q-quantile (0..1) by the nearest rank; 0 when empty.
 double quantile(std::vector<double> values, double q);
 
-// Lines for the terminal: frames, median and p95 frame time in ms and frames/s, changes' latency.
+// Lines for the terminal: frames, median and p95 frame time in ms and frames/s, the changes' latency
+// (median, p95, max).
 std::string describe(const FrameStats& stats);
 
 }  // namespace lab::viewer

@@ -1,5 +1,8 @@
 #include "viewer/latest_job.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 namespace lab::viewer {
 
 LatestJob::LatestJob() { thread_ = std::thread([this] { run(); }); }
@@ -27,6 +30,10 @@ bool LatestJob::busy() const {
 }
 
 void LatestJob::run() {
+    // Below the interface and the render worker (Linux gives each thread its own nice value): the
+    // checks and lobe plots take a second of both cores after each edit, which would otherwise
+    // delay the edit's first frame. Best effort: a refusal leaves the priority as it was.
+    (void)setpriority(PRIO_PROCESS, id_t(gettid()), 10);
     for (;;) {
         Job job;
         uint64_t mine = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <imgui.h>
 
@@ -87,7 +88,9 @@ void LobePanel::draw() {
 }
 
 // The plane of incidence: the normal up, the incident side left, f cos on a linear radius shared
-// by A and B. Dragging sets theta in from the mouse's angle to the normal.
+// by A and B (one peak over both, so their sizes compare; the caption gives it). A delta lobe has no
+// finite value: its direction is drawn at full length. Dragging sets theta in from the mouse's
+// angle to the normal.
 void LobePanel::draw_polar(const Result& r) {
     bool dragging;
     ImVec2 delta, mouse;
@@ -119,7 +122,10 @@ void LobePanel::draw_polar(const Result& r) {
     }
     const float t = theta_in_ * kRadians;
     dl->AddLine(centre, ImVec2(centre.x - std::sin(t) * radius, centre.y - std::cos(t) * radius), IM_COL32(255, 255, 255, 255), 2.0f);
-    dl->AddText(ImVec2(o.x + 4, o.y + 2), IM_COL32(200, 200, 200, 255), "plane of incidence (drag: theta in)");
+    char caption[160];
+    std::snprintf(caption, sizeof caption, "plane of incidence (drag: theta in)\nf cos, one scale for A and B: rim %.3g /sr%s", peak,
+                  r.lobe[0].deltas.empty() && r.lobe[1].deltas.empty() ? "" : "\ndelta lobes: full length, not to scale");
+    dl->AddText(ImVec2(o.x + 4, o.y + 2), IM_COL32(200, 200, 200, 255), caption);
     if (dragging) {
         float dx = mouse.x - centre.x, dy = centre.y - mouse.y;
         float theta = std::atan2(std::fabs(dx), std::max(dy, 0.0f)) / kRadians;
@@ -129,7 +135,7 @@ void LobePanel::draw_polar(const Result& r) {
 }
 
 // The lobe as a surface over the outgoing hemisphere(s): radius f cos along each direction, drawn as
-// its theta rings and phi meridians, turned by dragging.
+// its theta rings and phi meridians, turned by dragging; one scale for A and B, as the polar plot.
 void LobePanel::draw_3d(const Result& r) {
     bool dragging;
     ImVec2 delta, mouse;
@@ -175,7 +181,9 @@ void LobePanel::draw_3d(const Result& r) {
             dl->AddPolyline(line.data(), int(line.size()), colour, 0, 1.0f);
         }
     }
-    dl->AddText(ImVec2(o.x + 4, o.y + 2), IM_COL32(200, 200, 200, 255), "3D lobe (drag: turn)");
+    char caption[96];
+    std::snprintf(caption, sizeof caption, "3D lobe (drag: turn), one scale for A and B: peak %.3g /sr", peak);
+    dl->AddText(ImVec2(o.x + 4, o.y + 2), IM_COL32(200, 200, 200, 255), caption);
 }
 
 // Directional albedo against theta in: A per channel, B's luminance, 0..1 (1 dotted).

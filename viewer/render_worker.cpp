@@ -21,26 +21,68 @@ bool same_camera(const scene::Camera& a, const scene::Camera& b) {
 
 // Samples per pixel of the small first pass before the full size takes over.
 constexpr int kFirstPassSamples = 4;
-constexpr int kMaxFirstPassScale = 8;
+constexpr int kMaxFirstPassScale = 16;
+// Shares of a chunk: one whole first-pass sample, and one launch of the full-size passes (what a
+// change waits for before it is applied).
+constexpr double kFirstPassShare = 0.5;
+constexpr double kLaunchShare = 0.25;
 
-// The smallest power-of-two reduction whose launch (one sample per pixel) fits in a chunk.
-int first_pass_scale(double full_launch_seconds, double chunk_seconds, int width, int height) {
+// The smallest integer reduction at which one sample of every pixel takes at most `budget`, at
+// `pixel_seconds` per pixel and sample; while nothing was measured yet, the largest one (a cheap
+// first measurement). The reduced image keeps at least 8 pixels a side.
+int first_pass_scale(double pixel_seconds, double budget, int width, int height) {
     int scale = 1;
-    while (full_launch_seconds / double(scale * scale) > chunk_seconds && scale < kMaxFirstPassScale && width / (scale * 2) >= 8 &&
-           height / (scale * 2) >= 8)
-        scale *= 2;
+    auto fits = [&](int s) { return pixel_seconds > 0.0 && pixel_seconds * double(width / s) * double(height / s) <= budget; };
+    while (!fits(scale) && scale < kMaxFirstPassScale && width / (scale + 1) >= 8 && height / (scale + 1) >= 8) ++scale;
     return scale;
 }
 
-// The small image at full size, each pixel repeated (nearest).
+// The small image at full size, filtered bilinearly between its pixel centres (a blur, as a
+// viewport's first pass shows, rather than blocks).
 film::ImageRgb enlarged(const film::ImageRgb& small, int width, int height) {
     film::ImageRgb out(width, height);
-    for (int y = 0; y < height; ++y)
+    const float sx = float(small.width) / float(width), sy = float(small.height) / float(height);
+    for (int y = 0; y < height; ++y) {
+        const float fy = std::clamp((float(y) + 0.5f) * sy - 0.5f, 0.0f, float(small.height - 1));
+        const int y0 = int(fy), y1 = std::min(y0 + 1, small.height - 1);
+        const float ty = fy - float(y0);
         for (int x = 0; x < width; ++x) {
-            const float* p = small.pixel(x * small.width / width, y * small.height / height);
-            out.set(x, y, p[0], p[1], p[2]);
+            const float fx = std::clamp((float(x) + 0.5f) * sx - 0.5f, 0.0f, float(small.width - 1));
+            const int x0 = int(fx), x1 = std::min(x0 + 1, small.width - 1);
+            const float tx = fx - float(x0);
+            float rgb[3];
+            for (int c = 0; c < 3; ++c) {
+                const float top = small.pixel(x0, y0)[c] * (1.0f - tx) + small.pixel(x1, y0)[c] * tx;
+                const float bottom = small.pixel(x0, y1)[c] * (1.0f - tx) + small.pixel(x1, y1)[c] * tx;
+                rgb[c] = top * (1.0f - ty) + bottom * ty;
+            }
+            out.set(x, y, rgb[0], rgb[1], rgb[2]);
         }
+    }
     return out;
+}
+
+// Pixels for the next launch of a pass, from pixel `first` on, so that it takes about `budget`: the
+// cost of each row as last measured there (the sky is cheap, the model dear), else `pixel_seconds`.
+int launch_pixels(const std::vector<double>& row_seconds, double pixel_seconds, double budget, int first, int width) {
+    if (pixel_seconds <= 0.0) return render::Renderer::kLaunchGranularity;  // nothing measured yet: a small launch measures
+    double predicted = 0.0;
+    int pixels = 0;
+    for (size_t row = size_t(first / width); row < row_seconds.size() && predicted < budget; ++row) {
+        const int in_row = pixels == 0 ? width - first % width : width;
+        const double cost = row_seconds[row] > 0.0 ? row_seconds[row] : pixel_seconds;
+        const int fit = int(std::min(double(in_row), (budget - predicted) / cost));
+        pixels += std::max(fit, 1);
+        predicted += double(std::max(fit, 1)) * cost;
+    }
+    return std::max(pixels, render::Renderer::kLaunchGranularity);
+}
+
+// Where the first full-size pass has not reached yet (pixels from `reached` on, in row order), the
+// enlarged first pass shows instead: a display composite only, the film holds full-size samples.
+void show_first_pass_beyond(film::ImageRgb* image, const film::ImageRgb& first_pass, int reached) {
+    if (!first_pass.valid() || first_pass.width != image->width || first_pass.height != image->height) return;
+    std::copy(first_pass.rgb.begin() + 3 * size_t(reached), first_pass.rgb.end(), image->rgb.begin() + 3 * size_t(reached));
 }
 
 }  // namespace
@@ -96,12 +138,24 @@ std::string RenderWorker::device_description() const {
 // Only what differs from the state already applied is set: each setter resets the film, and a
 // material with new BRDF features rebuilds the kernel.
 void RenderWorker::apply(render::Renderer& renderer, const ViewState& s, const ViewState* applied) {
-    if (!applied || !same_materials(s.materials, applied->materials)) renderer.set_materials(s.materials);
-    if (!applied || !same_camera(s.camera, applied->camera)) renderer.set_camera(s.camera);
-    if (!applied || s.env_rotation_degrees != applied->env_rotation_degrees || s.env_exposure_stops != applied->env_exposure_stops)
+    bool restarted = false;
+    if (!applied || !same_materials(s.materials, applied->materials)) {
+        renderer.set_materials(s.materials);
+        restarted = true;
+    }
+    if (!applied || !same_camera(s.camera, applied->camera)) {
+        renderer.set_camera(s.camera);
+        restarted = true;
+    }
+    if (!applied || s.env_rotation_degrees != applied->env_rotation_degrees || s.env_exposure_stops != applied->env_exposure_stops) {
         renderer.set_environment_transform(s.env_rotation_degrees, s.env_exposure_stops);
-    if (!applied || s.show_background != applied->show_background) renderer.set_show_background(s.show_background);
-    renderer.reset();  // a state equal to the applied one still restarts: the user asked for it
+        restarted = true;
+    }
+    if (!applied || s.show_background != applied->show_background) {
+        renderer.set_show_background(s.show_background);
+        restarted = true;
+    }
+    if (!restarted) renderer.reset();  // a state equal to the applied one still restarts: the user asked for it
 }
 
 void RenderWorker::run() {
@@ -126,16 +180,25 @@ void RenderWorker::run() {
     ViewState good;              // the last state the renderer accepted
     bool have_good = false;
     const int width = renderer->settings().width, height = renderer->settings().height;
-    int scale = 1;                    // the renderer's size is 1/scale of the full one
-    double full_launch_seconds = 0.0; // one sample per pixel at full size, measured; 0: not yet
+    int scale = 1;                // the renderer's size is 1/scale of the full one
+    double pixel_seconds = 0.0;   // one sample of one pixel, measured on the last launches; 0: not yet
+    film::ImageRgb first_pass;    // the last first pass, enlarged: shown where the full size has not reached
+    int first_pass_scale_shown = 1;
     uint64_t generation = 0, sequence = 0;
+    std::vector<double> row_seconds(size_t(height), 0.0);  // per pixel and sample, by full-size row, as last measured
+    auto measured = [&](double seconds, int pixels) {
+        if (pixels <= 0) return;
+        const double m = seconds / double(pixels);
+        // The cost differs across the image (the sky is cheap): follow a dearer launch at once.
+        pixel_seconds = pixel_seconds > 0.0 ? std::max(m, 0.5 * (pixel_seconds + m)) : m;
+    };
     while (!stop_.load()) {
         ViewState next;
         uint64_t next_generation = 0;
         {
             std::unique_lock<std::mutex> lock(mutex_);
             // Rendered out: sleep until something changes.
-            if (generation == pending_generation_ && renderer->statistics().samples_per_pixel >= max_samples_)
+            if (generation == pending_generation_ && renderer->samples_per_pixel() >= max_samples_)
                 wake_.wait(lock, [&] { return stop_.load() || generation != pending_generation_; });
             if (stop_.load()) break;
             if (generation != pending_generation_) {
@@ -166,20 +229,42 @@ void RenderWorker::run() {
                 }
             }
             generation = next_generation;
-            const int wanted = first_pass_scale(full_launch_seconds, chunk_seconds_.load(), width, height);
+            first_pass = film::ImageRgb();
+            const int wanted = first_pass_scale(pixel_seconds, kFirstPassShare * chunk_seconds_.load(), width, height);
             if (wanted != scale) {
                 renderer->resize(width / wanted, height / wanted);  // resets
                 scale = wanted;
             }
         }
         try {
-            int left = max_samples_ - renderer->statistics().samples_per_pixel;
-            if (scale > 1) left = std::min(left, std::min(kFirstPassSamples, max_samples_) - renderer->statistics().samples_per_pixel);
-            if (left > 0) {
-                const auto start = std::chrono::steady_clock::now();
-                const int added = renderer->add_samples(left, chunk_seconds_.load());
-                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                if (scale == 1 && added > 0) full_launch_seconds = seconds / double(added);
+            const auto chunk_start = std::chrono::steady_clock::now();
+            auto since = [](std::chrono::steady_clock::time_point t) {
+                return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+            };
+            if (scale > 1) {
+                // One whole sample of the small image (it was sized to take part of a chunk).
+                renderer->set_launch_pixels(0);
+                if (renderer->samples_per_pixel() < std::min(kFirstPassSamples, max_samples_)) {
+                    renderer->add_samples(1);
+                    measured(since(chunk_start), renderer->settings().width * renderer->settings().height);
+                }
+            } else {
+                // Launches of part of the image until the chunk is spent, a newer state waits, or the
+                // first full pass is complete; a newer state waits at most one launch.
+                const int first_spp = renderer->samples_per_pixel();
+                while (renderer->samples_per_pixel() < max_samples_) {
+                    const int before = renderer->pass_pixels();
+                    renderer->set_launch_pixels(launch_pixels(row_seconds, pixel_seconds, kLaunchShare * chunk_seconds_.load(), before, width));
+                    const auto launch_start = std::chrono::steady_clock::now();
+                    renderer->add_samples(max_samples_ - renderer->samples_per_pixel(), 0.0);  // one launch
+                    const int after = renderer->pass_pixels(), end = after > before ? after : width * height;
+                    const double seconds = since(launch_start);
+                    measured(seconds, end - before);
+                    for (int row = before / width; row <= (end - 1) / width; ++row) row_seconds[size_t(row)] = seconds / double(end - before);
+                    if (since(chunk_start) >= chunk_seconds_.load() || (first_spp == 0 && renderer->samples_per_pixel() > 0)) break;
+                    std::lock_guard<std::mutex> lock(mutex_);
+                    if (generation != pending_generation_ || stop_.load()) break;
+                }
             }
         } catch (const std::exception& e) {
             std::lock_guard<std::mutex> lock(mutex_);
@@ -187,13 +272,24 @@ void RenderWorker::run() {
             status_ = "stopped";
             return;
         }
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (generation != pending_generation_) continue;  // not worth showing: apply the newer state first
+        }
         film::ImageRgb image = renderer->image();  // outside the lock: the interface keeps drawing
-        if (scale > 1) image = enlarged(image, width, height);
+        int shown_scale = scale;
+        if (scale > 1) {
+            image = enlarged(image, width, height);
+            first_pass = image;
+            first_pass_scale_shown = scale;
+        } else if (renderer->samples_per_pixel() == 0 && first_pass.valid()) {
+            show_first_pass_beyond(&image, first_pass, renderer->pass_pixels());
+            shown_scale = first_pass_scale_shown;
+        }
         render::RenderStatistics stats = renderer->statistics();
-        const int shown_scale = scale;
         if (scale > 1 && stats.samples_per_pixel >= std::min(kFirstPassSamples, max_samples_)) {
             try {
-                renderer->resize(width, height);  // the full size from the next chunk on
+                renderer->resize(width, height);  // the full size from the next chunk on, on a film of its own
                 scale = 1;
             } catch (const std::exception& e) {
                 std::lock_guard<std::mutex> lock(mutex_);

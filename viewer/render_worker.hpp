@@ -1,11 +1,15 @@
 // The progressive render on its own thread, so that the interface never waits on OpenCL (or on the
 // host renderer's threads). The interface submits ViewStates and takes published frames; both
 // hold the worker's lock only to copy. The worker renders in chunks sized to a time budget (one
-// interface frame), publishes the image after each, and restarts accumulation when a newer state
-// arrives. Where one sample of every pixel takes longer than a chunk, a new state is first rendered
-// at a fraction of the size (a few samples, shown enlarged), then at full size: an edit shows after
-// one small launch instead of a full one. A state the renderer refuses (a bad camera, a failed kernel build) is reported and the
-// last good state is kept.
+// interface frame) and publishes the image after each. So that an edit shows in the next frame:
+// - full-size passes run as launches over part of the image (Renderer::set_launch_pixels) of about
+//   a quarter of a chunk, and a newer state is looked for after each: it waits one such launch;
+// - a new state is first rendered at a reduced size, the smallest integer reduction at which one
+//   sample of every pixel takes half a chunk (measured), published after each of its few samples
+//   and shown enlarged; then the full size starts on a film of its own, and until its first pass is
+//   complete the enlarged first pass shows where that pass has not reached yet.
+// The full-size image never holds a sample of the first pass. A state the renderer refuses (a bad
+// camera, a failed kernel build) is reported and the last good state is kept.
 #pragma once
 
 #include <atomic>
@@ -30,7 +34,8 @@ struct RenderFrame {
     double samples_per_second = 0.0;  // paths (one per pixel and sample) per second of rendering
     uint64_t generation = 0;          // of the ViewState it shows
     uint64_t sequence = 0;            // counts publications
-    int scale = 1;                    // > 1: a first pass rendered at 1/scale of the size, shown enlarged
+    int scale = 1;                    // > 1: a first pass rendered at 1/scale of the size, shown enlarged (alone, or where
+                                      // the first full-size pass has not reached: then samples_per_pixel is 0)
 };
 
 class RenderWorker {

@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "common/input_error.hpp"
+#include "viewer/camera_controller.hpp"
 
 namespace lab::viewer {
 
@@ -25,6 +26,33 @@ ScriptedSet parse_scripted_set(const std::string& text) {
     if (rest.empty()) throw InputError("--set", s.key, "no value");
     s.value = rest;
     return s;
+}
+
+namespace {
+
+// A finite number in [lo, hi], the whole text.
+float number(const std::string& key, const std::string& text, float lo, float hi) {
+    char* end = nullptr;
+    const float v = std::strtof(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(v >= lo && v <= hi))
+        throw InputError("--move", key, "expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got \"" + text + "\"");
+    return v;
+}
+
+}  // namespace
+
+void apply_move(ViewState* state, const std::string& key, const std::string& value) {
+    if (key == "orbit") {
+        const size_t comma = value.find(',');
+        if (comma == std::string::npos) throw InputError("--move", key, "expected DX,DY in pixels, got \"" + value + "\"");
+        orbit(&state->camera, number(key, value.substr(0, comma), -1e4f, 1e4f), number(key, value.substr(comma + 1), -1e4f, 1e4f));
+    } else if (key == "env_rotation") {
+        state->env_rotation_degrees = number(key, value, -360.0f, 360.0f);
+    } else if (key == "env_exposure") {
+        state->env_exposure_stops = number(key, value, -64.0f, 64.0f);
+    } else {
+        throw InputError("--move", key, "unknown key (orbit, env_rotation, env_exposure)");
+    }
 }
 
 }  // namespace lab::viewer

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "viewer/view_state.hpp"
+
 namespace lab::viewer {
 
 struct ScriptedSet {
@@ -14,5 +16,10 @@ struct ScriptedSet {
 
 // "KEY=VALUE@FRAME"; "KEY=VALUE" means frame 0. Throws lab::InputError("--set", ...) when malformed.
 ScriptedSet parse_scripted_set(const std::string& text);
+
+// `--move KEY=VALUE@FRAME`: a camera or environment change as the mouse and the environment panel
+// make it: orbit=DX,DY (a drag on the render, in pixels), env_rotation=DEGREES, env_exposure=STOPS.
+// Throws lab::InputError("--move", KEY, ...) for an unknown key or a bad value.
+void apply_move(ViewState* state, const std::string& key, const std::string& value);
 
 }  // namespace lab::viewer

@@ -416,6 +416,8 @@ cli_bad_input(NAME view.bad_constant_env EXPECT "${E}--env: constant: G is not a
 cli_bad_input(NAME view.set_unknown_key EXPECT "${E}--set: roughnes: unknown key$" ARGS view --frames 2 --set roughnes=0.2@1)
 cli_bad_input(NAME view.set_out_of_range EXPECT "${E}--set: roughness: value 2 is out of range \\[0, 1\\]$" ARGS view --frames 2 --set roughness=2@1)
 cli_bad_input(NAME view.bad_export_target EXPECT "${E}--export-to: expected SCENE\\.json:NAME" ARGS view --export-to nope)
+cli_bad_input(NAME view.move_unknown_key EXPECT "${E}--move: spin: unknown key \\(orbit, env_rotation, env_exposure\\)$" ARGS view --frames 2 --move spin=3@1)
+cli_bad_input(NAME view.move_bad_orbit EXPECT "${E}--move: orbit: expected DX,DY in pixels, got \"3\"$" ARGS view --frames 2 --move orbit=3@1)
 # The window itself, under Xvfb with Mesa's software OpenGL when there is no DISPLAY (skipped, exit
 # 77, when neither is there). The Debian python3: the PNGs are read with its matplotlib.
 find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
