@@ -235,6 +235,10 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     std::fflush(stdout);
     for (const std::string& w : renderer->compiled_scene().warnings) std::fprintf(stderr, "dtoadq: note: %s\n", w.c_str());
 
+    // Held past the render, across the writing: a Ctrl-C while the images are written ends the job as
+    // interrupted once they are complete, and a second one stops at once with its message, instead of
+    // SIGINT's default action (short launches make a Ctrl-C right after the first one land here).
+    render::InterruptScope interrupt_scope;
     render::ProgressiveOutcome outcome = render::render_progressively(*renderer, limits);
     render::RenderStatistics stats = renderer->statistics();
     if (!outcome.failure.empty() && stats.samples_per_pixel == 0) render::fail_after_writing(outcome, 0, "");
@@ -244,7 +248,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     std::printf("wrote %s%s\n", run.output.c_str(), render::is_exr_path(run.output) ? (" and " + render::png_beside(run.output)).c_str() : "");
     if (!outcome.failure.empty()) render::fail_after_writing(outcome, stats.samples_per_pixel, run.output);
     render::print_render_statistics(stats, run.quiet);
-    if (outcome.interrupted) {
+    if (outcome.interrupted || render::interrupt_requested()) {
         std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);
         throw CLI::RuntimeError(render::kInterruptedExitStatus);
     }
