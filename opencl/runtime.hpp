@@ -68,4 +68,11 @@ inline void set_kernel_arg(const KernelHandle& kernel, cl_uint index, const Buff
     check_cl(clSetKernelArg(kernel.get(), index, sizeof(cl_mem), &mem), "clSetKernelArg");
 }
 
+// Sets the kernel's arguments 0, 1, 2, ... to args in order.
+template <typename... Args>
+void set_kernel_args(const KernelHandle& kernel, const Args&... args) {
+    cl_uint index = 0;
+    (set_kernel_arg(kernel, index++, args), ...);
+}
+
 }  // namespace lab::opencl
