@@ -18,32 +18,40 @@
 namespace lab::scene {
 namespace {
 
-std::string vec3_literal(Vec3 v) {
-    return "make_float3(" + float_literal(v.x) + ", " + float_literal(v.y) + ", " + float_literal(v.z) + ")";
-}
+// "x, y, z": a vector as the three arguments of a component form (sdf/, fX_xyz).
+std::string components_literal(Vec3 v) { return float_literal(v.x) + ", " + float_literal(v.y) + ", " + float_literal(v.z); }
+
+std::string vec3_literal(Vec3 v) { return "make_float3(" + components_literal(v) + ")"; }
+
+// The distance functions take the point as three floats ("px, py, pz" for the point named "p"):
+// generated code without float3 arithmetic is what LLVM's loop vectoriser can run across
+// work-items (sdf/primitives/sphere.h). Normals keep float3.
+std::string components(const std::string& p) { return p + "x, " + p + "y, " + p + "z"; }
 
 // A primitive's sdf/ header, its function name stem (fX / nX) and its arguments after p.
 struct PrimitiveCall {
     const char* header;
     const char* stem;
-    std::string arguments;
+    std::string arguments;             // for nX(float3 p, ...)
+    std::string component_arguments;   // for fX_xyz(x, y, z, ...): vectors as three floats
 };
 
 std::optional<PrimitiveCall> primitive_call(const NodeKind& kind) {
     auto f = [](float v) { return float_literal(v); };
-    if (auto* s = std::get_if<Sphere>(&kind)) return PrimitiveCall{"sdf/primitives/sphere.h", "Sphere", f(s->radius)};
+    auto scalars = [](const char* header, const char* stem, const std::string& a) { return PrimitiveCall{header, stem, a, a}; };
+    if (auto* s = std::get_if<Sphere>(&kind)) return scalars("sdf/primitives/sphere.h", "Sphere", f(s->radius));
     if (auto* p = std::get_if<Plane>(&kind))
-        return PrimitiveCall{"sdf/primitives/plane.h", "Plane", vec3_literal(p->normal) + ", " + f(p->offset)};
-    if (auto* b = std::get_if<Box>(&kind)) return PrimitiveCall{"sdf/primitives/box.h", "Box", vec3_literal(b->half_size)};
+        return PrimitiveCall{"sdf/primitives/plane.h", "Plane", vec3_literal(p->normal) + ", " + f(p->offset),
+                             components_literal(p->normal) + ", " + f(p->offset)};
+    if (auto* b = std::get_if<Box>(&kind))
+        return PrimitiveCall{"sdf/primitives/box.h", "Box", vec3_literal(b->half_size), components_literal(b->half_size)};
     if (auto* b = std::get_if<RoundBox>(&kind))
-        return PrimitiveCall{"sdf/primitives/round_box.h", "RoundBox", vec3_literal(b->half_size) + ", " + f(b->radius)};
-    if (auto* t = std::get_if<Torus>(&kind))
-        return PrimitiveCall{"sdf/primitives/torus.h", "Torus", f(t->major_radius) + ", " + f(t->minor_radius)};
-    if (auto* c = std::get_if<Cylinder>(&kind))
-        return PrimitiveCall{"sdf/primitives/cylinder.h", "Cylinder", f(c->radius) + ", " + f(c->half_height)};
-    if (auto* c = std::get_if<Capsule>(&kind))
-        return PrimitiveCall{"sdf/primitives/capsule.h", "Capsule", f(c->radius) + ", " + f(c->half_height)};
-    if (auto* c = std::get_if<Cone>(&kind)) return PrimitiveCall{"sdf/primitives/cone.h", "Cone", f(c->radius) + ", " + f(c->height)};
+        return PrimitiveCall{"sdf/primitives/round_box.h", "RoundBox", vec3_literal(b->half_size) + ", " + f(b->radius),
+                             components_literal(b->half_size) + ", " + f(b->radius)};
+    if (auto* t = std::get_if<Torus>(&kind)) return scalars("sdf/primitives/torus.h", "Torus", f(t->major_radius) + ", " + f(t->minor_radius));
+    if (auto* c = std::get_if<Cylinder>(&kind)) return scalars("sdf/primitives/cylinder.h", "Cylinder", f(c->radius) + ", " + f(c->half_height));
+    if (auto* c = std::get_if<Capsule>(&kind)) return scalars("sdf/primitives/capsule.h", "Capsule", f(c->radius) + ", " + f(c->half_height));
+    if (auto* c = std::get_if<Cone>(&kind)) return scalars("sdf/primitives/cone.h", "Cone", f(c->radius) + ", " + f(c->height));
     return std::nullopt;
 }
 
@@ -76,7 +84,13 @@ public:
     explicit FunctionWriter(std::set<std::string>* headers) : headers_(headers) {}
 
     std::string point(const std::string& expression) { return local("float3", "p", expression); }
-    std::string distance(const std::string& expression) { return local("float", "d", expression); }
+    // A point as three float locals pNx, pNy, pNz (one statement); returns "pN".
+    std::string point_components(const std::string& x, const std::string& y, const std::string& z) {
+        std::string name = "p" + std::to_string(next_++);
+        body_ += "    SDF_FLOAT " + name + "x = " + x + ", " + name + "y = " + y + ", " + name + "z = " + z + ";\n";
+        return name;
+    }
+    std::string distance(const std::string& expression) { return local("SDF_FLOAT", "d", expression); }
     std::string normal(const std::string& expression) { return local("float3", "n", expression); }
     void use(const std::string& header) { headers_->insert(header); }
     const std::string& body() const { return body_; }
@@ -92,31 +106,36 @@ private:
     int next_ = 1;
 };
 
-// R^T p or R n written out as rotation_terms() says, so the host interpreter rounds alike.
-std::string rotation_expression(const glm::mat3& r, const std::string& v, bool inverse) {
-    const char* component[3] = {".x", ".y", ".z"};
-    std::string out = "make_float3(";
-    for (int i = 0; i < 3; ++i) {
-        auto terms = rotation_terms(r, i, inverse);
-        std::string sum;
-        for (const auto& [c, j] : terms) {
-            // a + (-c) x equals a - c x exactly, and 1 x equals x: the same arithmetic, easier to read
-            std::string operand = v + component[j];
-            std::string magnitude = std::fabs(c) == 1.0f ? operand : float_literal(std::fabs(c)) + " * " + operand;
-            if (sum.empty())
-                sum = (c < 0.0f ? "-" : "") + magnitude;
-            else
-                sum += (c < 0.0f ? " - " : " + ") + magnitude;
-        }
-        out += (i ? ", " : "") + (sum.empty() ? std::string("0.0f") : sum);
+// Component i of R^T p or R n written out as rotation_terms() says, so the host interpreter rounds
+// alike; v.x or vx as `component` says.
+std::string rotation_component(const glm::mat3& r, const std::string& v, bool inverse, int i, const char* const component[3]) {
+    std::string sum;
+    for (const auto& [c, j] : rotation_terms(r, i, inverse)) {
+        // a + (-c) x equals a - c x exactly, and 1 x equals x: the same arithmetic, easier to read
+        std::string operand = v + component[j];
+        std::string magnitude = std::fabs(c) == 1.0f ? operand : float_literal(std::fabs(c)) + " * " + operand;
+        if (sum.empty())
+            sum = (c < 0.0f ? "-" : "") + magnitude;
+        else
+            sum += (c < 0.0f ? " - " : " + ") + magnitude;
     }
+    return sum.empty() ? std::string("0.0f") : sum;
+}
+
+const char* const kMemberComponents[3] = {".x", ".y", ".z"};
+const char* const kScalarComponents[3] = {"x", "y", "z"};
+
+std::string rotation_expression(const glm::mat3& r, const std::string& v, bool inverse) {
+    std::string out = "make_float3(";
+    for (int i = 0; i < 3; ++i) out += (i ? ", " : "") + rotation_component(r, v, inverse, i, kMemberComponents);
     return out + ")";
 }
 
+// The distance of `node` at the point whose components are named px, py, pz (p the stem).
 std::string emit_distance(const Node& node, const std::string& p, FunctionWriter* w) {
     if (auto call = primitive_call(node.kind)) {
         w->use(call->header);
-        return w->distance(std::string("f") + call->stem + "(" + p + ", " + call->arguments + ")");
+        return w->distance(std::string("f") + call->stem + "_xyz(" + components(p) + ", " + call->component_arguments + ")");
     }
     if (auto* c = std::get_if<Combine>(&node.kind)) {
         CombinatorCall call = combinator_call(c->op);
@@ -130,27 +149,32 @@ std::string emit_distance(const Node& node, const std::string& p, FunctionWriter
         return d;
     }
     const Node& child = node.children[0];
-    if (auto* t = std::get_if<Translate>(&node.kind)) return emit_distance(child, w->point(p + " - " + vec3_literal(t->offset)), w);
-    if (auto* r = std::get_if<Rotate>(&node.kind)) return emit_distance(child, w->point(rotation_expression(r->rotation, p, true)), w);
+    auto each = [&](auto component) { return w->point_components(component(0), component(1), component(2)); };
+    auto at = [&](int i) { return p + kScalarComponents[i]; };
+    if (auto* t = std::get_if<Translate>(&node.kind))
+        return emit_distance(child, each([&](int i) { return at(i) + " - " + float_literal(t->offset[i]); }), w);
+    if (auto* r = std::get_if<Rotate>(&node.kind))
+        return emit_distance(child, each([&](int i) { return rotation_component(r->rotation, p, true, i, kScalarComponents); }), w);
     if (auto* s = std::get_if<Scale>(&node.kind)) {
-        std::string d = emit_distance(child, w->point(p + " / " + float_literal(s->factor)), w);
+        std::string d = emit_distance(child, each([&](int i) { return at(i) + " / " + float_literal(s->factor); }), w);
         return w->distance(float_literal(s->factor) + " * " + d);
     }
     if (auto* r = std::get_if<Repeat>(&node.kind)) {
         w->use("sdf/domain/mod3.h");
-        return emit_distance(child, w->point("pMod3(" + p + ", " + vec3_literal(r->period) + ")"), w);
+        return emit_distance(child, each([&](int i) { return "pMod1(" + at(i) + ", " + float_literal(r->period[i]) + ")"; }), w);
     }
     if (auto* r = std::get_if<RepeatLimited>(&node.kind)) {
         w->use("sdf/domain/mod_interval3.h");
-        return emit_distance(child,
-                             w->point("pModInterval3(" + p + ", " + vec3_literal(r->period) + ", " + vec3_literal(r->count_min) + ", " +
-                                      vec3_literal(r->count_max) + ")"),
+        return emit_distance(child, each([&](int i) {
+                                 return "pModInterval1(" + at(i) + ", " + float_literal(r->period[i]) + ", " + float_literal(r->count_min[i]) +
+                                        ", " + float_literal(r->count_max[i]) + ")";
+                             }),
                              w);
     }
     if (auto* d = std::get_if<Displace>(&node.kind)) {
         w->use("sdf/combinators/displace_sine.h");
         std::string inner = emit_distance(child, p, w);
-        return w->distance("fOpDisplaceSine(" + inner + ", " + p + ", " + float_literal(d->amplitude) + ", " +
+        return w->distance("fOpDisplaceSine_xyz(" + inner + ", " + components(p) + ", " + float_literal(d->amplitude) + ", " +
                            float_literal(d->frequency) + ")");
     }
     return "0.0f";
@@ -211,7 +235,10 @@ bool worth_bounding(const Object& object, const ShapeAnalysis& a) {
 // result is the one of evaluating everything in file order.
 class NearestWriter {
 public:
-    NearestWriter(const Scene& scene, bool object_bounds, std::set<std::string>* headers) : headers_(headers) {
+    // packet: the body of the packet kernels' scene_distance_xyz (SDF_LANES points at once): the
+    // nearest distance only, a box test skips a group only when it may for every lane, and no guess
+    // (its choice of child differs from lane to lane).
+    NearestWriter(const Scene& scene, bool object_bounds, bool packet, std::set<std::string>* headers) : headers_(headers), packet_(packet) {
         std::vector<ObjectBox> boxes;
         std::vector<ShapeAnalysis> analyses;
         for (const Object& object : scene.objects) analyses.push_back(analyse_shape(object.shape));
@@ -239,6 +266,10 @@ public:
 
     // A surface at distance `expression`, index `index`.
     void candidate(const std::string& expression, int index, const std::string& indent) {
+        if (packet_) {
+            body_ << indent << "d = fmin(d, " << expression << ");\n";
+            return;
+        }
         body_ << indent << "e = " << expression << ";\n"
               << indent << "SCENE_COUNT_EVALUATION;\n"
               << indent << "if (e < d || (e == d && " << index << " < k)) { d = e; k = " << index << "; }\n";
@@ -248,7 +279,7 @@ public:
 
 private:
     void object(int i, const ShapeAnalysis* own_test, const std::string& indent) {
-        std::string call = "scene_object_" + std::to_string(i) + "(p)";
+        std::string call = "scene_object_" + std::to_string(i) + "(px, py, pz)";
         if (!own_test) return candidate(call, i, indent);
         open_test(own_test->box_center, own_test->box_half, indent);
         candidate(call, i, indent + "    ");
@@ -256,7 +287,13 @@ private:
     }
 
     static std::string box_distance(const ObjectTreeNode& n) {
-        return "fBox(p - " + vec3_literal(0.5f * (n.lo + n.hi)) + ", " + vec3_literal(0.5f * (n.hi - n.lo)) + ")";
+        return box_distance(0.5f * (n.lo + n.hi), 0.5f * (n.hi - n.lo));
+    }
+
+    // fBox at p - center, in components.
+    static std::string box_distance(Vec3 center, Vec3 half) {
+        return "fBox_xyz(px - " + float_literal(center.x) + ", py - " + float_literal(center.y) + ", pz - " + float_literal(center.z) + ", " +
+               components_literal(half) + ")";
     }
 
     // The tree in two passes, both straight-line code with literal boxes (a loop over a stack and a
@@ -267,7 +304,7 @@ private:
     void traversal(const std::vector<ObjectTreeNode>& tree) {
         // The guess's box tests pay on a large tree only: 1.95x paths/s on the 64-object grid, 0.92x
         // on the primitives scene (a tree of a few objects, 1.27 evaluations per step without it).
-        if (tree.size() < 2 * kGuessMinObjects - 1) return node(tree, 0, "    ");
+        if (packet_ || tree.size() < 2 * kGuessMinObjects - 1) return node(tree, 0, "    ");
         guessed_ = true;
         open_test(0.5f * (tree[0].lo + tree[0].hi), 0.5f * (tree[0].hi - tree[0].lo), "    ");
         body_ << "        int g;\n        float b_left, b_right; /* the guess */\n";
@@ -282,7 +319,7 @@ private:
         const ObjectTreeNode& n = tree[size_t(k)];
         if (n.object >= 0) {
             body_ << indent << "g = " << n.object << ";\n";
-            return candidate("scene_object_" + std::to_string(n.object) + "(p)", n.object, indent);
+            return candidate("scene_object_" + std::to_string(n.object) + "(px, py, pz)", n.object, indent);
         }
         body_ << indent << "b_left = " << box_distance(tree[size_t(n.left)]) << ";\n"
               << indent << "b_right = " << box_distance(tree[size_t(n.right)]) << ";\n"
@@ -316,8 +353,8 @@ private:
         for (int i = 0; i < 3; ++i)
             if (!std::isfinite(half[i])) half[i] = 3.0e38f;
         headers_->insert("sdf/primitives/box.h");
-        body_ << indent << "b = fBox(p - " << vec3_literal(center) << ", " << vec3_literal(half) << ");\n"
-              << indent << "if (!(b > 0.0f && b > d)) {\n";
+        body_ << indent << "b = " << box_distance(center, half) << ";\n"
+              << indent << (packet_ ? "if (SDF_ANY(!(b > 0.0f && b > d))) {\n" : "if (!(b > 0.0f && b > d)) {\n");
         ++box_tests_;
     }
 
@@ -326,6 +363,7 @@ private:
     std::map<int, std::optional<ShapeAnalysis>> own_test_;
     int box_tests_ = 0;
     bool guessed_ = false;
+    bool packet_;
 };
 
 std::string list_names(const std::vector<std::string>& names) {
@@ -345,22 +383,25 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
         std::string d = emit_distance(object.shape, "p", &w);
         std::string name = "scene_object_" + std::to_string(index);
         functions << "/* object \"" << object.name << "\" (" << object.shape.path << "), material slot " << object.material << " */\n"
-                  << "SS_FN float " << name << "(float3 p) {\n" << w.body() << "    return " << d << ";\n}\n\n";
+                  << "SS_FN SDF_FLOAT " << name << "(SDF_FLOAT px, SDF_FLOAT py, SDF_FLOAT pz) {\n" << w.body() << "    return " << d << ";\n}\n\n";
         if (has_analytic_normal(object.shape)) {
             FunctionWriter wn(&headers);
             std::string n = emit_normal(object.shape, "p", &wn);
-            functions << "SS_FN float3 " << name << "_normal(float3 p) {\n" << wn.body() << "    return " << n << ";\n}\n\n";
+            normals << "SS_FN float3 " << name << "_normal(float3 p) {\n" << wn.body() << "    return " << n << ";\n}\n\n";
             normal_cases << "    case " << index << ": *n = " << name << "_normal(p); return 1;\n";
         }
         slot_cases << "    case " << index << ": return " << object.material << ";\n";
         ++index;
     }
-    NearestWriter nearest(scene, object_bounds, &headers);
+    NearestWriter nearest(scene, object_bounds, false, &headers), packet(scene, object_bounds, true, &headers);
     for (size_t i = 0; i < scene.emitters.size(); ++i) {
         const EmitterSphere& e = scene.emitters[i];
         headers.insert("sdf/primitives/sphere.h");
         std::string local = "p - " + vec3_literal(e.center);
-        nearest.candidate("fSphere(" + local + ", " + float_literal(e.radius) + ")", int(index), "    ");
+        std::string distance = "fSphere_xyz(px - " + float_literal(e.center.x) + ", py - " + float_literal(e.center.y) + ", pz - " +
+                               float_literal(e.center.z) + ", " + float_literal(e.radius) + ")";
+        nearest.candidate(distance, int(index), "    ");
+        packet.candidate(distance, int(index), "    ");
         slot_cases << "    case " << index << ": return " << e.material << ";\n";
         normal_cases << "    case " << index << ": *n = nSphere(" << local << ", " << float_literal(e.radius) << "); return 1;\n";
         ++index;
@@ -380,22 +421,32 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
         << "#include \"single_source/vocabulary.h\"\n";
     for (const std::string& h : headers) out << "#include \"" << h << "\"\n";
     out << "\n" << functions.str();
+    out << "#ifdef SDF_LANES\n"
+        << "/* The field at SDF_LANES points at once (a packet kernel, kernels/camera_march.cl): the nearest\n"
+        << " * distance only; a box test skips a group only when it may for every lane. */\n"
+        << "SS_FN SDF_FLOAT scene_distance_xyz(SDF_FLOAT px, SDF_FLOAT py, SDF_FLOAT pz) {\n    SDF_FLOAT d = INFINITY;\n";
+    if (packet.box_tests()) out << "    SDF_FLOAT b; /* a box test */\n";
+    out << packet.body() << "    return d;\n}\n\n#else /* one point at a time */\n\n" << normals.str();
     // A measurement build (-DSCENE_COUNT_EVALUATIONS, `dtoadq bench breakdown`) counts the distance
     // functions evaluated; the default build has no counter at all.
     out << "/* The nearest object or emitter (index: objects, then emitters) and its distance. */\n"
         << "#ifdef SCENE_COUNT_EVALUATIONS\n#define SCENE_COUNT_EVALUATION (*evaluations += 1u)\n"
-        << "SS_FN float scene_nearest_counted(float3 p, int* nearest, uint* evaluations) {\n"
+        << "SS_FN float scene_nearest_counted_xyz(float px, float py, float pz, int* nearest, uint* evaluations) {\n"
         << "#else\n#define SCENE_COUNT_EVALUATION ((void)0)\n"
-        << "SS_FN float scene_nearest(float3 p, int* nearest) {\n#endif\n    int k = 0;\n    float d = INFINITY, e;\n";
+        << "SS_FN float scene_nearest_xyz(float px, float py, float pz, int* nearest) {\n#endif\n    int k = 0;\n    float d = INFINITY, e;\n";
     if (nearest.box_tests()) out << "    float b; /* a box test */\n";
     out << nearest.body() << "    *nearest = k;\n    return d;\n}\n\n"
         << "#ifdef SCENE_COUNT_EVALUATIONS\n"
-        << "SS_FN float scene_nearest(float3 p, int* nearest) {\n    uint n = 0u;\n    return scene_nearest_counted(p, nearest, &n);\n}\n\n"
+        << "SS_FN float scene_nearest_xyz(float px, float py, float pz, int* nearest) {\n    uint n = 0u;\n"
+        << "    return scene_nearest_counted_xyz(px, py, pz, nearest, &n);\n}\n\n"
         << "SS_FN float scene_distance_counted(float3 p, uint* evaluations) {\n    int k;\n"
-        << "    return scene_nearest_counted(p, &k, evaluations);\n}\n#endif\n\n"
+        << "    return scene_nearest_counted_xyz(p.x, p.y, p.z, &k, evaluations);\n}\n#endif\n\n"
+        << "SS_FN float scene_nearest(float3 p, int* nearest) { return scene_nearest_xyz(p.x, p.y, p.z, nearest); }\n\n"
         << "SS_FN int scene_material_slot(int nearest) {\n    switch (nearest) {\n"
         << slot_cases.str() << "    default: return 0;\n    }\n}\n\n"
-        << "SS_FN float scene_distance(float3 p) {\n    int k;\n    return scene_nearest(p, &k);\n}\n\n"
+        << "/* The field at a point given as three floats: what a vectorised march calls. */\n"
+        << "SS_FN float scene_distance_xyz(float px, float py, float pz) {\n    int k;\n    return scene_nearest_xyz(px, py, pz, &k);\n}\n\n"
+        << "SS_FN float scene_distance(float3 p) { return scene_distance_xyz(p.x, p.y, p.z); }\n\n"
         << "/* The distance and the material slot of the nearest object. */\n"
         << "SS_FN float scene_distance_material(float3 p, int* material) {\n    int k;\n"
         << "    float d = scene_nearest(p, &k);\n    *material = scene_material_slot(k);\n    return d;\n}\n\n"
@@ -403,7 +454,7 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
         << " * uniform scales; 0 (no normal) elsewhere. */\n"
         << "SS_FN int scene_analytic_normal(float3 p, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
         << "    switch (k) {\n" << normal_cases.str() << "    default: return 0;\n    }\n}\n\n"
-        << "#endif\n";
+        << "#endif /* SDF_LANES */\n\n#endif\n";
     return out.str();
 }
 

@@ -73,6 +73,9 @@ inline float mix(float x, float y, float a) { return x + (y - x) * a; }
 inline float3 mix(float3 x, float3 y, float a) { return x + (y - x) * a; }
 inline float4 mix(float4 x, float4 y, float a) { return x + (y - x) * a; }
 inline bool isfinite_f(float x) { return std::isfinite(x); }
+// OpenCL's select(a, b, c): c ? b : a for scalars.
+inline float select(float a, float b, int c) { return c ? b : a; }
+inline int select(int a, int b, int c) { return c ? b : a; }
 
 
 #include "single_source/vocabulary.h"

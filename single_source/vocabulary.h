@@ -21,6 +21,23 @@
 #define CONSTANT_MEM
 #endif
 
+/* The distance functions' component forms (sdf/, fX_xyz) compute in SDF_FLOAT: one float, or with
+ * SDF_LANES = 8 (a packet kernel, kernels/camera_march.cl) a float8 of eight rays at once, so that
+ * the march runs on the CPU's vector lanes whatever PoCL's work-item vectoriser makes of the code.
+ * A condition on such values is an SDF_MASK (int 0 / non-0, or int8 0 / -1 per lane), used through
+ * select() and SDF_ANY(). Written once, these functions read the same for both. */
+#ifndef SDF_LANES
+#define SDF_FLOAT float
+#define SDF_MASK int
+#define SDF_ANY(mask) ((mask) != 0)
+#elif SDF_LANES == 8
+#define SDF_FLOAT float8
+#define SDF_MASK int8
+#define SDF_ANY(mask) any(mask)
+#else
+#error "SDF_LANES: 8 or undefined"
+#endif
+
 #define SS_PI 3.14159265358979323846f
 #define SS_INV_PI 0.31830988618379067154f
 #define SS_INV_4PI 0.07957747154594766788f

@@ -51,7 +51,7 @@ TEST_CASE("scene compiler: a sphere-only scene's kernel holds no other sdf code"
     CompiledScene c = lab::scene::compile_scene(lab::scene::parse_scene(kSphereOnly, "sphere.json"));
     lab::opencl::AssembledSource source = lab::scene::assemble_scene_kernel("kernels/scene_probe.cl", c);
     CHECK(origin_files(source) == std::set<std::string>{"kernels/scene_probe.cl", "scene/generated.h", "single_source/vocabulary.h", "sdf/primitives/sphere.h"});
-    CHECK(source.text.find("fSphere(p, 1.0f)") != std::string::npos);
+    CHECK(source.text.find("fSphere_xyz(px, py, pz, 1.0f)") != std::string::npos);
     for (const char* absent : {"fTorus", "fBox", "fRoundBox", "fCylinder", "fCapsule", "fCone", "fPlane", "pMod3", "pModInterval3", "fOpUnion",
                                "fOpIntersection", "fOpSubtraction", "fOpDisplaceSine", "lipschitz_"}) {
         INFO(absent);

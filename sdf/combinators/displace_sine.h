@@ -15,8 +15,13 @@
  * So |grad g| <= |A w|, reached (e.g. at wx = wz = pi/2, y = 0, where grad g = (0, A w, 0)), and the
  * bound is L_d + |A w| (lipschitz_displace_sine) -- tight when grad d lines up with grad g there,
  * as for a plane y = const. The component-wise estimate L_d + |A w| sqrt 3 is also safe but loose. */
-SS_FN float fOpDisplaceSine(float d, float3 p, float amplitude, float frequency) {
-    return d + amplitude * sin(frequency * p.x) * sin(frequency * p.y) * sin(frequency * p.z);
+SS_FN SDF_FLOAT fOpDisplaceSine_xyz(SDF_FLOAT d, SDF_FLOAT x, SDF_FLOAT y, SDF_FLOAT z, float amplitude, float frequency) {
+    return d + amplitude * sin(frequency * x) * sin(frequency * y) * sin(frequency * z);
 }
+#ifndef SDF_LANES /* scalar code only */
+SS_FN float fOpDisplaceSine(float d, float3 p, float amplitude, float frequency) {
+    return fOpDisplaceSine_xyz(d, p.x, p.y, p.z, amplitude, frequency);
+}
+#endif
 
 #endif

@@ -7,6 +7,6 @@
 
 /* -fOpUnionChamfer(-a, -b, r) = max(a, b, (a + b + r) / sqrt 2). Lipschitz bound
  * max(La, Lb, (La + Lb) / sqrt 2) (lipschitz_chamfer). */
-SS_FN float fOpIntersectionChamfer(float a, float b, float r) { return -fOpUnionChamfer(-a, -b, r); }
+SS_FN SDF_FLOAT fOpIntersectionChamfer(SDF_FLOAT a, SDF_FLOAT b, float r) { return -fOpUnionChamfer(-a, -b, r); }
 
 #endif

@@ -8,6 +8,6 @@
 /* The complement of the round union of the complements: -fOpUnionRound(-a, -b, r), which is
  * min(-r, max(a, b)) + |(max(r + a, 0), max(r + b, 0))|. Lipschitz bound sqrt(La^2 + Lb^2)
  * (lipschitz_round), reached far outside both solids with parallel gradients. */
-SS_FN float fOpIntersectionRound(float a, float b, float r) { return -fOpUnionRound(-a, -b, r); }
+SS_FN SDF_FLOAT fOpIntersectionRound(SDF_FLOAT a, SDF_FLOAT b, float r) { return -fOpUnionRound(-a, -b, r); }
 
 #endif

@@ -7,6 +7,6 @@
 
 /* a intersected with the complement of b: max(a, -b). A bound. Lipschitz bound max(La, Lb)
  * (lipschitz_union): negation keeps a bound. */
-SS_FN float fOpSubtraction(float a, float b) { return fOpIntersection(a, -b); }
+SS_FN SDF_FLOAT fOpSubtraction(SDF_FLOAT a, SDF_FLOAT b) { return fOpIntersection(a, -b); }
 
 #endif

@@ -7,6 +7,6 @@
 
 /* fOpIntersectionChamfer(a, -b, r). Lipschitz bound max(La, Lb, (La + Lb) / sqrt 2)
  * (lipschitz_chamfer). */
-SS_FN float fOpSubtractionChamfer(float a, float b, float r) { return fOpIntersectionChamfer(a, -b, r); }
+SS_FN SDF_FLOAT fOpSubtractionChamfer(SDF_FLOAT a, SDF_FLOAT b, float r) { return fOpIntersectionChamfer(a, -b, r); }
 
 #endif

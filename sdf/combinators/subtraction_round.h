@@ -6,6 +6,6 @@
 #include "sdf/combinators/intersection_round.h"
 
 /* fOpIntersectionRound(a, -b, r). Lipschitz bound sqrt(La^2 + Lb^2) (lipschitz_round). */
-SS_FN float fOpSubtractionRound(float a, float b, float r) { return fOpIntersectionRound(a, -b, r); }
+SS_FN SDF_FLOAT fOpSubtractionRound(SDF_FLOAT a, SDF_FLOAT b, float r) { return fOpIntersectionRound(a, -b, r); }
 
 #endif

@@ -12,7 +12,7 @@
  * sqrt 2 for exact operands. It is reached: with parallel gradients (a = x, b = x + c) the chamfer
  * term is the minimum for all x < (r - c) / (2 - sqrt 2), and its slope there is 2 / sqrt 2 = sqrt 2.
  * Only for perpendicular surfaces is it 1 (|grad a + grad b| = sqrt 2). */
-SS_FN float fOpUnionChamfer(float a, float b, float r) {
+SS_FN SDF_FLOAT fOpUnionChamfer(SDF_FLOAT a, SDF_FLOAT b, float r) {
     return fmin(fmin(a, b), (a + b - r) * 0.70710678118654752f);
 }
 

@@ -16,9 +16,9 @@
  * |grad f| -> sqrt 2. With exact operands whose gradients make an angle theta it is
  * sqrt(1 + cos theta * 2 (r - a)(r - b) / |u|^2) <= sqrt(1 + max(cos theta, 0)): 1 for
  * perpendicular surfaces (r <= 0 gives max(0, min(a, b)) - |max(-a, -b, 0)|, still this bound). */
-SS_FN float fOpUnionRound(float a, float b, float r) {
-    float2 u = fmax(make_float2(r - a, r - b), make_float2(0.0f, 0.0f));
-    return fmax(r, fmin(a, b)) - length(u);
+SS_FN SDF_FLOAT fOpUnionRound(SDF_FLOAT a, SDF_FLOAT b, float r) {
+    SDF_FLOAT ua = fmax(r - a, 0.0f), ub = fmax(r - b, 0.0f);
+    return fmax(r, fmin(a, b)) - sqrt(ua * ua + ub * ub);
 }
 
 #endif

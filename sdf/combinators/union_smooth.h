@@ -14,9 +14,9 @@
  * because (a - b) = k (1 - 2h): the bracket vanishes. Hence grad f = h grad a + (1 - h) grad b, a
  * CONVEX COMBINATION of the operands' gradients, and |grad f| <= h La + (1 - h) Lb <= max(La, Lb)
  * (lipschitz_union). Outside the band f is a or b. */
-SS_FN float fOpUnionSmooth(float a, float b, float k) {
+SS_FN SDF_FLOAT fOpUnionSmooth(SDF_FLOAT a, SDF_FLOAT b, float k) {
     if (!(k > 0.0f)) return fmin(a, b);
-    float h = clamp(0.5f + 0.5f * (b - a) / k, 0.0f, 1.0f);
+    SDF_FLOAT h = clamp(0.5f + 0.5f * (b - a) / k, 0.0f, 1.0f);
     return mix(b, a, h) - k * h * (1.0f - h);
 }
 

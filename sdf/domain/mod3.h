@@ -6,10 +6,10 @@
 
 /* The cell of a coordinate: cells are [period (k - 1/2), period (k + 1/2)), centred on period k.
  * floor(x / period + 1/2) rather than round(), whose halfway case differs between libraries. */
-SS_FN float mod_cell(float x, float period) { return floor(x / period + 0.5f); }
+SS_FN SDF_FLOAT mod_cell(SDF_FLOAT x, float period) { return floor(x / period + 0.5f); }
 
 /* x relative to the centre of its cell; period <= 0 means no repetition along this axis. */
-SS_FN float pMod1(float x, float period) {
+SS_FN SDF_FLOAT pMod1(SDF_FLOAT x, float period) {
     if (!(period > 0.0f)) return x;
     return x - period * mod_cell(x, period);
 }
@@ -28,8 +28,10 @@ SS_FN float pMod1(float x, float period) {
  * in the neighbouring cell; either way the field jumps at the faces and a ray can step over a copy.
  * (The scene compiler should reject, or at least report, a repeated object whose bounds leave its
  * cell or that is not centred in it.) */
+#ifndef SDF_LANES /* scalar code only */
 SS_FN float3 pMod3(float3 p, float3 period) {
     return make_float3(pMod1(p.x, period.x), pMod1(p.y, period.y), pMod1(p.z, period.z));
 }
+#endif
 
 #endif

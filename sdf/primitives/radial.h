@@ -6,7 +6,11 @@
 #include "single_source/vocabulary.h"
 
 /* Distance from the y axis. */
-SS_FN float radius_y(float3 p) { return length(make_float2(p.x, p.z)); }
+SS_FN SDF_FLOAT radius_y_xz(SDF_FLOAT x, SDF_FLOAT z) { return sqrt(x * x + z * z); }
+
+
+#ifndef SDF_LANES /* the float3 forms and the normals: scalar code only */
+SS_FN float radius_y(float3 p) { return radius_y_xz(p.x, p.z); }
 
 /* Unit direction from the y axis towards p, in the xz plane; +x on the axis itself, where every
  * direction is as good. */
@@ -20,5 +24,6 @@ SS_FN float3 radial_direction_y(float3 p) {
 SS_FN float3 meridian_to_world(float3 p, float d_rho, float d_y) {
     return radial_direction_y(p) * d_rho + make_float3(0.0f, d_y, 0.0f);
 }
+#endif
 
 #endif
