@@ -27,6 +27,7 @@
 #define KERNELS_CAMERA_H
 #include "single_source/vocabulary.h"
 #include "brdf/warp.h"
+#include "kernels/rng.h"
 
 typedef struct Camera {
     float position[3];
@@ -82,6 +83,15 @@ SS_FN void camera_generate_ray(const Camera* c, float x, float y, float2 u_lens,
     float3 focus = float3_from_array(c->position) + film * c->focus_distance;
     *origin = camera_lens_point(c, u_lens);
     *direction = normalize(focus - *origin);
+}
+
+/* The camera ray of one sample of pixel k ((k % width, k / width), row 0 at the top) from its random
+ * stream's next four numbers: xy jitter the point within the pixel (a box filter), zw pick the lens
+ * point. The path tracer and the camera-march packet kernel (kernels/camera_march.cl) draw it alike. */
+SS_FN void camera_pixel_ray(const Camera* c, int pixel, Rng* rng, float3* origin, float3* direction) {
+    float x = (float)(pixel % c->width), y = (float)(pixel / c->width);
+    float4 u = rng_next4(rng);
+    camera_generate_ray(c, x + u.x, y + u.y, make_float2(u.z, u.w), origin, direction);
 }
 
 /* Where a ray from lens point `origin` along unit `direction` lands on the raster: through the

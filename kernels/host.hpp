@@ -25,6 +25,7 @@ using namespace ::ibl;
 #include "kernels/lights/environment_light.h"
 #include "kernels/lights/light_selection.h"
 #include "kernels/render_settings.h"
+#include "kernels/camera_march.h"
 #include "kernels/render_scene.h"
 #include "kernels/film.h"
 
@@ -38,4 +39,5 @@ inline void float3_to_array(float3 v, float out[3]) {
 
 static_assert(sizeof(kernel::Camera) == 64, "Camera must match its OpenCL layout: 16 four-byte words");
 static_assert(sizeof(kernel::Light) == 48, "Light must match its OpenCL layout: 12 four-byte words");
-static_assert(sizeof(kernel::RenderKernelSettings) == 96, "RenderKernelSettings must match its OpenCL layout: 24 four-byte words");
+static_assert(sizeof(kernel::CameraMarch) == 12, "CameraMarch must match its OpenCL layout: 3 four-byte words");
+static_assert(sizeof(kernel::RenderKernelSettings) == 100, "RenderKernelSettings must match its OpenCL layout: 25 four-byte words");

@@ -9,7 +9,9 @@
 #include "single_source/vocabulary.h"
 #include "brdf/frame.h"
 #include "kernels/render_settings.h"
+#include "kernels/camera_march.h"
 #include "sdf/march.h"
+#include "sdf/march_lanes.h"
 #include "sdf/normals.h"
 
 /* Per-pixel counters the host reads for its statistics. */
@@ -18,17 +20,8 @@ typedef struct PathCounters {
     uint lost_rays; /* marches that ran out of steps (treated as escaping, or as shadowed) */
 } PathCounters;
 
-/* sdf/march.h's settings with what the render settings change; the epsilons stay the defaults. */
-SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
-    MarchSettings s = march_settings_default(k->lipschitz);
-    s.max_steps = k->max_steps;
-    s.max_distance = k->max_distance;
-    s.over_relaxation = k->over_relaxation;
-    return s;
-}
-
-SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings s, PathCounters* counters) {
-    MarchResult r = march(origin, direction, 0.0f, s);
+/* A march in the per-pixel counters. */
+SS_FN void count_march(MarchResult r, PathCounters* counters) {
 #ifdef SCENE_COUNT_EVALUATIONS
     /* a measurement build (`dtoadq bench breakdown`): the counters hold march steps and distance
      * evaluations instead; the paths are the same as the default build's */
@@ -38,6 +31,39 @@ SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings s, Pa
     counters->rays += 1u;
     if (r.status == MARCH_OUT_OF_STEPS) counters->lost_rays += 1u;
 #endif
+}
+
+SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings s, PathCounters* counters) {
+    MarchResult r = march(origin, direction, 0.0f, s);
+    count_march(r, counters);
+    return r;
+}
+
+/* A camera ray's march: plain sphere tracing (sdf/march_lanes.h). On a device the packet kernel
+ * kernels/camera_march.cl marches eight camera rays at a time before the path tracer runs and hands
+ * the results over in `marches` (k->camera_marches); otherwise (the host, a measurement build) the
+ * ray is marched here, as one lane, to the same bits. */
+SS_FN MarchResult trace_camera_ray(const RenderKernelSettings* k, MarchSettings s, float3 origin, float3 direction,
+                                   GLOBAL_MEM const CameraMarch* marches, int pixel, PathCounters* counters) {
+    MarchResult r;
+    if (k->camera_marches) {
+        r.t = marches[pixel].t;
+        r.status = marches[pixel].status;
+        r.steps = marches[pixel].steps;
+#ifdef SCENE_COUNT_EVALUATIONS
+        r.evaluations = 0u; /* counted by a measurement build, which marches here */
+#endif
+    } else {
+        uint evaluations = 0u;
+        MarchLanes m = march_lanes(origin.x, origin.y, origin.z, direction.x, direction.y, direction.z, s, &evaluations);
+        r.t = m.t;
+        r.status = m.status;
+        r.steps = m.steps;
+#ifdef SCENE_COUNT_EVALUATIONS
+        r.evaluations = evaluations;
+#endif
+    }
+    count_march(r, counters);
     return r;
 }
 

@@ -58,8 +58,9 @@ SS_FN float3 estimate_direct(const RenderKernelSettings* k, MarchSettings s, con
     return f * ls.radiance * (fabs(wl.z) * weight / light_density);
 }
 
-/* Radiance arriving at `origin` from `direction`, estimated by one path. */
-SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene, float3 origin, float3 direction, Rng* rng,
+/* Radiance arriving at `origin` from `direction`, estimated by one path whose first ray's march is
+ * `first` (trace_camera_ray). */
+SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene, float3 origin, float3 direction, MarchResult first, Rng* rng,
                         PathCounters* counters) {
     MarchSettings s = render_march_settings(k);
     bool has_environment = k->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
@@ -71,7 +72,7 @@ SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene,
     bool seen_directly = true;  /* the camera ray, or only delta events since */
     bool inside = scene_distance(origin) < 0.0f;
     for (int depth = 0;; ++depth) {
-        MarchResult march_result = trace_ray(origin, direction, s, counters);
+        MarchResult march_result = depth == 0 ? first : trace_ray(origin, direction, s, counters);
         if (march_result.status != MARCH_HIT) {
             if (has_environment && (k->show_background || !seen_directly)) {
                 float weight = light_hit_weight(k, scene, 0, previous_p, direction, previous_pdf, previous_delta);
@@ -125,20 +126,22 @@ SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene,
 }
 
 /* Adds settings.sample_count samples to one pixel; pixel k is (k % width, k / width), row 0 at the
- * top. The samples of a pixel are summed in sample order by the one work-item that owns it. */
+ * top. The samples of a pixel are summed in sample order by the one work-item that owns it.
+ * camera_marches: the camera rays' marches of a one-sample launch (k->camera_marches), or unused. */
 SS_FN void path_tracer_pixel(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel,
-                             GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts) {
-    float x = (float)(pixel % camera->width), y = (float)(pixel / camera->width);
+                             GLOBAL_MEM const CameraMarch* camera_marches, GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts,
+                             GLOBAL_MEM uint* lost_ray_counts) {
+    MarchSettings s = render_march_settings(k);
     float4 sum = accumulation[pixel];
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
     for (int i = 0; i < k->sample_count; ++i) {
         Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
-        float4 u_pixel = rng_next4(&rng); /* xy: box-filter jitter within the pixel; zw: the lens */
         float3 origin, direction;
-        camera_generate_ray(camera, x + u_pixel.x, y + u_pixel.y, make_float2(u_pixel.z, u_pixel.w), &origin, &direction);
-        float3 l = trace_path(k, scene, origin, direction, &rng, &counters);
+        camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
+        MarchResult first = trace_camera_ray(k, s, origin, direction, camera_marches, pixel, &counters);
+        float3 l = trace_path(k, scene, origin, direction, first, &rng, &counters);
         if (finite3(l)) sum += make_float4(l.x, l.y, l.z, 0.0f);
         else sum.w += 1.0f;
     }

@@ -4,6 +4,7 @@
 #ifndef KERNELS_RENDER_SETTINGS_H
 #define KERNELS_RENDER_SETTINGS_H
 #include "single_source/vocabulary.h"
+#include "sdf/march_settings.h"
 
 /* How a path finds the lights (the environment, emissive spheres, point lights):
  *   BSDF:   only where a BSDF-sampled ray happens to reach one (point lights are then never found);
@@ -40,6 +41,7 @@ typedef struct RenderKernelSettings {
     float max_distance, over_relaxation, lipschitz;
     int light_count;      /* entries of the light array; the environment, when there is one, is entry 0 */
     int show_background;  /* 0: camera rays (and mirror paths) that escape see black, lighting unchanged */
+    int camera_marches;   /* path tracer: 1 when the camera rays' marches come in a buffer (kernels/camera_march.cl) */
     /* bidirectional kernels only */
     int max_vertices;     /* s + t at most: a path of max_vertices - 2 scattering events */
     int strategies;       /* STRATEGY_* mask */
@@ -50,5 +52,14 @@ typedef struct RenderKernelSettings {
     float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
     float scene_radius;
 } RenderKernelSettings;
+
+/* sdf/march.h's settings with what the render settings change; the epsilons stay the defaults. */
+SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
+    MarchSettings s = march_settings_default(k->lipschitz);
+    s.max_steps = k->max_steps;
+    s.max_distance = k->max_distance;
+    s.over_relaxation = k->over_relaxation;
+    return s;
+}
 
 #endif

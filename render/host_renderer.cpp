@@ -60,7 +60,7 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange rang
                 if (bidirectional)
                     host_integrator::bdpt_pixel(&k, &camera_, &scene, pixel, accumulation, splat, rays_.data(), lost_.data());
                 else
-                    host_integrator::path_tracer_pixel(&k, &camera_, &scene, pixel, accumulation, rays_.data(), lost_.data());
+                    host_integrator::path_tracer_pixel(&k, &camera_, &scene, pixel, nullptr, accumulation, rays_.data(), lost_.data());
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < threads_; ++t) pool.emplace_back(work);

@@ -32,6 +32,8 @@ OpenClRenderer::OpenClRenderer(const opencl::Runtime& runtime, RenderInput input
     initialize();
 }
 
+bool OpenClRenderer::camera_packets() const { return input_.settings.integrator == Integrator::pt && input_.settings.camera_packets; }
+
 std::string OpenClRenderer::device_description() const { return runtime_.device().description(); }
 
 void OpenClRenderer::build_kernel() {
@@ -51,6 +53,10 @@ void OpenClRenderer::build_kernel() {
     while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     program_.emplace(std::move(program));
     kernel_ = std::move(kernel);
+    if (camera_packets()) {
+        camera_program_.emplace(runtime_.build(scene::assemble_scene_kernel("kernels/camera_march.cl", compiled_), options + " -DSDF_LANES=8"));
+        camera_kernel_ = camera_program_->kernel("camera_march");
+    }
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -88,6 +94,11 @@ void OpenClRenderer::clear_film() {
         lost_ = runtime_.buffer(pixels * sizeof(cl_uint), CL_MEM_READ_WRITE);
         film_pixels_ = pixels;
     }
+    size_t marches = camera_packets() ? pixels : 1;
+    if (marches != camera_march_pixels_) {
+        camera_marches_ = runtime_.buffer(marches * sizeof(kernel::CameraMarch), CL_MEM_READ_WRITE);
+        camera_march_pixels_ = marches;
+    }
     std::vector<float> zeros(pixels * 4, 0.0f);  // 0.0f and 0u share their bits
     runtime_.write(accumulation_, zeros.data(), pixels * 4 * sizeof(float));
     runtime_.write(splat_, zeros.data(), pixels * 3 * sizeof(cl_uint));
@@ -95,23 +106,41 @@ void OpenClRenderer::clear_film() {
     runtime_.write(lost_, zeros.data(), pixels * sizeof(cl_uint));
 }
 
-void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pixels) {
-    cl_uint a = 0;
-    opencl::set_kernel_arg(kernel_, a++, k);
-    opencl::set_kernel_arg(kernel_, a++, camera_);
-    opencl::set_kernel_arg(kernel_, a++, bound_environment().map());
-    for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &measured_, &emission_buffer_, &lights_buffer_, &light_cdf_,
-                                          &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
-        opencl::set_kernel_arg(kernel_, a++, *b);
-    // The range starts at a multiple of kLaunchGranularity and spans whole granules unless it ends the
-    // image, where the kernels stop at width * height. A work-group size set above the granularity
-    // (bench breakdown's study) would round a partial range up into pixels of the next launch: such
-    // a launch takes the largest halving of it that fits the range.
+// Work-items range.first .. range.first + range.count - 1 of `kernel`, of `total` for the image. The
+// range starts at a multiple of its granularity and spans whole granules unless it ends the image,
+// where the kernels stop by themselves. A work-group size set above the granularity (bench breakdown's study) would round a
+// partial range up into work-items of the next launch: such a launch takes the largest halving of
+// it that fits the range.
+void OpenClRenderer::launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const {
+    const bool ends_image = size_t(range.first) + size_t(range.count) >= total;
+    while (local > 1 && (size_t(range.first) % local != 0 || (!ends_image && size_t(range.count) % local != 0))) local /= 2;
+    runtime_.launch_1d(kernel, size_t(range.count), local, size_t(range.first));
+}
+
+void OpenClRenderer::launch(const kernel::RenderKernelSettings& settings, PixelRange pixels) {
+    kernel::RenderKernelSettings k = settings;
+    k.camera_marches = camera_packets() ? 1 : 0;
+    // With camera packets, one sample per launch: the marches buffer holds one sample's rays.
+    const int samples = k.camera_marches ? settings.sample_count : 1;
     const size_t image = size_t(input_.settings.width) * size_t(input_.settings.height);
-    const bool ends_image = size_t(pixels.first) + size_t(pixels.count) >= image;
-    size_t local = local_size_;
-    while (local > 1 && (size_t(pixels.first) % local != 0 || (!ends_image && size_t(pixels.count) % local != 0))) local /= 2;
-    runtime_.launch_1d(kernel_, size_t(pixels.count), local, size_t(pixels.first));
+    if (k.camera_marches) k.sample_count = 1;
+    for (int i = 0; i < samples; ++i) {
+        if (k.camera_marches) {
+            k.first_sample = settings.first_sample + i;
+            opencl::set_kernel_args(camera_kernel_, k, camera_, camera_marches_);
+            // eight pixels a work-item: the range's granules of 64 pixels are 8 work-items
+            PixelRange packets{pixels.first / 8, (pixels.count + 7) / 8};
+            launch_range(camera_kernel_, packets, std::max<size_t>(1, local_size_ / 8), (image + 7) / 8);
+        }
+        cl_uint a = 0;
+        opencl::set_kernel_arg(kernel_, a++, k);
+        opencl::set_kernel_arg(kernel_, a++, camera_);
+        opencl::set_kernel_arg(kernel_, a++, bound_environment().map());
+        for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
+                                              &light_cdf_, &light_of_slot_, &camera_marches_, &accumulation_, &splat_, &rays_, &lost_})
+            opencl::set_kernel_arg(kernel_, a++, *b);
+        launch_range(kernel_, pixels, local_size_, image);
+    }
     runtime_.finish();
 }
 

@@ -28,6 +28,13 @@ private:
     const opencl::Runtime& runtime_;
     std::optional<opencl::Program> program_;
     opencl::KernelHandle kernel_;
+    // the path tracer's camera-ray packets (kernels/camera_march.cl), when RenderSettings::camera_packets
+    std::optional<opencl::Program> camera_program_;
+    opencl::KernelHandle camera_kernel_;
+    opencl::BufferHandle camera_marches_;  // one kernel::CameraMarch per pixel (one element without packets)
+    size_t camera_march_pixels_ = 0;
+    bool camera_packets() const;
+    void launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const;
     size_t local_size_ = 64;
     opencl::BufferHandle texels_, marginal_, conditional_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
     opencl::BufferHandle measured_;  // brdf::measured_table_data(), or one float for a scene without measured materials
