@@ -62,6 +62,7 @@ void OpenClRenderer::upload_scene() {
         texels_ = upload(runtime_, env.texels());
         marginal_ = upload(runtime_, env.marginal_cdf());
         conditional_ = upload(runtime_, env.conditional_cdf());
+        guide_ = upload(runtime_, env.guide());
         uploaded_texels_ = env.texels().data();
     }
     materials_ = upload(runtime_, compiled_.materials);
@@ -100,7 +101,7 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pi
     opencl::set_kernel_arg(kernel_, a++, k);
     opencl::set_kernel_arg(kernel_, a++, camera_);
     opencl::set_kernel_arg(kernel_, a++, bound_environment().map());
-    for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &measured_, &emission_buffer_, &lights_buffer_, &light_cdf_,
+    for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &guide_, &materials_, &measured_, &emission_buffer_, &lights_buffer_, &light_cdf_,
                                           &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
         opencl::set_kernel_arg(kernel_, a++, *b);
     // The range starts at a multiple of kLaunchGranularity and spans whole granules unless it ends the

@@ -29,7 +29,7 @@ private:
     std::optional<opencl::Program> program_;
     opencl::KernelHandle kernel_;
     size_t local_size_ = 64;
-    opencl::BufferHandle texels_, marginal_, conditional_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
+    opencl::BufferHandle texels_, marginal_, conditional_, guide_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
     opencl::BufferHandle measured_;  // brdf::measured_table_data(), or one float for a scene without measured materials
     size_t measured_floats_ = 0;
     opencl::BufferHandle accumulation_, splat_, rays_, lost_;
