@@ -3,7 +3,8 @@
 // paths/s with the random numbers, the environment's importance sampling or the BSDF replaced by a
 // nearly free stand-in (kernels/bench_standins.h), against the default build, interleaved in one
 // run; 1 - default/stand-in is the part's share of the time, as far as the stand-in keeps the
-// paths alike (its rays per path are printed next to it). (3) Work-group size: paths/s per local
+// paths alike (its rays per path are printed next to it); and the environment's part done twice,
+// on the very same paths: default/twice - 1 is its share without that proviso. (3) Work-group size: paths/s per local
 // size against the default 64. Figures, not timed tests: every ratio is measured within the run.
 #include <cstdio>
 #include <filesystem>
@@ -78,21 +79,27 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         std::printf("  rays/path %.2f, march steps/ray %.1f, distance evaluations/step %.2f%s\n", w.rays_per_path, w.steps_per_ray,
                     w.evaluations_per_step, w.same_film ? "" : " (the counting build's film differs: figures doubtful)");
 
-        const char* parts[] = {"RNG", "ENVIRONMENT", "BSDF"};
+        const std::vector<std::string> parts{"RNG", "ENVIRONMENT", "BSDF"};
         std::vector<render::RenderInput> variants{job.input};
-        for (const char* part : parts) {
+        for (const std::string& part : parts) {
             variants.push_back(job.input);
             variants.back().settings.extra_build_options += std::string(" -DBENCH_STANDIN_") + part;
         }
+        variants.push_back(job.input);
+        variants.back().settings.extra_build_options += " -DBENCH_TWICE_ENVIRONMENT";
         std::vector<Speed> s = interleaved(runtime, variants, c);
         std::printf("  default: %.3g paths/s, %.2f rays/path\n", s[0].paths_per_second, s[0].rays_per_path);
         // the share from rays/s: a stand-in that changes the path length (the grey Lambert BSDF) changes paths/s for that too
         for (size_t i = 0; i < 3; ++i) {
             double rays = s[i + 1].paths_per_second * s[i + 1].rays_per_path, default_rays = s[0].paths_per_second * s[0].rays_per_path;
-            std::printf("  stand-in %-12s %.3g paths/s (%.2fx), %.2f rays/path, rays/s %.2fx: share of the time about %.0f %%\n", parts[i],
+            std::printf("  stand-in %-12s %.3g paths/s (%.2fx), %.2f rays/path, rays/s %.2fx: share of the time about %.0f %%\n", parts[i].c_str(),
                         s[i + 1].paths_per_second, s[i + 1].paths_per_second / s[0].paths_per_second, s[i + 1].rays_per_path,
                         rays / default_rays, 100.0 * (1.0 - default_rays / rays));
         }
+        const Speed& twice = s[parts.size() + 1];
+        std::printf("  environment twice    %.3g paths/s (%.2fx), %.2f rays/path: share of the time about %.0f %%\n", twice.paths_per_second,
+                    twice.paths_per_second / s[0].paths_per_second, twice.rays_per_path,
+                    100.0 * (s[0].paths_per_second / twice.paths_per_second - 1.0));
 
         std::vector<render::RenderInput> sizes{job.input};
         for (int l : c.local_sizes) {

@@ -24,6 +24,17 @@ std::vector<float> piecewise_constant_cdf(const std::vector<double>& weights) {
     return cdf;
 }
 
+void append_cdf_guide(const float* cdf, int n, int guide_size, std::vector<unsigned short>* guide) {
+    if (n <= 0 || n > 65536 || guide_size < n || (guide_size & (guide_size - 1)) != 0)
+        throw std::invalid_argument("append_cdf_guide: needs 1 to 65536 cells and a power-of-two size >= their count");
+    int k = 0;
+    for (int m = 0; m < guide_size; ++m) {
+        const double bucket_start = double(m) / double(guide_size);  // exact
+        while (k + 1 < n && double(cdf[k + 1]) <= bucket_start) ++k;
+        guide->push_back((unsigned short)k);
+    }
+}
+
 double face_rectangle_solid_angle(double a0, double a1, double b0, double b1) {
     auto F = [](double a, double b) { return std::atan2(a * b, std::sqrt(1.0 + a * a + b * b)); };
     return F(a1, b1) - F(a0, b1) - F(a1, b0) + F(a0, b0);
@@ -67,6 +78,11 @@ CubemapDistribution build_cubemap_distribution(const std::vector<brdf::float4>& 
     double total = 0.0;
     for (double w : row_weight) total += w;
     d.marginal_cdf = piecewise_constant_cdf(total > 0.0 ? row_weight : row_solid_angle);
+
+    const int row_guide = ::ibl::distribution_guide_size(rows), column_guide = ::ibl::distribution_guide_size(n);
+    d.guide.reserve(size_t(row_guide) + size_t(rows) * column_guide);
+    append_cdf_guide(d.marginal_cdf.data(), rows, row_guide, &d.guide);
+    for (int r = 0; r < rows; ++r) append_cdf_guide(d.conditional_cdf.data() + size_t(r) * (n + 1), n, column_guide, &d.guide);
     return d;
 }
 

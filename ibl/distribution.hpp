@@ -1,5 +1,5 @@
-// Host side of environment importance sampling: the cdfs that ibl/distribution2d.h samples, built
-// over the texels of a cube map with weights luminance x solid angle.
+// Host side of environment importance sampling: the cdfs that ibl/distribution2d.h samples, and their
+// guide tables, built over the texels of a cube map with weights luminance x solid angle.
 #pragma once
 
 #include <vector>
@@ -18,6 +18,10 @@ constexpr double kCdfFloor = 0x1.0p-22;
 // strictly increasing thanks to the floor above. Accumulated in double, stored as float.
 std::vector<float> piecewise_constant_cdf(const std::vector<double>& weights);
 
+// The guide table of a cdf of n + 1 entries (ibl/distribution2d.h): guide_size entries (a power of
+// two), entry m the largest k < n with cdf[k] <= m / guide_size. Appended to `guide`.
+void append_cdf_guide(const float* cdf, int n, int guide_size, std::vector<unsigned short>* guide);
+
 // Exact solid angle of the rectangle [a0, a1] x [b0, b1] on a cube face at distance 1:
 // the integral of (1 + a^2 + b^2)^(-3/2) da db, whose antiderivative in a and b is
 // F(a, b) = atan(a b / sqrt(1 + a^2 + b^2)), so the integral is F(a1,b1) - F(a0,b1) - F(a1,b0) + F(a0,b0).
@@ -32,6 +36,7 @@ double luminance(double r, double g, double b);
 struct CubemapDistribution {
     std::vector<float> marginal_cdf;     // 6N + 1 entries: over the rows r = face * N + j
     std::vector<float> conditional_cdf;  // 6N (N + 1) entries: row r's cdf over its texels
+    std::vector<unsigned short> guide;   // the marginal's guide table, then each row's (distribution2d.h)
 };
 
 // Texel weight = luminance x exact solid angle. A row without light falls back to its texels'

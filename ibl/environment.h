@@ -7,7 +7,10 @@
  *                nearest-texel rule, so the radiance is constant on every texel;
  *   marginal     6N + 1 floats: cdf over the 6N rows of the faces stacked top to bottom
  *                (row r = face * N + j);
- *   conditional  6N (N + 1) floats: per row, the cdf over its N texels.
+ *   conditional  6N (N + 1) floats: per row, the cdf over its N texels;
+ *   guide        G_rows + 6N G_columns ushorts: the guide tables of the marginal and of each row's
+ *                conditional (ibl/distribution2d.h), G = distribution_guide_size() of 6N and of N,
+ *                so that a sample searches one or two cdf entries instead of all of them.
  * A texel's probability is proportional to its luminance times its solid angle (plus a floor so
  * that every texel can be drawn; ibl/distribution.hpp).
  *
@@ -28,6 +31,8 @@ typedef struct EnvironmentMap {
     float rotation_cos; /* cos and sin of the rotation about +y */
     float rotation_sin;
     float intensity;    /* multiplies the texels' radiance: 2^exposure */
+    int row_guide_size;    /* distribution_guide_size(6N): the marginal's guide table */
+    int column_guide_size; /* distribution_guide_size(N): each row's */
 } EnvironmentMap;
 
 /* World direction -> direction in the image's frame: R^-1 w. */
@@ -91,18 +96,19 @@ SS_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float* m
 }
 
 /* A world direction drawn with density proportional to the texels' weights: a texel from
- * (u1, u2), then a uniform point in its square from the offsets of u1 and u2 inside the texel's
+ * (u1, u2) (the cdfs inverted through their guide tables), then a uniform point in its square from the offsets of u1 and u2 inside the texel's
  * cdf intervals. *pdf: its solid-angle density, environment_pdf() of the returned direction. That
  * is the drawn texel's density except on a texel edge, where rounding in the normalisation and
  * rotation may move the direction into the neighbour: then *pdf is the neighbour's, the texel
  * environment_radiance() reads, so radiance / pdf never mixes two texels. */
 SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
-                                  GLOBAL_MEM const float* conditional_cdf, float u1, float u2, float* pdf) {
+                                  GLOBAL_MEM const float* conditional_cdf, GLOBAL_MEM const ushort* guide, float u1, float u2,
+                                  float* pdf) {
     int n = env->face_size;
     int row, column;
     float row_offset, column_offset;
-    distribution2d_sample(marginal_cdf, conditional_cdf, CUBEMAP_FACES * n, n, u1, u2, &row, &column, &row_offset,
-                          &column_offset);
+    distribution2d_sample(marginal_cdf, conditional_cdf, guide, CUBEMAP_FACES * n, n, env->row_guide_size, env->column_guide_size,
+                          u1, u2, &row, &column, &row_offset, &column_offset);
     int face = row / n;
     int j = row - face * n;
     float a = -1.0f + 2.0f * ((float)column + column_offset) / (float)n;

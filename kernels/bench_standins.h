@@ -1,7 +1,8 @@
 /* Trivial stand-ins for one part of the path tracer at a time, for `dtoadq bench breakdown`: a
  * build with -DBENCH_STANDIN_RNG, _ENVIRONMENT or _BSDF replaces that part by something nearly free,
  * and the change in paths/s against the default build, in the same run, bounds the part's share of
- * the time. The default build defines nothing here. Included by kernels/path_tracer.h after the
+ * the time. -DBENCH_TWICE_ENVIRONMENT instead does the environment's part twice, keeping the paths
+ * (see there). The default build defines nothing here. Included by kernels/path_tracer.h after the
  * parts it replaces, so only the path tracer's own calls are redirected. A stand-in changes the
  * random numbers or the light transport, so the paths differ (the bench prints rays per path of
  * each build next to its paths/s); never for images. */
@@ -50,6 +51,28 @@ SS_FN float standin_light_pdf(const Light* l, const EnvironmentMap* env, Environ
 }
 #define sample_light(l, env, b, p, u) standin_sample_light(l, env, b, p, u)
 #define light_pdf(l, env, b, p, wi) standin_light_pdf(l, env, b, p, wi)
+#endif
+
+#ifdef BENCH_TWICE_ENVIRONMENT
+/* Every environment sample and pdf evaluated a second time, on another direction (so that the
+ * compiler cannot reuse the first), its result added times 0 (kept: 0 x a float is not 0 without
+ * relaxed math). The paths stay exactly those of the default build, unlike with the stand-in
+ * above, whose uniform directions point below the surface half the time and so skip shadow rays:
+ * paths/s(default) / paths/s(twice) - 1 is the environment's share of the time itself. */
+SS_FN LightSample twice_sample_light(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float2 u) {
+    LightSample s = sample_light(l, env, b, p, u);
+    if (l->type == LIGHT_ENVIRONMENT) {
+        LightSample again = sample_light(l, env, b, p, make_float2(u.y, u.x));
+        s.pdf += 0.0f * again.pdf * again.radiance.x;
+    }
+    return s;
+}
+SS_FN float twice_light_pdf(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float3 wi) {
+    float pdf = light_pdf(l, env, b, p, wi);
+    return l->type == LIGHT_ENVIRONMENT ? pdf + 0.0f * light_pdf(l, env, b, p, make_float3(wi.y, wi.z, wi.x)) : pdf;
+}
+#define sample_light(l, env, b, p, u) twice_sample_light(l, env, b, p, u)
+#define light_pdf(l, env, b, p, wi) twice_light_pdf(l, env, b, p, wi)
 #endif
 
 #ifdef BENCH_STANDIN_BSDF

@@ -33,7 +33,7 @@ typedef struct RenderScene {
 SS_FN RenderScene render_scene_make(GLOBAL_MEM const Material* materials, GLOBAL_MEM const float* measured, GLOBAL_MEM const float4* emission, GLOBAL_MEM const Light* lights,
                                     GLOBAL_MEM const float* light_cdf, GLOBAL_MEM const int* light_of_slot, EnvironmentMap env,
                                     GLOBAL_MEM const float4* env_texels, GLOBAL_MEM const float* env_marginal_cdf,
-                                    GLOBAL_MEM const float* env_conditional_cdf) {
+                                    GLOBAL_MEM const float* env_conditional_cdf, GLOBAL_MEM const ushort* env_guide) {
     RenderScene scene;
     scene.materials = materials;
     scene.measured = measured;
@@ -45,6 +45,7 @@ SS_FN RenderScene render_scene_make(GLOBAL_MEM const Material* materials, GLOBAL
     scene.env_buffers.texels = env_texels;
     scene.env_buffers.marginal_cdf = env_marginal_cdf;
     scene.env_buffers.conditional_cdf = env_conditional_cdf;
+    scene.env_buffers.guide = env_guide;
     return scene;
 }
 

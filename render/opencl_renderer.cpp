@@ -68,6 +68,7 @@ void OpenClRenderer::upload_scene() {
         texels_ = upload(runtime_, env.texels());
         marginal_ = upload(runtime_, env.marginal_cdf());
         conditional_ = upload(runtime_, env.conditional_cdf());
+        guide_ = upload(runtime_, env.guide());
         uploaded_texels_ = env.texels().data();
     }
     materials_ = upload(runtime_, compiled_.materials);
@@ -136,7 +137,7 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& settings, PixelR
         opencl::set_kernel_arg(kernel_, a++, k);
         opencl::set_kernel_arg(kernel_, a++, camera_);
         opencl::set_kernel_arg(kernel_, a++, bound_environment().map());
-        for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
+        for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &guide_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
                                               &light_cdf_, &light_of_slot_, &camera_marches_, &accumulation_, &splat_, &rays_, &lost_})
             opencl::set_kernel_arg(kernel_, a++, *b);
         launch_range(kernel_, pixels, local_size_, image);

@@ -36,7 +36,7 @@ private:
     bool camera_packets() const;
     void launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const;
     size_t local_size_ = 64;
-    opencl::BufferHandle texels_, marginal_, conditional_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
+    opencl::BufferHandle texels_, marginal_, conditional_, guide_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
     opencl::BufferHandle measured_;  // brdf::measured_table_data(), or one float for a scene without measured materials
     size_t measured_floats_ = 0;
     opencl::BufferHandle accumulation_, splat_, rays_, lost_;

@@ -7,17 +7,19 @@
 #include "ibl/environment.h"
 #include "kernels/lights/light.h"
 
-/* The environment's three buffers (ibl/environment.h): texels, marginal and conditional cdfs. */
+/* The environment's four buffers (ibl/environment.h): texels, marginal and conditional cdfs, and
+ * the cdfs' guide tables. */
 typedef struct EnvironmentBuffers {
     GLOBAL_MEM const float4* texels;
     GLOBAL_MEM const float* marginal_cdf;
     GLOBAL_MEM const float* conditional_cdf;
+    GLOBAL_MEM const ushort* guide;
 } EnvironmentBuffers;
 
 SS_FN LightSample environment_light_sample(const EnvironmentMap* env, EnvironmentBuffers b, float2 u) {
     LightSample s = light_sample_none();
     float pdf;
-    float3 wi = environment_sample(env, b.marginal_cdf, b.conditional_cdf, u.x, u.y, &pdf);
+    float3 wi = environment_sample(env, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y, &pdf);
     if (!(pdf > 0.0f)) return s;
     s.wi = wi;
     s.distance = LIGHT_INFINITE_DISTANCE;
