@@ -28,8 +28,9 @@ __kernel void camera_march(RenderKernelSettings settings, Camera camera, __globa
         v[0][lane] = direction.x, v[1][lane] = direction.y, v[2][lane] = direction.z;
     }
     uint evaluations = 0u; /* counted only by a scalar measurement build */
-    MarchLanes m = march_lanes(vload8(0, o[0]), vload8(0, o[1]), vload8(0, o[2]), vload8(0, v[0]), vload8(0, v[1]), vload8(0, v[2]),
-                               render_march_settings(&settings), &evaluations);
+    MarchSettings s = render_march_settings(&settings);
+    MarchLanes m = march_lanes(vload8(0, o[0]), vload8(0, o[1]), vload8(0, o[2]), vload8(0, v[0]), vload8(0, v[1]), vload8(0, v[2]), 0.0f,
+                               s.max_distance, s, &evaluations);
     float t[8];
     int status[8], steps[8];
     vstore8(m.t, 0, t);

@@ -11,7 +11,6 @@
 #include "kernels/render_settings.h"
 #include "kernels/camera_march.h"
 #include "sdf/march.h"
-#include "sdf/march_lanes.h"
 #include "sdf/normals.h"
 
 /* Per-pixel counters the host reads for its statistics. */
@@ -39,7 +38,7 @@ SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings s, Pa
     return r;
 }
 
-/* A camera ray's march: plain sphere tracing (sdf/march_lanes.h). On a device the packet kernel
+/* A camera ray's march. On a device the packet kernel
  * kernels/camera_march.cl marches eight camera rays at a time before the path tracer runs and hands
  * the results over in `marches` (k->camera_marches); otherwise (the host, a measurement build) the
  * ray is marched here, as one lane, to the same bits. */
@@ -54,14 +53,7 @@ SS_FN MarchResult trace_camera_ray(const RenderKernelSettings* k, MarchSettings 
         r.evaluations = 0u; /* counted by a measurement build, which marches here */
 #endif
     } else {
-        uint evaluations = 0u;
-        MarchLanes m = march_lanes(origin.x, origin.y, origin.z, direction.x, direction.y, direction.z, s, &evaluations);
-        r.t = m.t;
-        r.status = m.status;
-        r.steps = m.steps;
-#ifdef SCENE_COUNT_EVALUATIONS
-        r.evaluations = evaluations;
-#endif
+        r = march(origin, direction, 0.0f, s);
     }
     count_march(r, counters);
     return r;

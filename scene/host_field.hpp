@@ -13,7 +13,6 @@ namespace lab::scene::host_field {
 inline thread_local const Scene* current_scene = nullptr;
 
 inline float scene_distance(Vec3 p) { return scene::scene_distance(*current_scene, p); }
-inline float scene_distance_xyz(float x, float y, float z) { return scene_distance(Vec3(x, y, z)); }
 inline float scene_distance_material(Vec3 p, int* material) { return scene::scene_distance_material(*current_scene, p, material); }
 inline int scene_analytic_normal(Vec3 p, Vec3* n) { return scene::scene_analytic_normal(*current_scene, p, n); }
 

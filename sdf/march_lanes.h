@@ -1,27 +1,28 @@
-/* Plain sphere tracing of SDF_LANES rays at once (single_source/vocabulary.h): one ray on the host
- * and in a scalar kernel, a packet of eight in kernels/camera_march.cl, where the march runs on the
- * CPU's vector lanes. The rays march together until every one has hit, left max_distance, or used
- * max_steps; a lane that is done keeps its result while the others go on (its further evaluations
- * are the packet's cost).
+/* Sphere tracing (Hart 1996, "Sphere tracing: a geometric method for the antialiased ray tracing of
+ * implicit surfaces"), with the over-relaxation of Keinert et al. 2014, "Enhanced Sphere Tracing", of
+ * SDF_LANES rays at once (single_source/vocabulary.h): one ray on the host and in a scalar kernel
+ * (march() in sdf/march.h is this for one lane), a packet of eight in the packet kernels
+ * (kernels/march_packets.cl), where the march runs on the CPU's vector lanes. The rays of a packet
+ * march together until every one has hit, left its max_distance or used max_steps; a lane that is
+ * done keeps its result while the others go on. Each lane computes what the one-lane build computes,
+ * the same operations in the same order, so both give the same t, status and steps to the bit.
  *
- * Each lane computes exactly what march() (sdf/march.h) computes with over_relaxation 1 from
- * t_start = 0: the same evaluations in the same order, so the host's one-lane build and a device's
- * eight-lane build give the same t, status and steps to the bit. Over-relaxation's step back is left
- * out: its gain is on grazing rays, the few that a packet's other lanes wait for anyway.
- *
- * Needs scene_distance_xyz (SDF_FLOAT components) declared before it is included: the generated
- * scene source in a kernel; on the host see sdf/sdf.hpp. */
+ * Needs the scene's field declared before it is included: scene_distance(float3) for one lane
+ * (the generated scene source in a kernel; on the host see sdf/sdf.hpp), scene_distance_xyz with
+ * SDF_FLOAT components for a packet (the generated source's packet form). */
 #ifndef SDF_MARCH_LANES_H
 #define SDF_MARCH_LANES_H
 
 #include "single_source/vocabulary.h"
 #include "sdf/march_settings.h"
 
-#if defined(SCENE_COUNT_EVALUATIONS) && !defined(SDF_LANES)
+#if defined(SDF_LANES)
+#define MARCH_LANES_DISTANCE(x, y, z, evaluations) scene_distance_xyz(x, y, z)
+#elif defined(SCENE_COUNT_EVALUATIONS)
 /* a measurement build (`dtoadq bench breakdown`): the distance functions evaluated are counted */
 #define MARCH_LANES_DISTANCE(x, y, z, evaluations) scene_distance_counted(make_float3(x, y, z), evaluations)
 #else
-#define MARCH_LANES_DISTANCE(x, y, z, evaluations) scene_distance_xyz(x, y, z)
+#define MARCH_LANES_DISTANCE(x, y, z, evaluations) scene_distance(make_float3(x, y, z))
 #endif
 
 typedef struct MarchLanes {
@@ -30,31 +31,58 @@ typedef struct MarchLanes {
     SDF_MASK steps;   /* distance evaluations made for this lane */
 } MarchLanes;
 
-/* origin o, unit direction v, per lane. `evaluations` counts in a measurement build only. */
-SS_FN MarchLanes march_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, MarchSettings s,
-                             uint* evaluations) {
+/* Marches each lane from o + t_start v (v unit) to the first surface, where
+ * |scene_distance| / lipschitz < max(epsilon_min, epsilon_relative t).
+ *
+ * The radius r = |scene_distance(p)| / lipschitz is a sphere around p free of surface, so a step of
+ * r is safe (Hart 1996). The march works on |d|, so it finds the surface from inside a solid too
+ * (refraction; the caller offsets the origin past epsilon, or it hits at t_start). The sign of the
+ * field where the march started is kept: a later sign change means the ray crossed a surface.
+ *
+ * Over-relaxation (omega > 1, Keinert et al. 2014, section 3.1): step omega r instead of r. The step
+ * from t_prev to t is still safe when the spheres at both ends overlap, omega r_prev <= r_prev + r;
+ * when they do not (or the sign changed: the ray crossed a surface, the spheres touching just at
+ * that surface), a surface may lie in the gap, so the march steps back to t_prev + r_prev -- the
+ * plain step -- and goes on with omega = 1. A failed step is not tested for a hit.
+ *
+ * A lane's max_distance replaces s.max_distance (a shadow ray's ends at its light); `evaluations`
+ * counts in a measurement build only. */
+SS_FN MarchLanes march_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_start,
+                             SDF_FLOAT max_distance, MarchSettings s, uint* evaluations) {
     (void)evaluations;
     MarchLanes m;
-    m.t = 0.0f;
-    m.status = (SDF_MASK)MARCH_OUT_OF_STEPS;
+    m.t = t_start;
     m.steps = (SDF_MASK)0;
-    if (0.0f > s.max_distance) { /* as march() with t_start = 0 */
-        m.status = (SDF_MASK)MARCH_MISS;
-        return m;
-    }
+    SDF_MASK running = !(t_start > max_distance);
+    m.status = select((SDF_MASK)MARCH_MISS, (SDF_MASK)MARCH_OUT_OF_STEPS, running);
     float inv_lipschitz = 1.0f / s.lipschitz;
+    SDF_FLOAT omega = s.over_relaxation;
     SDF_FLOAT side = 1.0f; /* sign of the field at the start */
-    SDF_MASK running = m.t == m.t;
+    SDF_FLOAT t_prev = t_start;
+    SDF_FLOAT r_prev = 0.0f;
+    SDF_FLOAT step = 0.0f;
     for (int i = 0; i < s.max_steps && SDF_ANY(running); ++i) {
         SDF_FLOAT d = MARCH_LANES_DISTANCE(ox + vx * m.t, oy + vy * m.t, oz + vz * m.t, evaluations) * inv_lipschitz;
         m.steps = select(m.steps, m.steps + (SDF_MASK)1, running);
         if (i == 0) side = select((SDF_FLOAT)1.0f, (SDF_FLOAT)-1.0f, d < 0.0f);
         SDF_FLOAT r = side * d; /* > 0 on the starting side */
-        SDF_MASK hit = running && fabs(r) < march_epsilon(s, m.t);
+        /* the over-relaxed step failed: back to the plain step, omega 1 from now on, no hit test */
+        SDF_MASK failed = running && omega > 1.0f && (r < 0.0f || step > r_prev + r);
+        m.t = select(m.t, t_prev + r_prev, failed);
+        step = select(step, r_prev, failed);
+        omega = select(omega, (SDF_FLOAT)1.0f, failed);
+        SDF_MASK tested = running && !failed;
+        SDF_MASK hit = tested && fabs(r) < march_epsilon(s, m.t);
         m.status = select(m.status, (SDF_MASK)MARCH_HIT, hit);
         running = running && !hit;
-        m.t = select(m.t, m.t + r, running);
-        SDF_MASK miss = running && m.t > s.max_distance;
+        /* r < 0 only with omega = 1: a crossing through rounding or a field that is not a bound;
+         * stepping by r goes back towards the surface. */
+        SDF_MASK advance = tested && !hit;
+        t_prev = select(t_prev, m.t, advance);
+        r_prev = select(r_prev, r, advance);
+        step = select(step, omega * r, advance);
+        m.t = select(m.t, m.t + step, advance);
+        SDF_MASK miss = advance && m.t > max_distance;
         m.status = select(m.status, (SDF_MASK)MARCH_MISS, miss);
         running = running && !miss;
     }

@@ -21,7 +21,6 @@ namespace bdpt_mis_test {
 using namespace ::kernel;
 // The MIS code never marches; path.h only needs the scene's functions declared.
 inline float scene_distance(float3) { return 1.0f; }
-inline float scene_distance_xyz(float, float, float) { return 1.0f; }
 inline float scene_distance_material(float3, int* material) {
     *material = 0;
     return 1.0f;
