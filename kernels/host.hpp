@@ -29,12 +29,6 @@ using namespace ::ibl;
 #include "kernels/render_scene.h"
 #include "kernels/film.h"
 
-// The inverse of float3_from_array, for filling the structs' float[3] members on the host.
-inline void float3_to_array(float3 v, float out[3]) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
-}
 }  // namespace kernel
 
 static_assert(sizeof(kernel::Camera) == 64, "Camera must match its OpenCL layout: 16 four-byte words");

@@ -113,20 +113,46 @@ SS_FN SurfaceHit facing_side(SurfaceHit h) {
     return h;
 }
 
-/* Whether a shadow ray from `origin` along unit `direction` reaches what lies `distance` away: a
- * point light or the environment (target_slot < 0: nothing may be hit before `distance`), or a
- * point on an emissive sphere (target_slot: its material slot; the ray may end on that sphere,
- * which the march reports as a hit short of `distance` when it grazes it). A ray that runs out of
- * steps counts as shadowed. */
-SS_FN bool segment_unoccluded(float3 origin, float3 direction, float distance, int target_slot, MarchSettings s,
-                              PathCounters* counters) {
-    s.max_distance = fmin(s.max_distance, distance);
-    MarchResult r = trace_ray(origin, direction, s, counters);
+/* A shadow ray: from `origin` along unit `direction` to what lies `distance` away, a point light or
+ * the environment (target_slot < 0: nothing may be hit before `distance`), or a point on an
+ * emissive sphere (target_slot: its material slot; the ray may end on that sphere, which the march
+ * reports as a hit short of `distance` when it grazes it). `contribution` is what it brings when it
+ * gets there. Vectors are float[3]: the struct is stored in kernels' buffers. */
+typedef struct ShadowRay {
+    float origin[3], direction[3];
+    float distance;
+    int target_slot;
+    float contribution[3];
+    int pending; /* 1 while the ray is to be marched and its contribution to be counted */
+} ShadowRay;
+
+/* Whether the shadow ray got there, given its march (trace_shadow_ray, or a packet kernel's with
+ * the same settings). A ray that runs out of steps counts as shadowed. */
+SS_FN bool segment_reached(float3 origin, float3 direction, int target_slot, MarchResult r) {
     if (r.status == MARCH_MISS) return true;
     if (r.status != MARCH_HIT || target_slot < 0) return false;
     int slot;
     scene_distance_material(origin + direction * r.t, &slot);
     return slot == target_slot;
+}
+
+SS_FN bool shadow_reached(const ShadowRay* shadow, MarchResult r) {
+    return segment_reached(float3_from_array(shadow->origin), float3_from_array(shadow->direction), shadow->target_slot, r);
+}
+
+/* A shadow ray's march: it ends at the ray's distance. */
+SS_FN float shadow_max_distance(MarchSettings s, float distance) { return fmin(s.max_distance, distance); }
+
+SS_FN MarchResult trace_shadow_ray(const ShadowRay* shadow, MarchSettings s, PathCounters* counters) {
+    s.max_distance = shadow_max_distance(s, shadow->distance);
+    return trace_ray(float3_from_array(shadow->origin), float3_from_array(shadow->direction), s, counters);
+}
+
+/* Whether a shadow ray (ShadowRay's fields) reaches what it aims at. */
+SS_FN bool segment_unoccluded(float3 origin, float3 direction, float distance, int target_slot, MarchSettings s,
+                              PathCounters* counters) {
+    s.max_distance = shadow_max_distance(s, distance);
+    return segment_reached(origin, direction, target_slot, trace_ray(origin, direction, s, counters));
 }
 
 #endif

@@ -37,92 +37,156 @@ SS_FN float light_hit_weight(const RenderKernelSettings* k, const RenderScene* s
 }
 
 /* Next-event estimation at a surface point: one light chosen by the selection distribution, one
- * sample on it, its shadow ray, and the BSDF there. Returns the contribution before the path
- * throughput. u: xy for the light sample, z for the choice of light. */
-SS_FN float3 estimate_direct(const RenderKernelSettings* k, MarchSettings s, const RenderScene* scene, const Material* m,
-                             const SurfaceHit* hit, float3 u, PathCounters* counters) {
+ * sample on it, and the BSDF there. Returns the shadow ray that decides whether the sample counts,
+ * with its contribution: `throughput` times the estimate (pending 0 when the sample is worth
+ * nothing). u: xy for the light sample, z for the choice of light. */
+SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* k, const RenderScene* scene, const Material* m, const SurfaceHit* hit,
+                                    float3 u, float3 throughput) {
+    ShadowRay shadow;
+    shadow.pending = 0;
     float pmf;
     int index = select_light(scene->light_cdf, k->light_count, u.z, &pmf);
-    if (!(pmf > 0.0f)) return float3_splat(0.0f);
+    if (!(pmf > 0.0f)) return shadow;
     Light light = scene->lights[index];
     LightSample ls = sample_light(&light, &scene->env, scene->env_buffers, hit->p, make_float2(u.x, u.y));
-    if (!(ls.pdf > 0.0f) || !(max_component(ls.radiance) > 0.0f)) return float3_splat(0.0f);
+    if (!(ls.pdf > 0.0f) || !(max_component(ls.radiance) > 0.0f)) return shadow;
     float3 wl = frame_to_local(hit->frame, ls.wi);
     float3 f = bsdf_eval_tables(m, scene->measured, hit->wo, wl);
-    if (!(max_component(f) > 0.0f)) return float3_splat(0.0f);
-    float3 origin = offset_origin(hit->p, hit->frame.n, hit->epsilon, wl.z);
-    if (!segment_unoccluded(origin, ls.wi, ls.distance, light.material_slot, s, counters)) return float3_splat(0.0f);
+    if (!(max_component(f) > 0.0f)) return shadow;
     float light_density = pmf * ls.pdf;
     float weight = (ls.delta || k->light_sampling != LIGHT_SAMPLING_MIS) ? 1.0f
                                                                          : mis_power_heuristic(light_density, bsdf_pdf_tables(m, scene->measured, hit->wo, wl));
-    return f * ls.radiance * (fabs(wl.z) * weight / light_density);
+    float3_to_array(offset_origin(hit->p, hit->frame.n, hit->epsilon, wl.z), shadow.origin);
+    float3_to_array(ls.wi, shadow.direction);
+    shadow.distance = ls.distance;
+    shadow.target_slot = light.material_slot;
+    float3_to_array(throughput * (f * ls.radiance * (fabs(wl.z) * weight / light_density)), shadow.contribution);
+    shadow.pending = 1;
+    return shadow;
+}
+
+/* A path between its vertices: what it has gathered, the ray it marches next, what the MIS weight of
+ * a light that ray reaches needs, and the shadow ray of its last light sample. Vectors are float[3]
+ * so that the struct has one layout on the host and in a kernel's buffer (the wavefront,
+ * kernels/path_tracer_wavefront.h, keeps one per pixel between its launches). */
+typedef struct PathState {
+    float radiance[3], throughput[3];
+    float origin[3], direction[3]; /* the ray to march next, while active */
+    float previous_p[3];           /* the vertex that ray left */
+    float previous_pdf;            /* the solid-angle density with which it was sampled */
+    int depth;                     /* scattering events so far */
+    int previous_delta;            /* it left a delta event (or the camera) */
+    int seen_directly;             /* the camera ray, or only delta events since */
+    int inside;                    /* it travels in a solid */
+    int active;                    /* its ray is still to be marched */
+    Rng rng;
+    ShadowRay shadow;              /* pending: the last light sample, its shadow ray still to be marched */
+} PathState;
+
+SS_FN PathState path_begin(float3 origin, float3 direction, Rng rng) {
+    PathState p;
+    float3_to_array(float3_splat(0.0f), p.radiance);
+    float3_to_array(float3_splat(1.0f), p.throughput);
+    float3_to_array(origin, p.origin);
+    float3_to_array(direction, p.direction);
+    float3_to_array(origin, p.previous_p);
+    p.previous_pdf = 0.0f;
+    p.depth = 0;
+    p.previous_delta = 1; /* the camera ray: nothing else could have found what it sees */
+    p.seen_directly = 1;
+    p.inside = scene_distance(origin) < 0.0f;
+    p.active = 1;
+    p.rng = rng;
+    p.shadow.pending = 0;
+    return p;
+}
+
+/* The path's ray found `march_result`: adds what it sees there (the environment, an emitter), and at
+ * a surface it scatters from makes the light sample (p->shadow) and samples the BSDF for its next
+ * ray. Clears p->active when the path ends. */
+SS_FN void path_scatter(const RenderKernelSettings* k, MarchSettings s, const RenderScene* scene, PathState* p, MarchResult march_result) {
+    float3 radiance = float3_from_array(p->radiance);
+    float3 throughput = float3_from_array(p->throughput);
+    float3 origin = float3_from_array(p->origin), direction = float3_from_array(p->direction);
+    float3 previous_p = float3_from_array(p->previous_p);
+    p->active = 0;
+    if (march_result.status != MARCH_HIT) {
+        bool has_environment = k->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
+        if (has_environment && (k->show_background || !p->seen_directly)) {
+            float weight = light_hit_weight(k, scene, 0, previous_p, direction, p->previous_pdf, p->previous_delta);
+            /* what the eye sees directly or in mirrors is filtered, so the backdrop shows no texels */
+            if (weight > 0.0f)
+                radiance += throughput * weight *
+                            (p->seen_directly ? environment_radiance_filtered(&scene->env, scene->env_buffers.texels, direction)
+                                              : environment_radiance(&scene->env, scene->env_buffers.texels, direction));
+        }
+        float3_to_array(radiance, p->radiance);
+        return;
+    }
+    SurfaceHit hit = surface_hit(k, s, origin, direction, march_result.t, p->inside);
+    float4 emitted = scene->emission[hit.slot];
+    if (emitted.w > 0.0f) { /* an emissive sphere, seen from either side */
+        float weight = light_hit_weight(k, scene, scene->light_of_slot[hit.slot], previous_p, direction, p->previous_pdf, p->previous_delta);
+        radiance += throughput * (weight * make_float3(emitted.x, emitted.y, emitted.z));
+        float3_to_array(radiance, p->radiance);
+        if (emitted.w < EMISSION_SCATTERS) return; /* a black emitter scatters nothing */
+        /* An emissive sphere's material scatters on the side the ray arrives from, outside or in:
+         * a sphere light is a surface, not a solid the path enters. */
+        hit = facing_side(hit);
+    }
+    if (p->depth >= k->max_depth) return;
+
+    Material m = scene->materials[hit.slot]; /* bsdf_* take private pointers */
+    float4 u_light = rng_next4(&p->rng);
+    float4 u_bsdf = rng_next4(&p->rng);
+    if (k->light_sampling != LIGHT_SAMPLING_BSDF && k->light_count > 0)
+        p->shadow = direct_light_sample(k, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), throughput);
+
+    BsdfSample b = bsdf_sample_tables(&m, scene->measured, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
+    if (b.flags == 0) return;
+    throughput *= b.f * (fabs(b.wi.z) / b.pdf);
+    float3_to_array(hit.p, p->previous_p);
+    p->previous_pdf = b.pdf;
+    p->previous_delta = (b.flags & BSDF_DELTA) != 0;
+    p->seen_directly = p->seen_directly && p->previous_delta;
+    if ((b.flags & BSDF_TRANSMISSION) != 0) p->inside = !p->inside;
+    float3_to_array(offset_origin(hit.p, hit.frame.n, hit.epsilon, b.wi.z), p->origin);
+    float3_to_array(frame_to_world(hit.frame, b.wi), p->direction);
+
+    /* Russian roulette keeps a path with probability min(1, max throughput): a path whose
+     * throughput stays 1 (white furnace) is never cut, so the estimator's variance is not raised
+     * where nothing is absorbed. */
+    if (p->depth + 1 >= k->roulette_depth) {
+        float survive = fmin(max_component(throughput), 1.0f);
+        if (!(u_light.z < survive)) return;
+        throughput /= survive;
+    }
+    float3_to_array(throughput, p->throughput);
+    p->depth += 1;
+    p->active = 1;
+}
+
+/* The march of the path's pending shadow ray: its light sample counts if the ray got there. */
+SS_FN void path_resolve_shadow(PathState* p, MarchResult r) {
+    p->shadow.pending = 0;
+    if (shadow_reached(&p->shadow, r)) float3_to_array(float3_from_array(p->radiance) + float3_from_array(p->shadow.contribution), p->radiance);
 }
 
 /* Radiance arriving at `origin` from `direction`, estimated by one path whose first ray's march is
- * `first` (trace_camera_ray). */
+ * `first` (trace_camera_ray): each vertex's shadow ray is marched right after it scatters. */
 SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene, float3 origin, float3 direction, MarchResult first, Rng* rng,
                         PathCounters* counters) {
     MarchSettings s = render_march_settings(k);
-    bool has_environment = k->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
-    float3 radiance = float3_splat(0.0f);
-    float3 throughput = float3_splat(1.0f);
-    float3 previous_p = origin;
-    float previous_pdf = 0.0f;
-    bool previous_delta = true; /* the camera ray: nothing else could have found what it sees */
-    bool seen_directly = true;  /* the camera ray, or only delta events since */
-    bool inside = scene_distance(origin) < 0.0f;
-    for (int depth = 0;; ++depth) {
-        MarchResult march_result = depth == 0 ? first : trace_ray(origin, direction, s, counters);
-        if (march_result.status != MARCH_HIT) {
-            if (has_environment && (k->show_background || !seen_directly)) {
-                float weight = light_hit_weight(k, scene, 0, previous_p, direction, previous_pdf, previous_delta);
-                /* what the eye sees directly or in mirrors is filtered, so the backdrop shows no texels */
-                if (weight > 0.0f)
-                    radiance += throughput * weight *
-                                (seen_directly ? environment_radiance_filtered(&scene->env, scene->env_buffers.texels, direction)
-                                               : environment_radiance(&scene->env, scene->env_buffers.texels, direction));
-            }
-            break;
-        }
-        SurfaceHit hit = surface_hit(k, s, origin, direction, march_result.t, inside);
-        float4 emitted = scene->emission[hit.slot];
-        if (emitted.w > 0.0f) { /* an emissive sphere, seen from either side */
-            float weight = light_hit_weight(k, scene, scene->light_of_slot[hit.slot], previous_p, direction, previous_pdf, previous_delta);
-            radiance += throughput * (weight * make_float3(emitted.x, emitted.y, emitted.z));
-            if (emitted.w < EMISSION_SCATTERS) break; /* a black emitter scatters nothing */
-            /* An emissive sphere's material scatters on the side the ray arrives from, outside or in:
-             * a sphere light is a surface, not a solid the path enters. */
-            hit = facing_side(hit);
-        }
-        if (depth >= k->max_depth) break;
-
-        Material m = scene->materials[hit.slot]; /* bsdf_* take private pointers */
-        float4 u_light = rng_next4(rng);
-        float4 u_bsdf = rng_next4(rng);
-        if (k->light_sampling != LIGHT_SAMPLING_BSDF && k->light_count > 0)
-            radiance += throughput * estimate_direct(k, s, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), counters);
-
-        BsdfSample b = bsdf_sample_tables(&m, scene->measured, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
-        if (b.flags == 0) break;
-        throughput *= b.f * (fabs(b.wi.z) / b.pdf);
-        previous_p = hit.p;
-        previous_pdf = b.pdf;
-        previous_delta = (b.flags & BSDF_DELTA) != 0;
-        seen_directly = seen_directly && previous_delta;
-        if ((b.flags & BSDF_TRANSMISSION) != 0) inside = !inside;
-        origin = offset_origin(hit.p, hit.frame.n, hit.epsilon, b.wi.z);
-        direction = frame_to_world(hit.frame, b.wi);
-
-        /* Russian roulette keeps a path with probability min(1, max throughput): a path whose
-         * throughput stays 1 (white furnace) is never cut, so the estimator's variance is not raised
-         * where nothing is absorbed. */
-        if (depth + 1 >= k->roulette_depth) {
-            float survive = fmin(max_component(throughput), 1.0f);
-            if (!(u_light.z < survive)) break;
-            throughput /= survive;
-        }
+    PathState p = path_begin(origin, direction, *rng);
+    MarchResult m = first;
+    for (;;) {
+        path_scatter(k, s, scene, &p, m);
+        if (p.shadow.pending) path_resolve_shadow(&p, trace_shadow_ray(&p.shadow, s, counters));
+        if (!p.active) break;
+        m = trace_ray(float3_from_array(p.origin), float3_from_array(p.direction), s, counters);
     }
-    return radiance;
+    *rng = p.rng;
+    return float3_from_array(p.radiance);
 }
 
 /* Adds settings.sample_count samples to one pixel; pixel k is (k % width, k / width), row 0 at the

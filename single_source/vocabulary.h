@@ -50,6 +50,11 @@ SS_FN float max_component(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
 /* A float3 from a plain array: structs shared with the host store vectors as float[3], which has
  * one layout on both sides (an OpenCL float3 is 16 bytes). */
 SS_FN float3 float3_from_array(const float v[3]) { return make_float3(v[0], v[1], v[2]); }
+SS_FN void float3_to_array(float3 v, float out[3]) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
 SS_FN bool finite3(float3 v) { return isfinite_f(v.x) && isfinite_f(v.y) && isfinite_f(v.z); }
 
 #endif
