@@ -25,7 +25,7 @@ using namespace ::ibl;
 #include "kernels/lights/environment_light.h"
 #include "kernels/lights/light_selection.h"
 #include "kernels/render_settings.h"
-#include "kernels/camera_march.h"
+#include "kernels/ray_march.h"
 #include "kernels/render_scene.h"
 #include "kernels/film.h"
 
@@ -33,5 +33,5 @@ using namespace ::ibl;
 
 static_assert(sizeof(kernel::Camera) == 64, "Camera must match its OpenCL layout: 16 four-byte words");
 static_assert(sizeof(kernel::Light) == 48, "Light must match its OpenCL layout: 12 four-byte words");
-static_assert(sizeof(kernel::CameraMarch) == 12, "CameraMarch must match its OpenCL layout: 3 four-byte words");
-static_assert(sizeof(kernel::RenderKernelSettings) == 100, "RenderKernelSettings must match its OpenCL layout: 25 four-byte words");
+static_assert(sizeof(kernel::RayMarch) == 12, "RayMarch must match its OpenCL layout: 3 four-byte words");
+static_assert(sizeof(kernel::RenderKernelSettings) == 96, "RenderKernelSettings must match its OpenCL layout: 24 four-byte words");

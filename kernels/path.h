@@ -9,7 +9,6 @@
 #include "single_source/vocabulary.h"
 #include "brdf/frame.h"
 #include "kernels/render_settings.h"
-#include "kernels/camera_march.h"
 #include "sdf/march.h"
 #include "sdf/normals.h"
 
@@ -34,27 +33,6 @@ SS_FN void count_march(MarchResult r, PathCounters* counters) {
 
 SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings s, PathCounters* counters) {
     MarchResult r = march(origin, direction, 0.0f, s);
-    count_march(r, counters);
-    return r;
-}
-
-/* A camera ray's march. On a device the packet kernel
- * kernels/camera_march.cl marches eight camera rays at a time before the path tracer runs and hands
- * the results over in `marches` (k->camera_marches); otherwise (the host, a measurement build) the
- * ray is marched here, as one lane, to the same bits. */
-SS_FN MarchResult trace_camera_ray(const RenderKernelSettings* k, MarchSettings s, float3 origin, float3 direction,
-                                   GLOBAL_MEM const CameraMarch* marches, int pixel, PathCounters* counters) {
-    MarchResult r;
-    if (k->camera_marches) {
-        r.t = marches[pixel].t;
-        r.status = marches[pixel].status;
-        r.steps = marches[pixel].steps;
-#ifdef SCENE_COUNT_EVALUATIONS
-        r.evaluations = 0u; /* counted by a measurement build, which marches here */
-#endif
-    } else {
-        r = march(origin, direction, 0.0f, s);
-    }
     count_march(r, counters);
     return r;
 }

@@ -1,23 +1,41 @@
-/* The path tracer on OpenCL (kernels/path_tracer.h): one work-item per pixel, each launch adding
- * `sample_count` samples to every pixel of the film (kernels/film.h). Every integrator kernel takes
+/* The path tracer on OpenCL (kernels/path_tracer.h): render_pt, one work-item per pixel, each launch
+ * adding `sample_count` samples to every pixel of the film (kernels/film.h); or render_pt_step, the
+ * wavefront's step (kernels/path_tracer_wavefront.h), whose marches run in packet kernels. Every integrator kernel takes
  * the same arguments, so the host (render/opencl_renderer) binds them the same way. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "scene/generated.h"
 
 #include "kernels/material_layout.h"
-#include "kernels/path_tracer.h"
+#include "kernels/path_tracer_wavefront.h"
 
 __kernel void render_pt(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
                         __global const float* env_marginal_cdf, __global const float* env_conditional_cdf, __global const ushort* env_guide,
                         __global const Material* materials, __global const float* measured, __global const float4* emission, __global const Light* lights,
-                        __global const float* light_cdf, __global const int* light_of_slot, __global const CameraMarch* camera_marches,
-                        __global float4* accumulation,
-                        __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts) {
+                        __global const float* light_cdf, __global const int* light_of_slot, __global float4* accumulation, __global uint* splat,
+                        __global uint* ray_counts, __global uint* lost_ray_counts) {
     int pixel = (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
     RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_marginal_cdf,
                                           env_conditional_cdf, env_guide);
     (void)splat; /* the path tracer adds to its own pixel only */
-    path_tracer_pixel(&settings, &camera, &scene, pixel, camera_marches, accumulation, ray_counts, lost_ray_counts);
+    path_tracer_pixel(&settings, &camera, &scene, pixel, accumulation, ray_counts, lost_ray_counts);
+}
+
+/* One step of the wavefront (kernels/path_tracer_wavefront.h): render_pt's arguments, then the
+ * wavefront's buffers. */
+__kernel void render_pt_step(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
+                             __global const float* env_marginal_cdf, __global const float* env_conditional_cdf, __global const ushort* env_guide,
+                             __global const Material* materials, __global const float* measured, __global const float4* emission,
+                             __global const Light* lights, __global const float* light_cdf, __global const int* light_of_slot,
+                             __global float4* accumulation, __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts,
+                             int iteration, int stride, __global PathState* states, __global float* rays, __global float* shadow_rays,
+                             __global const RayMarch* ray_marches, __global const RayMarch* shadow_marches, __global volatile uint* unfinished) {
+    int pixel = (int)get_global_id(0);
+    if (pixel >= camera.width * camera.height) return;
+    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_marginal_cdf,
+                                          env_conditional_cdf, env_guide);
+    (void)splat;
+    path_tracer_step(&settings, &camera, &scene, pixel, iteration, states, stride, rays, shadow_rays, ray_marches, shadow_marches, accumulation,
+                     ray_counts, lost_ray_counts, unfinished);
 }

@@ -98,6 +98,8 @@ SS_FN PathState path_begin(float3 origin, float3 direction, Rng rng) {
     p.active = 1;
     p.rng = rng;
     p.shadow.pending = 0;
+    float3_to_array(origin, p.shadow.origin); /* a defined ray where there is none */
+    float3_to_array(direction, p.shadow.direction);
     return p;
 }
 
@@ -173,7 +175,7 @@ SS_FN void path_resolve_shadow(PathState* p, MarchResult r) {
 }
 
 /* Radiance arriving at `origin` from `direction`, estimated by one path whose first ray's march is
- * `first` (trace_camera_ray): each vertex's shadow ray is marched right after it scatters. */
+ * `first`: each vertex's shadow ray is marched right after it scatters. */
 SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene, float3 origin, float3 direction, MarchResult first, Rng* rng,
                         PathCounters* counters) {
     MarchSettings s = render_march_settings(k);
@@ -189,12 +191,18 @@ SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene,
     return float3_from_array(p.radiance);
 }
 
+/* A pixel's sum with one more path's radiance; a path that is not finite is counted in w instead
+ * (the film reports them). */
+SS_FN float4 film_add_path(float4 sum, float3 l) {
+    if (finite3(l)) return sum + make_float4(l.x, l.y, l.z, 0.0f);
+    sum.w += 1.0f;
+    return sum;
+}
+
 /* Adds settings.sample_count samples to one pixel; pixel k is (k % width, k / width), row 0 at the
- * top. The samples of a pixel are summed in sample order by the one work-item that owns it.
- * camera_marches: the camera rays' marches of a one-sample launch (k->camera_marches), or unused. */
+ * top. The samples of a pixel are summed in sample order by the one work-item that owns it. */
 SS_FN void path_tracer_pixel(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel,
-                             GLOBAL_MEM const CameraMarch* camera_marches, GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts,
-                             GLOBAL_MEM uint* lost_ray_counts) {
+                             GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings s = render_march_settings(k);
     float4 sum = accumulation[pixel];
     PathCounters counters;
@@ -204,10 +212,8 @@ SS_FN void path_tracer_pixel(const RenderKernelSettings* k, const Camera* camera
         Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
         float3 origin, direction;
         camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-        MarchResult first = trace_camera_ray(k, s, origin, direction, camera_marches, pixel, &counters);
-        float3 l = trace_path(k, scene, origin, direction, first, &rng, &counters);
-        if (finite3(l)) sum += make_float4(l.x, l.y, l.z, 0.0f);
-        else sum.w += 1.0f;
+        MarchResult first = trace_ray(origin, direction, s, &counters);
+        sum = film_add_path(sum, trace_path(k, scene, origin, direction, first, &rng, &counters));
     }
     accumulation[pixel] = sum;
     ray_counts[pixel] += counters.rays;

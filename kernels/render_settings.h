@@ -41,7 +41,6 @@ typedef struct RenderKernelSettings {
     float max_distance, over_relaxation, lipschitz;
     int light_count;      /* entries of the light array; the environment, when there is one, is entry 0 */
     int show_background;  /* 0: camera rays (and mirror paths) that escape see black, lighting unchanged */
-    int camera_marches;   /* path tracer: 1 when the camera rays' marches come in a buffer (kernels/camera_march.cl) */
     /* bidirectional kernels only */
     int max_vertices;     /* s + t at most: a path of max_vertices - 2 scattering events */
     int strategies;       /* STRATEGY_* mask */

@@ -22,6 +22,8 @@ using namespace scene::host_field;
 
 }  // namespace host_integrator
 
+size_t path_state_bytes() { return sizeof(host_integrator::PathState); }
+
 HostRenderer::HostRenderer(RenderInput input, int threads) : Renderer(std::move(input)) {
     threads_ = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
     initialize();
@@ -61,7 +63,7 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange rang
                 if (bidirectional)
                     host_integrator::bdpt_pixel(&k, &camera_, &scene, pixel, accumulation, splat, rays_.data(), lost_.data());
                 else
-                    host_integrator::path_tracer_pixel(&k, &camera_, &scene, pixel, nullptr, accumulation, rays_.data(), lost_.data());
+                    host_integrator::path_tracer_pixel(&k, &camera_, &scene, pixel, accumulation, rays_.data(), lost_.data());
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < threads_; ++t) pool.emplace_back(work);

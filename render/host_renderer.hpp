@@ -9,6 +9,10 @@
 
 namespace lab::render {
 
+// Bytes of a path's state between the OpenCL wavefront's steps (kernels/path_tracer.h, PathState):
+// four-byte members only, so the host's layout, where the struct is compiled, is the kernels'.
+size_t path_state_bytes();
+
 class HostRenderer final : public Renderer {
 public:
     // threads: 0 uses every hardware thread.

@@ -9,7 +9,7 @@ MarchWork count_march_work(const opencl::Runtime& runtime, RenderInput input, in
     plain.add_samples(samples);
     RenderStatistics p = plain.statistics();
     input.settings.extra_build_options += " -DSCENE_COUNT_EVALUATIONS";
-    input.settings.camera_packets = false;  // the counting build marches every ray in its work-item
+    input.settings.packets = false;  // the counting build marches every ray in its path's work-item
     OpenClRenderer counting(runtime, input);
     counting.add_samples(samples);
     RenderStatistics c = counting.statistics();  // rays: march steps; lost rays: evaluations

@@ -5,6 +5,7 @@
 
 #include "brdf/host/measured_registry.hpp"
 #include "opencl/material_layout.hpp"
+#include "render/host_renderer.hpp"
 #include "scene/scene_source.hpp"
 
 namespace lab::render {
@@ -32,7 +33,7 @@ OpenClRenderer::OpenClRenderer(const opencl::Runtime& runtime, RenderInput input
     initialize();
 }
 
-bool OpenClRenderer::camera_packets() const { return input_.settings.integrator == Integrator::pt && input_.settings.camera_packets; }
+bool OpenClRenderer::wavefront() const { return input_.settings.integrator == Integrator::pt && input_.settings.packets; }
 
 std::string OpenClRenderer::device_description() const { return runtime_.device().description(); }
 
@@ -53,9 +54,11 @@ void OpenClRenderer::build_kernel() {
     while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     program_.emplace(std::move(program));
     kernel_ = std::move(kernel);
-    if (camera_packets()) {
-        camera_program_.emplace(runtime_.build(scene::assemble_scene_kernel("kernels/camera_march.cl", compiled_), options + " -DSDF_LANES=8"));
-        camera_kernel_ = camera_program_->kernel("camera_march");
+    if (wavefront()) {
+        step_kernel_ = program_->kernel("render_pt_step");
+        packet_program_.emplace(runtime_.build(scene::assemble_scene_kernel("kernels/march_packets.cl", compiled_), options + " -DSDF_LANES=8"));
+        march_camera_rays_ = packet_program_->kernel("march_camera_rays");
+        march_rays_ = packet_program_->kernel("march_rays");
     }
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -95,10 +98,19 @@ void OpenClRenderer::clear_film() {
         lost_ = runtime_.buffer(pixels * sizeof(cl_uint), CL_MEM_READ_WRITE);
         film_pixels_ = pixels;
     }
-    size_t marches = camera_packets() ? pixels : 1;
-    if (marches != camera_march_pixels_) {
-        camera_marches_ = runtime_.buffer(marches * sizeof(kernel::CameraMarch), CL_MEM_READ_WRITE);
-        camera_march_pixels_ = marches;
+    if (wavefront() && size_t(stride_) < pixels) {
+        stride_ = int((pixels + 7) / 8 * 8);
+        const size_t n = size_t(stride_);
+        states_ = runtime_.buffer(n * path_state_bytes(), CL_MEM_READ_WRITE);
+        // the padding past the image holds no ray (kernels/ray_march.h), so that its lanes idle
+        std::vector<float> no_rays(n * RAY_FIELDS, NO_RAY);
+        path_rays_ = runtime_.buffer(no_rays.size() * sizeof(float), CL_MEM_READ_WRITE);
+        shadow_rays_ = runtime_.buffer(no_rays.size() * sizeof(float), CL_MEM_READ_WRITE);
+        runtime_.write(path_rays_, no_rays.data(), no_rays.size() * sizeof(float));
+        runtime_.write(shadow_rays_, no_rays.data(), no_rays.size() * sizeof(float));
+        ray_marches_ = runtime_.buffer(n * sizeof(kernel::RayMarch), CL_MEM_READ_WRITE);
+        shadow_marches_ = runtime_.buffer(n * sizeof(kernel::RayMarch), CL_MEM_READ_WRITE);
+        unfinished_ = runtime_.buffer(sizeof(cl_uint), CL_MEM_READ_WRITE);
     }
     std::vector<float> zeros(pixels * 4, 0.0f);  // 0.0f and 0u share their bits
     runtime_.write(accumulation_, zeros.data(), pixels * 4 * sizeof(float));
@@ -118,31 +130,61 @@ void OpenClRenderer::launch_range(const opencl::KernelHandle& kernel, PixelRange
     runtime_.launch_1d(kernel, size_t(range.count), local, size_t(range.first));
 }
 
-void OpenClRenderer::launch(const kernel::RenderKernelSettings& settings, PixelRange pixels) {
-    kernel::RenderKernelSettings k = settings;
-    k.camera_marches = camera_packets() ? 1 : 0;
-    // With camera packets, one sample per launch: the marches buffer holds one sample's rays.
-    const int samples = k.camera_marches ? settings.sample_count : 1;
-    const size_t image = size_t(input_.settings.width) * size_t(input_.settings.height);
-    if (k.camera_marches) k.sample_count = 1;
-    for (int i = 0; i < samples; ++i) {
-        if (k.camera_marches) {
-            k.first_sample = settings.first_sample + i;
-            opencl::set_kernel_args(camera_kernel_, k, camera_, camera_marches_);
-            // eight pixels a work-item: the range's granules of 64 pixels are 8 work-items
-            PixelRange packets{pixels.first / 8, (pixels.count + 7) / 8};
-            launch_range(camera_kernel_, packets, std::max<size_t>(1, local_size_ / 8), (image + 7) / 8);
+// Arguments 0 .. 16, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
+cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& k) const {
+    cl_uint a = 0;
+    opencl::set_kernel_arg(kernel, a++, k);
+    opencl::set_kernel_arg(kernel, a++, camera_);
+    opencl::set_kernel_arg(kernel, a++, bound_environment().map());
+    for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &guide_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
+                                          &light_cdf_, &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
+        opencl::set_kernel_arg(kernel, a++, *b);
+    return a;
+}
+
+void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pixels) {
+    if (wavefront()) {
+        // one sample at a time: the wavefront's buffers hold one path per pixel
+        kernel::RenderKernelSettings one = k;
+        one.sample_count = 1;
+        for (int i = 0; i < k.sample_count; ++i) {
+            one.first_sample = k.first_sample + i;
+            launch_wavefront_sample(one, pixels);
         }
-        cl_uint a = 0;
-        opencl::set_kernel_arg(kernel_, a++, k);
-        opencl::set_kernel_arg(kernel_, a++, camera_);
-        opencl::set_kernel_arg(kernel_, a++, bound_environment().map());
-        for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &guide_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
-                                              &light_cdf_, &light_of_slot_, &camera_marches_, &accumulation_, &splat_, &rays_, &lost_})
-            opencl::set_kernel_arg(kernel_, a++, *b);
-        launch_range(kernel_, pixels, local_size_, image);
+    } else {
+        bind_render_arguments(kernel_, k);
+        launch_range(kernel_, pixels, local_size_, size_t(input_.settings.width) * size_t(input_.settings.height));
     }
     runtime_.finish();
+}
+
+// kernels/path_tracer_wavefront.h's loop: the camera rays' packets, then steps and the packets of
+// their rays and shadow rays until no path has anything left to march.
+void OpenClRenderer::launch_wavefront_sample(const kernel::RenderKernelSettings& k, PixelRange pixels) {
+    const int image = input_.settings.width * input_.settings.height;
+    // eight pixels a work-item: a range of whole granules of 64 pixels is one of granules of 8
+    const PixelRange packets{pixels.first / 8, (pixels.count + 7) / 8};
+    const size_t packet_local = std::max<size_t>(1, local_size_ / 8), packet_total = size_t(image + 7) / 8;
+    opencl::set_kernel_args(march_camera_rays_, k, camera_, ray_marches_);
+    launch_range(march_camera_rays_, packets, packet_local, packet_total);
+    for (int iteration = 0;; ++iteration) {
+        // every path ends by max_depth scattering events, its last shadow ray one step later
+        if (iteration > k.max_depth + 2) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 2 steps");
+        const cl_uint zero = 0;
+        runtime_.write(unfinished_, &zero, sizeof(zero));
+        cl_uint a = bind_render_arguments(step_kernel_, k);
+        for (const auto& value : {iteration, stride_}) opencl::set_kernel_arg(step_kernel_, a++, value);
+        for (const opencl::BufferHandle* b : {&states_, &path_rays_, &shadow_rays_, &ray_marches_, &shadow_marches_, &unfinished_})
+            opencl::set_kernel_arg(step_kernel_, a++, *b);
+        launch_range(step_kernel_, pixels, local_size_, size_t(image));
+        cl_uint unfinished = 0;
+        runtime_.read(unfinished_, &unfinished, sizeof(unfinished));
+        if (unfinished == 0) return;
+        for (const auto& [from, to] : {std::pair{&path_rays_, &ray_marches_}, std::pair{&shadow_rays_, &shadow_marches_}}) {
+            opencl::set_kernel_args(march_rays_, k, image, stride_, *from, *to);
+            launch_range(march_rays_, packets, packet_local, packet_total);
+        }
+    }
 }
 
 FilmReadback OpenClRenderer::read_film() const {

@@ -28,13 +28,16 @@ private:
     const opencl::Runtime& runtime_;
     std::optional<opencl::Program> program_;
     opencl::KernelHandle kernel_;
-    // the path tracer's camera-ray packets (kernels/camera_march.cl), when RenderSettings::camera_packets
-    std::optional<opencl::Program> camera_program_;
-    opencl::KernelHandle camera_kernel_;
-    opencl::BufferHandle camera_marches_;  // one kernel::CameraMarch per pixel (one element without packets)
-    size_t camera_march_pixels_ = 0;
-    bool camera_packets() const;
+    // The path tracer's wavefront (kernels/path_tracer_wavefront.h), when RenderSettings::packets:
+    // the step kernel, the packet kernels (kernels/march_packets.cl) and their per-pixel buffers.
+    bool wavefront() const;
+    void launch_wavefront_sample(const kernel::RenderKernelSettings& k, PixelRange pixels);
+    cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& k) const;
     void launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const;
+    std::optional<opencl::Program> packet_program_;
+    opencl::KernelHandle step_kernel_, march_camera_rays_, march_rays_;
+    opencl::BufferHandle states_, path_rays_, shadow_rays_, ray_marches_, shadow_marches_, unfinished_;
+    int stride_ = 0;  // entries of each ray array: the pixels rounded up to a whole packet
     size_t local_size_ = 64;
     opencl::BufferHandle texels_, marginal_, conditional_, guide_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
     opencl::BufferHandle measured_;  // brdf::measured_table_data(), or one float for a scene without measured materials

@@ -56,9 +56,10 @@ struct RenderSettings {
     uint64_t seed = 0;
     int local_size = 0;               // OpenCL work-group size; 0: the renderer's default (64, or the kernel's maximum)
     std::string extra_build_options;  // appended to the OpenCL build options (e.g. a -D forcing a cold build)
-    // OpenCL path tracer: march the camera rays eight at a time on the vector lanes first
-    // (kernels/camera_march.cl); false marches each in the path tracer's work-item, to the same bits.
-    bool camera_packets = true;
+    // OpenCL path tracer: the wavefront, whose packet kernels march eight rays at a time on the vector
+    // lanes (kernels/path_tracer_wavefront.h); false: every ray marched in its path's work-item (the
+    // same bits, slower on a CPU).
+    bool packets = true;
 };
 
 // Throws lab::InputError naming the option for a size, depth, step count or over-relaxation out of

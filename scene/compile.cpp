@@ -422,7 +422,7 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
     for (const std::string& h : headers) out << "#include \"" << h << "\"\n";
     out << "\n" << functions.str();
     out << "#ifdef SDF_LANES\n"
-        << "/* The field at SDF_LANES points at once (a packet kernel, kernels/camera_march.cl): the nearest\n"
+        << "/* The field at SDF_LANES points at once (a packet kernel, kernels/march_packets.cl): the nearest\n"
         << " * distance only; a box test skips a group only when it may for every lane. */\n"
         << "SS_FN SDF_FLOAT scene_distance_xyz(SDF_FLOAT px, SDF_FLOAT py, SDF_FLOAT pz) {\n    SDF_FLOAT d = INFINITY;\n";
     if (packet.box_tests()) out << "    SDF_FLOAT b; /* a box test */\n";

@@ -1,0 +1,73 @@
+/* The path tracer as a wavefront on OpenCL: the same paths as kernels/path_tracer.h's trace_path,
+ * with every march taken out of the work-item, so that packet kernels (kernels/march_packets.cl)
+ * march eight rays at a time on the vector lanes. A launch of one sample runs, for every pixel:
+ *
+ *   march_camera_rays;  then, iteration 0, 1, ...:  path_tracer_step;  march_rays (the paths' rays);
+ *   march_rays (their shadow rays);  until a step leaves no ray to march.
+ *
+ * A step resolves the path's pending shadow ray with its march, then takes the march of its ray
+ * and scatters (path_scatter), leaving its next ray and shadow ray in the ray buffers
+ * (kernels/ray_march.h) and its state in `states`. That is trace_path's order of operations, so a
+ * wavefront sample gives the bits of the same sample traced in one work-item (the host's). A path
+ * with nothing left to march adds its radiance to the film, as path_tracer_pixel does. OpenCL only. */
+#ifndef KERNELS_PATH_TRACER_WAVEFRONT_H
+#define KERNELS_PATH_TRACER_WAVEFRONT_H
+
+#include "kernels/path_tracer.h"
+#include "kernels/ray_march.h"
+
+SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int pixel) {
+    MarchResult r;
+    r.t = marches[pixel].t;
+    r.status = marches[pixel].status;
+    r.steps = marches[pixel].steps;
+    return r;
+}
+
+/* One step of the path of pixel `pixel` for sample k->first_sample (k->sample_count is 1). Sets
+ * *unfinished when the path still has a ray or a shadow ray to march. */
+SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel, int iteration,
+                            GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays,
+                            GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches,
+                            GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts,
+                            GLOBAL_MEM volatile uint* unfinished) {
+    MarchSettings s = render_march_settings(k);
+    PathCounters counters;
+    counters.rays = 0u;
+    counters.lost_rays = 0u;
+    PathState p;
+    if (iteration == 0) {
+        Rng rng = rng_make((uint)pixel, (uint)k->first_sample, k->seed_lo, k->seed_hi);
+        float3 origin, direction;
+        camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
+        p = path_begin(origin, direction, rng);
+    } else {
+        if (!states[pixel].active && !states[pixel].shadow.pending) return; /* finished at an earlier step */
+        p = states[pixel];
+        if (p.shadow.pending) {
+            MarchResult r = load_march(shadow_marches, pixel);
+            count_march(r, &counters);
+            path_resolve_shadow(&p, r);
+        }
+    }
+    if (p.active) {
+        MarchResult r = load_march(ray_marches, pixel);
+        count_march(r, &counters);
+        path_scatter(k, s, scene, &p, r);
+    }
+    store_ray(rays, stride, pixel, float3_from_array(p.origin), float3_from_array(p.direction), p.active ? s.max_distance : NO_RAY);
+    store_ray(shadow_rays, stride, pixel, float3_from_array(p.shadow.origin), float3_from_array(p.shadow.direction),
+              p.shadow.pending ? shadow_max_distance(s, p.shadow.distance) : NO_RAY);
+    states[pixel] = p;
+    ray_counts[pixel] += counters.rays;
+    lost_ray_counts[pixel] += counters.lost_rays;
+    if (p.active || p.shadow.pending) {
+        /* every writer writes the same 1: the host needs only whether any path goes on, and a
+         * counter's atomics cost more than the step on a CPU */
+        *unfinished = 1u;
+        return;
+    }
+    accumulation[pixel] = film_add_path(accumulation[pixel], float3_from_array(p.radiance));
+}
+
+#endif

@@ -1,0 +1,30 @@
+/* What the path tracer's wavefront (kernels/path_tracer_wavefront.h) and the packet kernels
+ * (kernels/march_packets.cl) hand each other, one entry per pixel:
+ *  - rays: seven arrays of `stride` floats (origin x, y, z, direction x, y, z, max distance), so that
+ *    a packet kernel loads eight pixels' component at once; a max distance < 0 marks no ray;
+ *  - marches: what each ray's march found (sdf/march_lanes.h's MarchLanes, one lane). */
+#ifndef KERNELS_RAY_MARCH_H
+#define KERNELS_RAY_MARCH_H
+
+#include "single_source/vocabulary.h"
+
+#define RAY_FIELDS 7
+#define NO_RAY -1.0f /* a max distance that marches nothing: the lane is done before it starts */
+
+typedef struct RayMarch {
+    float t;
+    int status;
+    int steps;
+} RayMarch;
+
+SS_FN void store_ray(GLOBAL_MEM float* rays, int stride, int pixel, float3 origin, float3 direction, float max_distance) {
+    rays[pixel] = origin.x;
+    rays[stride + pixel] = origin.y;
+    rays[2 * stride + pixel] = origin.z;
+    rays[3 * stride + pixel] = direction.x;
+    rays[4 * stride + pixel] = direction.y;
+    rays[5 * stride + pixel] = direction.z;
+    rays[6 * stride + pixel] = max_distance;
+}
+
+#endif
