@@ -16,19 +16,29 @@
 #include "kernels/rng.h"
 
 #ifdef BENCH_STANDIN_RNG
-/* One multiply-xorshift hash per number instead of ten Philox rounds for four. */
+/* One multiply-xorshift hash per path in place of the Philox call that seeds it, and one per number
+ * in place of the xoshiro steps. */
 SS_FN uint standin_hash(uint x) {
     x ^= x >> 16;
     x *= 0x7FEB352Du;
     x ^= x >> 15;
     return x;
 }
+SS_FN Rng standin_rng_make(uint pixel, uint sample, uint seed_lo, uint seed_hi) {
+    Rng r;
+    r.s0 = standin_hash(pixel * 0x9E3779B9u ^ sample * 0x85EBCA6Bu ^ seed_lo ^ seed_hi * 0xC2B2AE35u);
+    r.s1 = 0u; /* the draw */
+    r.s2 = 0u;
+    r.s3 = 0u;
+    return r;
+}
 SS_FN float4 standin_rng_next4(Rng* r) {
-    uint h = standin_hash(r->pixel * 0x9E3779B9u ^ r->sample * 0x85EBCA6Bu ^ r->block * 0xC2B2AE35u ^ r->key0);
-    r->block += 1u;
+    uint h = standin_hash(r->s0 ^ r->s1 * 0xC2B2AE35u);
+    r->s1 += 1u;
     uint a = standin_hash(h + 1u), b = standin_hash(h + 2u), c = standin_hash(h + 3u), d = standin_hash(h + 4u);
     return make_float4(uint_to_unit_float(a), uint_to_unit_float(b), uint_to_unit_float(c), uint_to_unit_float(d));
 }
+#define rng_make(pixel, sample, seed_lo, seed_hi) standin_rng_make(pixel, sample, seed_lo, seed_hi)
 #define rng_next4(r) standin_rng_next4(r)
 #endif
 
