@@ -33,7 +33,11 @@ OpenClRenderer::OpenClRenderer(const opencl::Runtime& runtime, RenderInput input
     initialize();
 }
 
-bool OpenClRenderer::wavefront() const { return input_.settings.integrator == Integrator::pt && input_.settings.packets; }
+// On a CPU only: on a GPU, whose work-items are the SIMD lanes already, eight rays per work-item and
+// a launch per step made the path tracer 8 to 20 times slower (docs/render.md, "On a GPU").
+bool OpenClRenderer::wavefront() const {
+    return input_.settings.integrator == Integrator::pt && input_.settings.packets && runtime_.device().type == "cpu";
+}
 
 std::string OpenClRenderer::device_description() const { return runtime_.device().description(); }
 

@@ -56,9 +56,9 @@ struct RenderSettings {
     uint64_t seed = 0;
     int local_size = 0;               // OpenCL work-group size; 0: the renderer's default (64, or the kernel's maximum)
     std::string extra_build_options;  // appended to the OpenCL build options (e.g. a -D forcing a cold build)
-    // OpenCL path tracer: the wavefront, whose packet kernels march eight rays at a time on the vector
-    // lanes (kernels/path_tracer_wavefront.h); false: every ray marched in its path's work-item (the
-    // same bits, slower on a CPU).
+    // OpenCL path tracer on a CPU device: the wavefront, whose packet kernels march eight rays at a
+    // time on the vector lanes (kernels/path_tracer_wavefront.h); false, or a GPU: every ray marched
+    // in its path's work-item (the same bits).
     bool packets = true;
 };
 
