@@ -184,7 +184,7 @@ TEST_CASE("xoshiro128** matches its reference implementation", "[rng]") {
     CHECK(rng::rng_next_uint(&r) == 5927040u);
 }
 
-TEST_CASE("Floats fill [0, 1) and never reach 1", "[rng]") {
+TEST_CASE("Floats fill the unit interval from 0 up and never reach 1", "[rng]") {
     CHECK(rng::uint_to_unit_float(0u) == 0.0f);
     CHECK(rng::uint_to_unit_float(~0u) == 1.0f - 0x1.0p-24f);
     CHECK(rng::uint_to_unit_float(~0u) < 1.0f);
