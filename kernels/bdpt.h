@@ -122,7 +122,6 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
                       GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* splat, GLOBAL_MEM uint* ray_counts,
                       GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings s_march = render_march_settings(k);
-    float x = (float)(pixel % camera->width), y = (float)(pixel / camera->width);
     float4 sum = accumulation[pixel];
     PathCounters counters;
     counters.rays = 0u;
@@ -134,7 +133,7 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
         Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
         /* t = 1 alone (the light tracer) needs no camera subpath: its lens vertex is sampled per connection */
         bool camera_strategies = (k->strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
-        int n_cam = camera_strategies ? bdpt_camera_subpath(k, s_march, camera, scene, x, y, &rng, cam, max_vertices, &counters) : 1;
+        int n_cam = camera_strategies ? bdpt_camera_subpath(k, s_march, camera, scene, pixel, &rng, cam, max_vertices, &counters) : 1;
         int n_light = k->light_count > 0 ? bdpt_light_subpath(k, s_march, scene, &rng, light, max_vertices - 1, &counters) : 0;
         float3 l = float3_splat(0.0f);
         bool finite = true;

@@ -77,13 +77,12 @@ SS_FN int bdpt_random_walk(const RenderKernelSettings* k, MarchSettings s, const
     return count;
 }
 
-/* The camera subpath through raster (x, y) (the pixel's corner; jittered here): the lens vertex,
- * then the walk in radiance mode. Draws its numbers in the path tracer's order (pixel, lens). */
-SS_FN int bdpt_camera_subpath(const RenderKernelSettings* k, MarchSettings s, const Camera* camera, const RenderScene* scene, float x,
-                              float y, Rng* rng, PathVertex* path, int max_count, PathCounters* counters) {
-    float4 u = rng_next4(rng);
+/* The camera subpath of pixel `pixel`, its ray drawn as the path tracer draws it (camera_pixel_ray):
+ * the lens vertex, then the walk in radiance mode. */
+SS_FN int bdpt_camera_subpath(const RenderKernelSettings* k, MarchSettings s, const Camera* camera, const RenderScene* scene, int pixel,
+                              Rng* rng, PathVertex* path, int max_count, PathCounters* counters) {
     float3 origin, direction;
-    camera_generate_ray(camera, x + u.x, y + u.y, make_float2(u.z, u.w), &origin, &direction);
+    camera_pixel_ray(camera, pixel, rng, &origin, &direction);
     /* beta: W_e / (pdf_position pdf_direction) = 1 for the box filter */
     path[0] = camera_vertex(camera, origin, float3_splat(1.0f));
     float pdf_position, pdf_direction;
