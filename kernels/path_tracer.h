@@ -174,20 +174,16 @@ SS_FN void path_resolve_shadow(PathState* p, MarchResult r) {
     if (shadow_reached(&p->shadow, r)) float3_to_array(float3_from_array(p->radiance) + float3_from_array(p->shadow.contribution), p->radiance);
 }
 
-/* Radiance arriving at `origin` from `direction`, estimated by one path whose first ray's march is
- * `first`: each vertex's shadow ray is marched right after it scatters. */
-SS_FN float3 trace_path(const RenderKernelSettings* k, const RenderScene* scene, float3 origin, float3 direction, MarchResult first, Rng* rng,
+/* Radiance arriving at `origin` from `direction`, estimated by one path drawing its numbers from
+ * `rng`: each vertex's shadow ray is marched right after it scatters. */
+SS_FN float3 trace_path(const RenderKernelSettings* k, MarchSettings s, const RenderScene* scene, float3 origin, float3 direction, Rng rng,
                         PathCounters* counters) {
-    MarchSettings s = render_march_settings(k);
-    PathState p = path_begin(origin, direction, *rng);
-    MarchResult m = first;
+    PathState p = path_begin(origin, direction, rng);
     for (;;) {
-        path_scatter(k, s, scene, &p, m);
+        path_scatter(k, s, scene, &p, trace_ray(float3_from_array(p.origin), float3_from_array(p.direction), s, counters));
         if (p.shadow.pending) path_resolve_shadow(&p, trace_shadow_ray(&p.shadow, s, counters));
         if (!p.active) break;
-        m = trace_ray(float3_from_array(p.origin), float3_from_array(p.direction), s, counters);
     }
-    *rng = p.rng;
     return float3_from_array(p.radiance);
 }
 
@@ -212,8 +208,7 @@ SS_FN void path_tracer_pixel(const RenderKernelSettings* k, const Camera* camera
         Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
         float3 origin, direction;
         camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-        MarchResult first = trace_ray(origin, direction, s, &counters);
-        sum = film_add_path(sum, trace_path(k, scene, origin, direction, first, &rng, &counters));
+        sum = film_add_path(sum, trace_path(k, s, scene, origin, direction, rng, &counters));
     }
     accumulation[pixel] = sum;
     ray_counts[pixel] += counters.rays;
