@@ -23,10 +23,15 @@ std::string components_literal(Vec3 v) { return float_literal(v.x) + ", " + floa
 
 std::string vec3_literal(Vec3 v) { return "make_float3(" + components_literal(v) + ")"; }
 
-// The distance functions take the point as three floats ("px, py, pz" for the point named "p"):
-// generated code without float3 arithmetic is what LLVM's loop vectoriser can run across
-// work-items (sdf/primitives/sphere.h). Normals keep float3.
+// The distance functions take the point as three SDF_FLOATs ("px, py, pz" for the point named "p"),
+// one point or, under SDF_LANES, a packet of eight (docs/sdf.md, "Component forms and packets").
+// Normals keep float3.
 std::string components(const std::string& p) { return p + "x, " + p + "y, " + p + "z"; }
+
+// The components of p - c: "px - cx, py - cy, pz - cz".
+std::string offset_components(Vec3 c) {
+    return "px - " + float_literal(c.x) + ", py - " + float_literal(c.y) + ", pz - " + float_literal(c.z);
+}
 
 // A primitive's sdf/ header, its function name stem (fX / nX) and its arguments after p.
 struct PrimitiveCall {
@@ -292,8 +297,7 @@ private:
 
     // fBox at p - center, in components.
     static std::string box_distance(Vec3 center, Vec3 half) {
-        return "fBox_xyz(px - " + float_literal(center.x) + ", py - " + float_literal(center.y) + ", pz - " + float_literal(center.z) + ", " +
-               components_literal(half) + ")";
+        return "fBox_xyz(" + offset_components(center) + ", " + components_literal(half) + ")";
     }
 
     // The tree in two passes, both straight-line code with literal boxes (a loop over a stack and a
@@ -398,8 +402,7 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
         const EmitterSphere& e = scene.emitters[i];
         headers.insert("sdf/primitives/sphere.h");
         std::string local = "p - " + vec3_literal(e.center);
-        std::string distance = "fSphere_xyz(px - " + float_literal(e.center.x) + ", py - " + float_literal(e.center.y) + ", pz - " +
-                               float_literal(e.center.z) + ", " + float_literal(e.radius) + ")";
+        std::string distance = "fSphere_xyz(" + offset_components(e.center) + ", " + float_literal(e.radius) + ")";
         nearest.candidate(distance, int(index), "    ");
         packet.candidate(distance, int(index), "    ");
         slot_cases << "    case " << index << ": return " << e.material << ";\n";
