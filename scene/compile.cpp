@@ -241,8 +241,9 @@ bool worth_bounding(const Object& object, const ShapeAnalysis& a) {
 class NearestWriter {
 public:
     // packet: the body of the packet kernels' scene_distance_xyz (SDF_LANES points at once): the
-    // nearest distance only, a box test skips a group only when it may for every lane, and no guess
-    // (its choice of child differs from lane to lane).
+    // nearest distance only; a box test skips a group only when it may for every active lane (the
+    // march's running lanes: a lane that is done would keep its own object's group in every step),
+    // and the guess goes down the child nearer to the active lanes on the whole.
     NearestWriter(const Scene& scene, bool object_bounds, bool packet, std::set<std::string>* headers) : headers_(headers), packet_(packet) {
         std::vector<ObjectBox> boxes;
         std::vector<ShapeAnalysis> analyses;
@@ -308,10 +309,10 @@ private:
     void traversal(const std::vector<ObjectTreeNode>& tree) {
         // The guess's box tests pay on a large tree only: 1.95x paths/s on the 64-object grid, 0.92x
         // on the primitives scene (a tree of a few objects, 1.27 evaluations per step without it).
-        if (packet_ || tree.size() < 2 * kGuessMinObjects - 1) return node(tree, 0, "    ");
+        if (tree.size() < 2 * kGuessMinObjects - 1) return node(tree, 0, "    ");
         guessed_ = true;
         open_test(0.5f * (tree[0].lo + tree[0].hi), 0.5f * (tree[0].hi - tree[0].lo), "    ");
-        body_ << "        int g;\n        float b_left, b_right; /* the guess */\n";
+        body_ << "        int g;\n        " << (packet_ ? "SDF_FLOAT" : "float") << " b_left, b_right; /* the guess */\n";
         guess(tree, 0, "        ");
         const ObjectTreeNode& root = tree[0];
         node(tree, root.left, "        ");
@@ -325,9 +326,11 @@ private:
             body_ << indent << "g = " << n.object << ";\n";
             return candidate("scene_object_" + std::to_string(n.object) + "(px, py, pz)", n.object, indent);
         }
+        // a packet takes one child for all its lanes: the one nearer in the sum over the active lanes
         body_ << indent << "b_left = " << box_distance(tree[size_t(n.left)]) << ";\n"
               << indent << "b_right = " << box_distance(tree[size_t(n.right)]) << ";\n"
-              << indent << "if (b_left <= b_right) {\n";
+              << indent
+              << (packet_ ? "if (SDF_SUM(select((SDF_FLOAT)0.0f, b_left - b_right, active)) <= 0.0f) {\n" : "if (b_left <= b_right) {\n");
         guess(tree, n.left, indent + "    ");
         body_ << indent << "} else {\n";
         guess(tree, n.right, indent + "    ");
@@ -358,7 +361,7 @@ private:
             if (!std::isfinite(half[i])) half[i] = 3.0e38f;
         headers_->insert("sdf/primitives/box.h");
         body_ << indent << "b = " << box_distance(center, half) << ";\n"
-              << indent << (packet_ ? "if (SDF_ANY(!(b > 0.0f && b > d))) {\n" : "if (!(b > 0.0f && b > d)) {\n");
+              << indent << (packet_ ? "if (SDF_ANY(active && !(b > 0.0f && b > d))) {\n" : "if (!(b > 0.0f && b > d)) {\n");
         ++box_tests_;
     }
 
@@ -426,9 +429,10 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, c
     out << "\n" << functions.str();
     out << "#ifdef SDF_LANES\n"
         << "/* The field at SDF_LANES points at once (a packet kernel, kernels/march_packets.cl): the nearest\n"
-        << " * distance only; a box test skips a group only when it may for every lane. */\n"
-        << "SS_FN SDF_FLOAT scene_distance_xyz(SDF_FLOAT px, SDF_FLOAT py, SDF_FLOAT pz) {\n    SDF_FLOAT d = INFINITY;\n";
-    if (packet.box_tests()) out << "    SDF_FLOAT b; /* a box test */\n";
+        << " * distance only, exact in the lanes of `active`; a box test skips a group only when it may for\n"
+        << " * every one of them. */\n"
+        << "SS_FN SDF_FLOAT scene_distance_xyz(SDF_FLOAT px, SDF_FLOAT py, SDF_FLOAT pz, SDF_MASK active) {\n    SDF_FLOAT d = INFINITY;\n";
+    out << (packet.box_tests() ? "    SDF_FLOAT b; /* a box test */\n" : "    (void)active;\n");
     out << packet.body() << "    return d;\n}\n\n#else /* one point at a time */\n\n" << normals.str();
     // A measurement build (-DSCENE_COUNT_EVALUATIONS, `dtoadq bench breakdown`) counts the distance
     // functions evaluated; the default build has no counter at all.

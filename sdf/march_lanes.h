@@ -9,7 +9,8 @@
  *
  * Needs the scene's field declared before it is included: scene_distance(float3) for one lane
  * (the generated scene source in a kernel; on the host see sdf/sdf.hpp), scene_distance_xyz with
- * SDF_FLOAT components for a packet (the generated source's packet form). */
+ * SDF_FLOAT components and the mask of the lanes whose distance counts for a packet (the generated
+ * source's packet form; a lane that is done gets a distance that may be too large, never used). */
 #ifndef SDF_MARCH_LANES_H
 #define SDF_MARCH_LANES_H
 
@@ -17,12 +18,13 @@
 #include "sdf/march_settings.h"
 
 #if defined(SDF_LANES)
-#define MARCH_LANES_DISTANCE(x, y, z, evaluations) scene_distance_xyz(x, y, z)
+/* the lanes still running: the box tests of the packet field heed only them */
+#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance_xyz(x, y, z, running)
 #elif defined(SCENE_COUNT_EVALUATIONS)
 /* a measurement build (`dtoadq bench breakdown`): the distance functions evaluated are counted */
-#define MARCH_LANES_DISTANCE(x, y, z, evaluations) scene_distance_counted(make_float3(x, y, z), evaluations)
+#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance_counted(make_float3(x, y, z), evaluations)
 #else
-#define MARCH_LANES_DISTANCE(x, y, z, evaluations) scene_distance(make_float3(x, y, z))
+#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance(make_float3(x, y, z))
 #endif
 
 typedef struct MarchLanes {
@@ -62,7 +64,7 @@ SS_FN MarchLanes march_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT
     SDF_FLOAT r_prev = 0.0f;
     SDF_FLOAT step = 0.0f;
     for (int i = 0; i < s.max_steps && SDF_ANY(running); ++i) {
-        SDF_FLOAT d = MARCH_LANES_DISTANCE(ox + vx * m.t, oy + vy * m.t, oz + vz * m.t, evaluations) * inv_lipschitz;
+        SDF_FLOAT d = MARCH_LANES_DISTANCE(ox + vx * m.t, oy + vy * m.t, oz + vz * m.t, running, evaluations) * inv_lipschitz;
         m.steps = select(m.steps, m.steps + (SDF_MASK)1, running);
         if (i == 0) side = select((SDF_FLOAT)1.0f, (SDF_FLOAT)-1.0f, d < 0.0f);
         SDF_FLOAT r = side * d; /* > 0 on the starting side */
