@@ -6,10 +6,8 @@
 
 #include "scene/generated.h"
 
-#include "kernels/camera.h"
 #include "kernels/ray_march.h"
 #include "kernels/render_settings.h"
-#include "kernels/rng.h"
 #include "sdf/march_lanes.h"
 
 SS_FN void store_marches(MarchLanes m, int first, int pixels, __global RayMarch* marches) {
@@ -23,28 +21,6 @@ SS_FN void store_marches(MarchLanes m, int first, int pixels, __global RayMarch*
         marches[first + lane].status = status[lane];
         marches[first + lane].steps = steps[lane];
     }
-}
-
-/* The camera rays of sample settings.first_sample, drawn as the path tracer draws them
- * (camera_pixel_ray); a lane past the image marches its packet's first pixel again. */
-__kernel void march_camera_rays(RenderKernelSettings settings, Camera camera, __global RayMarch* marches) {
-    int first = 8 * (int)get_global_id(0);
-    int pixels = camera.width * camera.height;
-    if (first >= pixels) return;
-    float o[3][8], v[3][8];
-    for (int lane = 0; lane < 8; ++lane) {
-        int pixel = first + lane < pixels ? first + lane : first;
-        Rng rng = rng_make((uint)pixel, (uint)settings.first_sample, settings.seed_lo, settings.seed_hi);
-        float3 origin, direction;
-        camera_pixel_ray(&camera, pixel, &rng, &origin, &direction);
-        o[0][lane] = origin.x, o[1][lane] = origin.y, o[2][lane] = origin.z;
-        v[0][lane] = direction.x, v[1][lane] = direction.y, v[2][lane] = direction.z;
-    }
-    uint evaluations = 0u; /* counted only by a one-lane measurement build */
-    MarchSettings s = render_march_settings(&settings);
-    MarchLanes m = march_lanes(vload8(0, o[0]), vload8(0, o[1]), vload8(0, o[2]), vload8(0, v[0]), vload8(0, v[1]), vload8(0, v[2]), 0.0f,
-                               s.max_distance, s, &evaluations);
-    store_marches(m, first, pixels, marches);
 }
 
 /* The rays of `rays` (kernels/ray_march.h; `stride`: a multiple of 8 at least `pixels`). */

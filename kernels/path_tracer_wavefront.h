@@ -2,14 +2,17 @@
  * with every march taken out of the work-item, so that packet kernels (kernels/march_packets.cl)
  * march eight rays at a time on the vector lanes. A launch of one sample runs, for every pixel:
  *
- *   march_camera_rays;  then, iteration 0, 1, ...:  path_tracer_step;  march_rays (the paths' rays);
- *   march_rays (their shadow rays);  until a step leaves no ray to march.
+ *   path_tracer_step (iteration 0: the camera ray);  then  march_rays (the paths' rays);
+ *   march_rays (their shadow rays);  path_tracer_step (iteration 1, 2, ...);  ...
  *
- * A step resolves the path's pending shadow ray with its march, then takes the march of its ray
- * and scatters (path_scatter), leaving its next ray and shadow ray in the ray buffers
+ * until a step leaves no ray to march. Iteration 0 begins the path with its camera ray; a later
+ * step resolves the path's pending shadow ray with its march, then takes the march of its ray and
+ * scatters (path_scatter), leaving its next ray and shadow ray in the ray buffers
  * (kernels/ray_march.h) and its state in `states`. That is trace_path's order of operations, so a
  * wavefront sample gives the bits of the same sample traced in one work-item (the host's). A path
- * with nothing left to march adds its radiance to the film, as path_tracer_pixel does. OpenCL only. */
+ * with nothing left to march adds its radiance to the film, as path_tracer_pixel does. Every
+ * pixel's path is at the same step, so the rays of a packet (neighbouring pixels) stay alike.
+ * OpenCL only. */
 #ifndef KERNELS_PATH_TRACER_WAVEFRONT_H
 #define KERNELS_PATH_TRACER_WAVEFRONT_H
 
@@ -40,7 +43,7 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
         Rng rng = rng_make((uint)pixel, (uint)k->first_sample, k->seed_lo, k->seed_hi);
         float3 origin, direction;
         camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-        p = path_begin(origin, direction, rng);
+        p = path_begin(origin, direction, rng); /* its camera ray is marched before the next step */
     } else {
         if (!states[pixel].active && !states[pixel].shadow.pending) return; /* finished at an earlier step */
         p = states[pixel];
@@ -49,11 +52,11 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
             count_march(r, &counters);
             path_resolve_shadow(&p, r);
         }
-    }
-    if (p.active) {
-        MarchResult r = load_march(ray_marches, pixel);
-        count_march(r, &counters);
-        path_scatter(k, s, scene, &p, r);
+        if (p.active) {
+            MarchResult r = load_march(ray_marches, pixel);
+            count_march(r, &counters);
+            path_scatter(k, s, scene, &p, r);
+        }
     }
     store_ray(rays, stride, pixel, float3_from_array(p.origin), float3_from_array(p.direction), p.active ? s.max_distance : NO_RAY);
     store_ray(shadow_rays, stride, pixel, float3_from_array(p.shadow.origin), float3_from_array(p.shadow.direction),

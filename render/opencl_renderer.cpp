@@ -61,7 +61,6 @@ void OpenClRenderer::build_kernel() {
     if (wavefront()) {
         step_kernel_ = program_->kernel("render_pt_step");
         packet_program_.emplace(runtime_.build(scene::assemble_scene_kernel("kernels/march_packets.cl", compiled_), options + " -DSDF_LANES=8"));
-        march_camera_rays_ = packet_program_->kernel("march_camera_rays");
         march_rays_ = packet_program_->kernel("march_rays");
     }
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -162,18 +161,16 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pi
     runtime_.finish();
 }
 
-// kernels/path_tracer_wavefront.h's loop: the camera rays' packets, then steps and the packets of
-// their rays and shadow rays until no path has anything left to march.
+// kernels/path_tracer_wavefront.h's loop: steps, and the packets of their rays and shadow rays,
+// until no path has anything left to march.
 void OpenClRenderer::launch_wavefront_sample(const kernel::RenderKernelSettings& k, PixelRange pixels) {
     const int image = input_.settings.width * input_.settings.height;
     // eight pixels a work-item: a range of whole granules of 64 pixels is one of granules of 8
     const PixelRange packets{pixels.first / 8, (pixels.count + 7) / 8};
     const size_t packet_local = std::max<size_t>(1, local_size_ / 8), packet_total = size_t(image + 7) / 8;
-    opencl::set_kernel_args(march_camera_rays_, k, camera_, ray_marches_);
-    launch_range(march_camera_rays_, packets, packet_local, packet_total);
     for (int iteration = 0;; ++iteration) {
-        // every path ends by max_depth scattering events, its last shadow ray one step later
-        if (iteration > k.max_depth + 2) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 2 steps");
+        // the camera ray, max_depth scattering events, and the last shadow ray one step later
+        if (iteration > k.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
         const cl_uint zero = 0;
         runtime_.write(unfinished_, &zero, sizeof(zero));
         cl_uint a = bind_render_arguments(step_kernel_, k);
