@@ -86,4 +86,15 @@ CubemapDistribution build_cubemap_distribution(const std::vector<brdf::float4>& 
     return d;
 }
 
+void store_texel_probabilities(const CubemapDistribution& d, int face_size, std::vector<brdf::float4>* texels) {
+    const int n = face_size, rows = CUBEMAP_FACES * n;
+    if (n <= 0 || texels->size() != size_t(rows) * size_t(n) || d.marginal_cdf.size() != size_t(rows) + 1 ||
+        d.conditional_cdf.size() != size_t(rows) * size_t(n + 1))
+        throw std::invalid_argument("store_texel_probabilities: texels or cdfs do not match the face size");
+    for (int r = 0; r < rows; ++r)
+        for (int i = 0; i < n; ++i)
+            (*texels)[size_t(r) * n + i].w =
+                ::ibl::distribution2d_probability(d.marginal_cdf.data(), d.conditional_cdf.data(), n, r, i);
+}
+
 }  // namespace lab::ibl

@@ -44,4 +44,9 @@ struct CubemapDistribution {
 // without light falls back to solid angles everywhere: uniform over the sphere.
 CubemapDistribution build_cubemap_distribution(const std::vector<brdf::float4>& texels, int face_size);
 
+// Writes into every texel's w its probability under `d`: distribution2d_probability() of the
+// cdfs, the very float the sampler realises, which environment_pdf() reads back (ibl/environment.h).
+// Must run again whenever the texels or their distribution change.
+void store_texel_probabilities(const CubemapDistribution& d, int face_size, std::vector<brdf::float4>* texels);
+
 }  // namespace lab::ibl

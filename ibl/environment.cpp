@@ -109,6 +109,7 @@ Environment::Environment(std::vector<brdf::float4> texels, int face_size, std::s
     for (const brdf::float4& t : texels_) brightest_ = std::max({brightest_, t.x, t.y, t.z});
     set_transform(options.rotation_degrees, options.exposure_stops);
     CubemapDistribution d = build_cubemap_distribution(texels_, face_size);
+    store_texel_probabilities(d, face_size, &texels_);  // environment_pdf() reads them
     marginal_cdf_ = std::move(d.marginal_cdf);
     conditional_cdf_ = std::move(d.conditional_cdf);
     guide_ = std::move(d.guide);
@@ -156,11 +157,12 @@ brdf::float3 Environment::radiance_filtered(brdf::float3 direction) const {
 }
 
 brdf::float3 Environment::sample(float u1, float u2, float* pdf) const {
-    return ::ibl::environment_sample(&map_, marginal_cdf_.data(), conditional_cdf_.data(), guide_.data(), u1, u2, pdf);
+    return ::ibl::environment_sample(&map_, texels_.data(), marginal_cdf_.data(), conditional_cdf_.data(), guide_.data(), u1, u2,
+                                     pdf);
 }
 
 float Environment::pdf(brdf::float3 direction) const {
-    return ::ibl::environment_pdf(&map_, marginal_cdf_.data(), conditional_cdf_.data(), direction);
+    return ::ibl::environment_pdf(&map_, texels_.data(), direction);
 }
 
 LatLongImage read_latlong_image(const std::string& path) {

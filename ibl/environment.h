@@ -2,9 +2,13 @@
  * sampling of its texels (ibl/distribution2d.h). The same code runs in kernels and on the host.
  *
  * Buffers (built by lab::ibl::Environment, ibl/environment.hpp), for face size N:
- *   texels       6 N^2 float4: linear RGB radiance (w unused), index (face * N + j) * N + i;
- *                each texel holds the average radiance over its solid angle and is read with the
- *                nearest-texel rule, so the radiance is constant on every texel;
+ *   texels       6 N^2 float4, index (face * N + j) * N + i: xyz the linear RGB radiance, the
+ *                average over the texel's solid angle, read with the nearest-texel rule, so the
+ *                radiance is constant on every texel; w the texel's probability under the sampler,
+ *                distribution2d_probability() of the cdfs below, stored by the host when it builds
+ *                them (lab::ibl::Environment), so that environment_pdf() reads the one cache line
+ *                environment_radiance() reads for the same direction instead of three or four more
+ *                in the cdfs (which, at N = 256, do not fit a CPU's L2 cache beside the texels);
  *   marginal     6N + 1 floats: cdf over the 6N rows of the faces stacked top to bottom
  *                (row r = face * N + j);
  *   conditional  6N (N + 1) floats: per row, the cdf over its N texels;
@@ -83,15 +87,15 @@ SS_FN float environment_texel_density(int face_size, float probability, float a,
     return probability / texel_area * cubemap_area_per_solid_angle(a, b);
 }
 
-/* Solid-angle density with which environment_sample() returns world direction `direction`. */
-SS_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
-                              GLOBAL_MEM const float* conditional_cdf, float3 direction) {
+/* Solid-angle density with which environment_sample() returns world direction `direction`: the
+ * probability of its texel, stored in the texel's w (the top of this file), as a density. */
+SS_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
     int n = env->face_size;
     float a, b;
     int face = cubemap_face(environment_to_local(env, direction), &a, &b);
     int i = cubemap_texel_coordinate(n, a);
     int j = cubemap_texel_coordinate(n, b);
-    float probability = distribution2d_probability(marginal_cdf, conditional_cdf, n, face * n + j, i);
+    float probability = texels[(face * n + j) * n + i].w;
     return environment_texel_density(n, probability, a, b);
 }
 
@@ -101,7 +105,7 @@ SS_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float* m
  * is the drawn texel's density except on a texel edge, where rounding in the normalisation and
  * rotation may move the direction into the neighbour: then *pdf is the neighbour's, the texel
  * environment_radiance() reads, so radiance / pdf never mixes two texels. */
-SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf,
+SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, GLOBAL_MEM const float* marginal_cdf,
                                   GLOBAL_MEM const float* conditional_cdf, GLOBAL_MEM const ushort* guide, float u1, float u2,
                                   float* pdf) {
     int n = env->face_size;
@@ -114,7 +118,7 @@ SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const floa
     float a = -1.0f + 2.0f * ((float)column + column_offset) / (float)n;
     float b = -1.0f + 2.0f * ((float)j + row_offset) / (float)n;
     float3 direction = environment_to_world(env, normalize(cubemap_face_point(face, a, b)));
-    *pdf = environment_pdf(env, marginal_cdf, conditional_cdf, direction);
+    *pdf = environment_pdf(env, texels, direction);
     return direction;
 }
 

@@ -33,7 +33,8 @@ public:
 
     // What a kernel gets: the struct by value and four __global buffers.
     const ::ibl::EnvironmentMap& map() const { return map_; }
-    const std::vector<brdf::float4>& texels() const { return texels_; }  // 6 N^2, radiance before intensity
+    // 6 N^2: xyz the radiance before intensity, w the texel's probability (ibl/environment.h)
+    const std::vector<brdf::float4>& texels() const { return texels_; }
     const std::vector<float>& marginal_cdf() const { return marginal_cdf_; }
     const std::vector<float>& conditional_cdf() const { return conditional_cdf_; }
     const std::vector<unsigned short>& guide() const { return guide_; }  // the cdfs' guide tables
@@ -44,8 +45,9 @@ public:
     // Turns and scales the environment anew: absolute values, as EnvironmentOptions gives them
     // (InputError naming the source for a non-finite rotation, an exposure outside [-64, 64], or one
     // that makes the brightest radiance overflow a float).
-    // Only the kernel argument map() changes: the texels and their distribution stay, since the
-    // rotation turns directions and the intensity scales every texel alike.
+    // Only the kernel argument map() changes: the texels, their distribution and the probabilities
+    // in the texels' w stay, since the rotation turns directions and the intensity scales every
+    // texel alike. (The texels are set only by the constructor, which fills w.)
     void set_transform(float rotation_degrees, float exposure_stops);
     float rotation_degrees() const { return rotation_degrees_; }
     float exposure_stops() const { return exposure_stops_; }

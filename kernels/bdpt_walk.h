@@ -139,8 +139,8 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* k, MarchSettings s, con
         origin = v.p;
         le = float3_from_array(light.emission);
     } else {
-        float3 wi = environment_sample(&scene->env, scene->env_buffers.marginal_cdf, scene->env_buffers.conditional_cdf, scene->env_buffers.guide, u_dir.x, u_dir.y,
-                                       &pdf_dir);
+        EnvironmentBuffers eb = scene->env_buffers;
+        float3 wi = environment_sample(&scene->env, eb.texels, eb.marginal_cdf, eb.conditional_cdf, eb.guide, u_dir.x, u_dir.y, &pdf_dir);
         if (!(pdf_dir > 0.0f)) return 0;
         v.type = VERTEX_ENVIRONMENT;
         v.p = wi;

@@ -33,9 +33,9 @@ __kernel void environment_batch(int count, EnvironmentMap env, __global const fl
     radiance[3 * i] = l.x;
     radiance[3 * i + 1] = l.y;
     radiance[3 * i + 2] = l.z;
-    pdf[i] = environment_pdf(&env, marginal, conditional, d);
+    pdf[i] = environment_pdf(&env, texels, d);
     float p;
-    float3 w = environment_sample(&env, marginal, conditional, guide, u[2 * i], u[2 * i + 1], &p);
+    float3 w = environment_sample(&env, texels, marginal, conditional, guide, u[2 * i], u[2 * i + 1], &p);
     sampled[3 * i] = w.x;
     sampled[3 * i + 1] = w.y;
     sampled[3 * i + 2] = w.z;

@@ -7,8 +7,9 @@
 #include "ibl/environment.h"
 #include "kernels/lights/light.h"
 
-/* The environment's four buffers (ibl/environment.h): texels, marginal and conditional cdfs, and
- * the cdfs' guide tables. */
+/* The environment's four buffers (ibl/environment.h): texels (radiance, and in w the texel's
+ * probability, which environment_pdf reads), marginal and conditional cdfs, and the cdfs' guide
+ * tables (which only the sampler reads). */
 typedef struct EnvironmentBuffers {
     GLOBAL_MEM const float4* texels;
     GLOBAL_MEM const float* marginal_cdf;
@@ -19,7 +20,7 @@ typedef struct EnvironmentBuffers {
 SS_FN LightSample environment_light_sample(const EnvironmentMap* env, EnvironmentBuffers b, float2 u) {
     LightSample s = light_sample_none();
     float pdf;
-    float3 wi = environment_sample(env, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y, &pdf);
+    float3 wi = environment_sample(env, b.texels, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y, &pdf);
     if (!(pdf > 0.0f)) return s;
     s.wi = wi;
     s.distance = LIGHT_INFINITE_DISTANCE;
@@ -31,7 +32,7 @@ SS_FN LightSample environment_light_sample(const EnvironmentMap* env, Environmen
 }
 
 SS_FN float environment_light_pdf(const EnvironmentMap* env, EnvironmentBuffers b, float3 wi) {
-    return environment_pdf(env, b.marginal_cdf, b.conditional_cdf, wi);
+    return environment_pdf(env, b.texels, wi);
 }
 
 #endif
