@@ -3,6 +3,9 @@
 // child process, the two interleaved and repeated, and the paths/s come from what every render
 // writes into its EXR (dtoadq:spp and dtoadq:seconds, in every build since the render core), so
 // an older build needs no new option to be measured. The median of the repeats is reported.
+// Then the same for `bench objects`' grids of N objects (cli/bench_grid.hpp), written as scene
+// files for both builds: the cost per path of one more object in each build, fitted over N, and
+// their ratio (issue 12's per-object target is below 1/3 against the build before the speed work).
 // Figures, not timed tests.
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,10 +13,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "cli/bench_grid.hpp"
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
 #include "film/image_metadata.hpp"
@@ -33,6 +38,8 @@ struct BenchCompareCommand {
     double seconds = 3.0;
     int repeats = 3;
     std::vector<std::string> extra;  // more arguments for both builds' render
+    std::vector<int> object_counts{1, 2, 4, 8, 16, 32, 64};
+    bool objects = true;
 };
 
 // Runs `argv` with standard output and error sent to /dev/null; its exit status, or -1.
@@ -64,8 +71,9 @@ int metadata_int(const film::ImageMetadata& m, const std::string& key, const std
 }
 
 // paths/s of one `render --time` of `exe`, from its EXR's metadata.
-double render_paths_per_second(const std::string& exe, const BenchCompareCommand& c, const std::string& scene, const fs::path& out) {
-    std::vector<std::string> argv = {exe, "render", scene, "--size", c.size, "--time", std::to_string(c.seconds), "--quiet", "-o", out.string()};
+double render_paths_per_second(const std::string& exe, const BenchCompareCommand& c, const std::string& scene, const fs::path& out,
+                               double seconds) {
+    std::vector<std::string> argv = {exe, "render", scene, "--size", c.size, "--time", std::to_string(seconds), "--quiet", "-o", out.string()};
     // lit like the other benches: a scene with no light of its own under envmaps/courtyard.exr
     scene::Scene loaded = scene::load_scene(scene);
     if (!loaded.environment && loaded.emitters.empty() && loaded.point_lights.empty())
@@ -77,8 +85,8 @@ double render_paths_per_second(const std::string& exe, const BenchCompareCommand
     film::ImageMetadata m;
     film::ImageRgb image = film::read_image(out.string(), &m);
     int spp = metadata_int(m, "spp", out.string());
-    const film::MetadataValue* seconds = m.find("seconds");
-    double s = seconds && std::holds_alternative<float>(*seconds) ? double(std::get<float>(*seconds)) : 0.0;
+    const film::MetadataValue* rendered = m.find("seconds");
+    double s = rendered && std::holds_alternative<float>(*rendered) ? double(std::get<float>(*rendered)) : 0.0;
     if (!(s > 0.0)) throw InputError(out.string(), "dtoadq:seconds", "missing or not positive");
     return double(spp) * double(image.width) * double(image.height) / s;
 }
@@ -92,21 +100,46 @@ void run_bench_compare(const BenchCompareCommand& c) {
     if (::access(c.other.c_str(), X_OK) != 0) throw InputError(c.other, "", "is not an executable file");
     if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
     if (c.repeats < 1 || c.repeats > 100) throw InputError("--repeats", "", "must be in [1, 100]");
+    for (int n : c.object_counts)
+        if (n < 1 || n > 4096) throw InputError("--object-counts", "", "each count must be in [1, 4096]");
     std::string self = fs::read_symlink("/proc/self/exe").string();
     fs::path folder = fs::temp_directory_path() / ("dtoadq-bench-compare-" + std::to_string(::getpid()));
     fs::create_directories(folder);
     std::printf("bench compare: this build (%s) against %s; %s, render --time %.1f s, median of %d, interleaved\n\n", self.c_str(),
                 c.other.c_str(), c.size.c_str(), c.seconds, c.repeats);
     std::printf("%-28s %16s %16s %10s\n", "scene", "paths/s (this)", "paths/s (other)", "this/other");
-    for (const std::string& scene : c.scenes) {
+    // both builds' median paths/s of one scene file
+    auto both = [&](const std::string& scene, const std::string& name, double* mine_median, double* theirs_median) {
+        // PoCL compiles a kernel's work-group function at its first launch, into its cache: a short
+        // render of each build first, so that no figure pays for that
+        render_paths_per_second(c.other, c, scene, folder / "other.exr", 0.01);
+        render_paths_per_second(self, c, scene, folder / "this.exr", 0.01);
         std::vector<double> mine, theirs;
         for (int r = 0; r < c.repeats; ++r) {
-            theirs.push_back(render_paths_per_second(c.other, c, scene, folder / "other.exr"));
-            mine.push_back(render_paths_per_second(self, c, scene, folder / "this.exr"));
+            theirs.push_back(render_paths_per_second(c.other, c, scene, folder / "other.exr", c.seconds));
+            mine.push_back(render_paths_per_second(self, c, scene, folder / "this.exr", c.seconds));
         }
-        double a = median(mine), b = median(theirs);
-        std::printf("%-28s %16.3g %16.3g %9.2fx\n", fs::path(scene).filename().string().c_str(), a, b, a / b);
+        *mine_median = median(mine);
+        *theirs_median = median(theirs);
+        std::printf("%-28s %16.3g %16.3g %9.2fx\n", name.c_str(), *mine_median, *theirs_median, *mine_median / *theirs_median);
         std::fflush(stdout);
+    };
+    double a, b;
+    for (const std::string& scene : c.scenes) both(scene, fs::path(scene).filename().string(), &a, &b);
+    if (c.objects && c.object_counts.size() >= 2) {
+        std::printf("\n");
+        std::vector<double> n, mine, theirs;
+        for (int count : c.object_counts) {
+            fs::path file = folder / ("grid_" + std::to_string(count) + ".json");
+            std::ofstream(file) << grid_scene_json(count).dump(1);
+            both(file.string(), "grid of " + std::to_string(count) + " objects", &a, &b);
+            n.push_back(double(count));
+            mine.push_back(1e6 / a);
+            theirs.push_back(1e6 / b);
+        }
+        double slope_mine = least_squares_slope(n, mine), slope_theirs = least_squares_slope(n, theirs);
+        std::printf("\ncost per added object: %.4f us/path in this build, %.4f in the other: %.2f of it\n", slope_mine, slope_theirs,
+                    slope_mine / slope_theirs);
     }
     fs::remove_all(folder);
 }
@@ -121,6 +154,8 @@ void register_bench_compare(CLI::App& bench) {
     cmd->add_option("--size", c->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--seconds", c->seconds, "Render time of each figure")->capture_default_str();
     cmd->add_option("--repeats", c->repeats, "Renders per build and scene (the median is reported)")->capture_default_str();
+    cmd->add_option("--object-counts", c->object_counts, "Object counts of the generated grid scenes (bench objects')")->capture_default_str();
+    cmd->add_flag("!--no-objects", c->objects, "Leave out the grids and the cost per added object");
     cmd->add_option("--render-args", c->extra, "More arguments for both builds' render (e.g. --device host)")->allow_extra_args(false);
     cmd->callback([c] { run_bench_compare(*c); });
 }

@@ -12,9 +12,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/bench_convergence.hpp"
+#include "cli/bench_grid.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -35,43 +34,6 @@ struct BenchObjectsCommand {
     int repeats = 2;
 };
 
-// `count` objects on a square grid (spacing 1.2), cycling through a costly blend (a turned rounded
-// box smoothly joined to a torus), a sphere and a capsule; a camera above that sees them all; a
-// constant sky. No floor: rays grazing a plane take hundreds of steps whatever the objects, which
-// would hide what the objects cost.
-scene::Scene grid_scene(int count) {
-    using nlohmann::json;
-    int side = 1;
-    while (side * side < count) ++side;
-    float extent = 0.6f * float(side);
-    json objects = json::array();
-    for (int i = 0; i < count; ++i) {
-        float x = 1.2f * float(i % side) - extent + 0.6f, z = 1.2f * float(i / side) - extent + 0.6f;
-        json shape;
-        if (i % 3 == 0)
-            shape = {{"type", "smooth_union"}, {"radius", 0.1},
-                     {"children", {{{"type", "rotate"}, {"axis", {0, 1, 0}}, {"degrees", 30},
-                                    {"child", {{"type", "round_box"}, {"half_size", {0.25, 0.25, 0.25}}, {"radius", 0.05}}}},
-                                   {{"type", "translate"}, {"offset", {0, 0.3, 0}},
-                                    {"child", {{"type", "torus"}, {"major_radius", 0.3}, {"minor_radius", 0.07}}}}}}};
-        else if (i % 3 == 1)
-            shape = {{"type", "sphere"}, {"radius", 0.35}};
-        else
-            shape = {{"type", "capsule"}, {"radius", 0.2}, {"half_height", 0.2}};
-        objects.push_back({{"name", "object" + std::to_string(i)},
-                           {"material", i % 2 ? "red" : "grey"},
-                           {"shape", {{"type", "translate"}, {"offset", {x, 0.4, z}}, {"child", shape}}}});
-    }
-    json scene = {
-        {"camera", {{"type", "pinhole"}, {"position", {0.0, 1.0 + 1.6 * extent, 2.2 * extent + 1.0}}, {"look_at", {0, 0, 0}}, {"fov_degrees", 50}}},
-        {"environment", {{"constant", {0.8, 0.85, 1.0}}}},
-        {"materials",
-         {{"grey", {{"albedo", {0.6, 0.6, 0.6}}, {"roughness", 0.3}, {"lobes", {{"diffuse", 0.7}, {"glossy", 0.3}}}}},
-          {"red", {{"albedo", {0.7, 0.2, 0.1}}, {"lobes", {{"diffuse", 1}}}}}}},
-        {"objects", objects}};
-    return scene::parse_scene(scene.dump(), "bench grid of " + std::to_string(count) + " objects");
-}
-
 double paths_per_second(const opencl::Runtime& runtime, render::RenderInput input, bool bounds, double seconds) {
     input.settings.object_bounds = bounds;
     render::OpenClRenderer renderer(runtime, input);
@@ -89,15 +51,6 @@ void off_on(const opencl::Runtime& runtime, const render::RenderInput& input, co
         *off = std::max(*off, paths_per_second(runtime, input, false, c.seconds));
         *on = std::max(*on, paths_per_second(runtime, input, true, c.seconds));
     }
-}
-
-// Least-squares slope of y against x.
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
-    double mx = 0.0, my = 0.0;
-    for (size_t i = 0; i < x.size(); ++i) mx += x[i] / double(x.size()), my += y[i] / double(x.size());
-    double sxy = 0.0, sxx = 0.0;
-    for (size_t i = 0; i < x.size(); ++i) sxy += (x[i] - mx) * (y[i] - my), sxx += (x[i] - mx) * (x[i] - mx);
-    return sxx > 0.0 ? sxy / sxx : 0.0;
 }
 
 void run_bench_objects(const BenchObjectsCommand& c) {
@@ -126,7 +79,7 @@ void run_bench_objects(const BenchObjectsCommand& c) {
         std::printf("%8d %16.3g %16.3g %9.2fx %18.3f %18.3f\n", count, off, on, on / off, cost_off.back(), cost_on.back());
         std::fflush(stdout);
     }
-    double b_off = slope(n, cost_off), b_on = slope(n, cost_on);
+    double b_off = least_squares_slope(n, cost_off), b_on = least_squares_slope(n, cost_on);
     std::printf("\ncost per added object: %.4f us/path without the box tests, %.4f with them: %.2f of it (target: below 1/3)\n\n", b_off,
                 b_on, b_on / b_off);
 

@@ -292,6 +292,8 @@ set_tests_properties(cli.render.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT
 
 cli_bad_input(NAME bench.compare_to_missing EXPECT "${E}${D}/absent_binary: is not an executable file$"
               ARGS bench compare --to ${D}/absent_binary)
+cli_bad_input(NAME bench.compare_object_counts EXPECT "${E}--object-counts: each count must be in \\[1, 4096\\]$"
+              ARGS bench compare --to /bin/true --object-counts 0)
 
 # --- BDPT's strategies, one image each (render --strategies DIR) ------------------------------------
 add_test(NAME cli.render.strategy_images
