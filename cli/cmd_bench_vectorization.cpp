@@ -4,7 +4,9 @@
 // (vectorization width: N ...)" or "loop not vectorized: REASON". The command builds the kernel
 // cold (an empty PoCL cache of its own, so the remarks are printed) with those remarks captured
 // from its output, launches it once (PoCL compiles the work-group function at the first
-// launch), and counts the remarks by width and by reason. Figures for the CPU-speed work, not tests.
+// launch), and counts the remarks by width and by reason; then whether the marches run in the
+// explicit packets of the path tracer's wavefront, which no remark reports. Figures for the
+// CPU-speed work, not tests.
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -71,12 +73,14 @@ void run_bench_vectorization(const BenchVectorizationCommand& c) {
     RenderJob job = prepare_render_job(options);
     fs::path log = folder / "remarks.txt";
     std::string device;
+    bool packets = false;
     {
         OutputToFile capture(log);
         opencl::Runtime runtime(c.job.device);
         device = runtime.device().description();
         render::OpenClRenderer renderer(runtime, job.input);
         renderer.add_samples(1);
+        packets = renderer.wavefront();
     }
     std::ifstream in(log);
     std::stringstream text;
@@ -95,6 +99,12 @@ void run_bench_vectorization(const BenchVectorizationCommand& c) {
         std::printf("no vectoriser remarks were printed: the device is not PoCL, or this PoCL does not print them\n");
     for (const auto& [width, count] : widths) std::printf("%6d loops vectorized with width %d\n", count, width);
     for (const auto& [reason, count] : reasons) std::printf("%6d loops not vectorized: %s\n", count, reason.c_str());
+    // the explicit lanes do not depend on the vectoriser, and it says nothing of them
+    if (packets)
+        std::printf("\nexplicit lanes: the marches run as packets of 8 rays per work-item in float8 (kernels/march_packets.cl,\n"
+                    "SDF_LANES=8), whatever the vectoriser made of the loops above; shading runs one path per work-item\n");
+    else
+        std::printf("\nno explicit lanes: every march runs one ray per work-item (the wavefront is the path tracer's, on a CPU device)\n");
     fs::remove_all(folder);
 }
 

@@ -16,6 +16,10 @@ public:
 
     std::string device_description() const override;
 
+    // The path tracer's wavefront (kernels/path_tracer_wavefront.h), when RenderSettings::packets
+    // and the device is a CPU: its marches run eight rays per work-item on the vector lanes.
+    bool wavefront() const;
+
 private:
     void build_kernel() override;
     void upload_scene() override;
@@ -28,9 +32,7 @@ private:
     const opencl::Runtime& runtime_;
     std::optional<opencl::Program> program_;
     opencl::KernelHandle kernel_;
-    // The path tracer's wavefront (kernels/path_tracer_wavefront.h), when RenderSettings::packets:
-    // the step kernel, the packet kernels (kernels/march_packets.cl) and their per-pixel buffers.
-    bool wavefront() const;
+    // The wavefront's step kernel, packet kernel (kernels/march_packets.cl) and per-pixel buffers.
     void launch_wavefront_sample(const kernel::RenderKernelSettings& k, PixelRange pixels);
     cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& k) const;
     void launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const;
