@@ -28,8 +28,8 @@ SS_FN float3 ggx_sample_visible_normal(float3 w, float ax, float ay, float u1, f
     float len2 = wh.x * wh.x + wh.y * wh.y;
     float3 t1 = len2 > 0.0f ? make_float3(-wh.y, wh.x, 0.0f) / sqrt(len2) : make_float3(1.0f, 0.0f, 0.0f);
     float3 t2 = cross(wh, t1);
-    float r = sqrt(u1), phi = 2.0f * SS_PI * u2;
-    float p1 = r * cos(phi), p2 = r * sin(phi);
+    float r = sqrt(u1); /* and the angle 2 pi u2, through cospi and sinpi (brdf/warp.h says why) */
+    float p1 = r * cospi(2.0f * u2), p2 = r * sinpi(2.0f * u2);
     float s = 0.5f * (1.0f + wh.z);
     p2 = (1.0f - s) * safe_sqrt(1.0f - p1 * p1) + s * p2;
     float3 nh = p1 * t1 + p2 * t2 + safe_sqrt(1.0f - p1 * p1 - p2 * p2) * wh;

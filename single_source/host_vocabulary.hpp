@@ -69,6 +69,9 @@ inline uint min(uint a, uint b) { return a < b ? a : b; }
 inline uint max(uint a, uint b) { return a > b ? a : b; }
 // OpenCL defines mix(x, y, a) as x + (y - x) a; glm::mix computes x (1 - a) + y a, which rounds
 // differently, so the host would not match the kernels.
+// OpenCL's sinpi(x) = sin(pi x) and cospi(x): the product pi x is not rounded first
+inline float sinpi(float x) { return float(std::sin(3.14159265358979323846 * double(x))); }
+inline float cospi(float x) { return float(std::cos(3.14159265358979323846 * double(x))); }
 inline float mix(float x, float y, float a) { return x + (y - x) * a; }
 inline float3 mix(float3 x, float3 y, float a) { return x + (y - x) * a; }
 inline float4 mix(float4 x, float4 y, float a) { return x + (y - x) * a; }
