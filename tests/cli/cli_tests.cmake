@@ -201,8 +201,6 @@ cli_output_test(report.writes_everything 40 report/previews.png|report/albedo.pn
                 report --presets ${PROJECT_SOURCE_DIR}/presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
                 --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96
                 --scene ${PROJECT_SOURCE_DIR}/scenes/cornell_box.json --scene-spp 2)
-# the longest command-line test: started among the first under ctest -j (tests/test_costs.cmake)
-set_tests_properties(cli.report.writes_everything PROPERTIES COST 60)
 cli_bad_input(NAME validate.missing_preset EXPECT "${E}${D}/absent\\.json: cannot open preset file$"
               ARGS validate --material ${D}/absent.json)
 cli_bad_input(NAME validate.too_few_samples EXPECT "${E}command line: --samples: "
