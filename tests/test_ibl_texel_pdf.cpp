@@ -91,13 +91,6 @@ long mismatches(const Environment& env, std::string* first) {
     return bad;
 }
 
-EnvironmentOptions options_with(float rotation, int face_size) {
-    EnvironmentOptions o;
-    o.rotation_degrees = rotation;
-    o.face_size = face_size;
-    return o;
-}
-
 }  // namespace
 
 TEST_CASE("ibl: environment_pdf from the texel's w equals the density of the cdfs, bit for bit", "[ibl][ibl-texel-pdf]") {
@@ -111,7 +104,10 @@ TEST_CASE("ibl: environment_pdf from the texel's w equals the density of the cdf
                           {"envmaps/sunset.exr", 90.0f, 24},    {"envmaps/studio.exr", -71.5f, 16},
                           {"constant:0.2,0.5,1", 12.0f, 8},     {"constant:0,0,0", 0.0f, 8}};
     for (const Case& c : cases) {
-        Environment env = lab::ibl::load_environment(c.spec, options_with(c.rotation, c.face_size));
+        EnvironmentOptions options;
+        options.rotation_degrees = c.rotation;
+        options.face_size = c.face_size;
+        Environment env = lab::ibl::load_environment(c.spec, options);
         std::string first;
         long bad = mismatches(env, &first);
         INFO(c.spec << " rotated " << c.rotation << " at face " << c.face_size << ": " << bad << " mismatches, first " << first);
