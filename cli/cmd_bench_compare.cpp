@@ -16,6 +16,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/bench_grid.hpp"
@@ -108,8 +109,8 @@ void run_bench_compare(const BenchCompareCommand& c) {
     std::printf("bench compare: this build (%s) against %s; %s, render --time %.1f s, median of %d, interleaved\n\n", self.c_str(),
                 c.other.c_str(), c.size.c_str(), c.seconds, c.repeats);
     std::printf("%-28s %16s %16s %10s\n", "scene", "paths/s (this)", "paths/s (other)", "this/other");
-    // both builds' median paths/s of one scene file
-    auto both = [&](const std::string& scene, const std::string& name, double* mine_median, double* theirs_median) {
+    // both builds' median paths/s of one scene file, printed as a row: {this build's, the other's}
+    auto both = [&](const std::string& scene, const std::string& name) {
         // PoCL compiles a kernel's work-group function at its first launch, into its cache: a short
         // render of each build first, so that no figure pays for that
         render_paths_per_second(c.other, c, scene, folder / "other.exr", 0.01);
@@ -119,23 +120,22 @@ void run_bench_compare(const BenchCompareCommand& c) {
             theirs.push_back(render_paths_per_second(c.other, c, scene, folder / "other.exr", c.seconds));
             mine.push_back(render_paths_per_second(self, c, scene, folder / "this.exr", c.seconds));
         }
-        *mine_median = median(mine);
-        *theirs_median = median(theirs);
-        std::printf("%-28s %16.3g %16.3g %9.2fx\n", name.c_str(), *mine_median, *theirs_median, *mine_median / *theirs_median);
+        const std::pair<double, double> medians{median(mine), median(theirs)};
+        std::printf("%-28s %16.3g %16.3g %9.2fx\n", name.c_str(), medians.first, medians.second, medians.first / medians.second);
         std::fflush(stdout);
+        return medians;
     };
-    double a, b;
-    for (const std::string& scene : c.scenes) both(scene, fs::path(scene).filename().string(), &a, &b);
+    for (const std::string& scene : c.scenes) both(scene, fs::path(scene).filename().string());
     if (c.objects && c.object_counts.size() >= 2) {
         std::printf("\n");
-        std::vector<double> n, mine, theirs;
+        std::vector<double> n, mine, theirs;  // us/path
         for (int count : c.object_counts) {
             fs::path file = folder / ("grid_" + std::to_string(count) + ".json");
             std::ofstream(file) << grid_scene_json(count).dump(1);
-            both(file.string(), "grid of " + std::to_string(count) + " objects", &a, &b);
+            const auto [this_build, other_build] = both(file.string(), "grid of " + std::to_string(count) + " objects");
             n.push_back(double(count));
-            mine.push_back(1e6 / a);
-            theirs.push_back(1e6 / b);
+            mine.push_back(1e6 / this_build);
+            theirs.push_back(1e6 / other_build);
         }
         double slope_mine = least_squares_slope(n, mine), slope_theirs = least_squares_slope(n, theirs);
         std::printf("\ncost per added object: %.4f us/path in this build, %.4f in the other: %.2f of it\n", slope_mine, slope_theirs,
