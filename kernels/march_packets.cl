@@ -1,7 +1,7 @@
-/* Packet kernels: the marches of eight rays per work-item on the vector lanes (sdf/march_lanes.h
- * with SDF_LANES = 8, which the host defines when it builds this program; the scene's field comes
- * in its packet form, scene/compile.cpp). Work-item g marches pixels 8 g .. 8 g + 7; the path
- * tracer's wavefront (kernels/path_tracer_wavefront.h) takes the results from `marches`. */
+/* Packet kernels: marches on eight vector lanes per work-item (sdf/march_lanes.h with
+ * SDF_LANES = 8, which the host defines when it builds this program; the scene's field comes in its
+ * packet form, scene/compile.cpp). The path tracer's wavefront (kernels/path_tracer_wavefront.h)
+ * takes the results from `marches`. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "scene/generated.h"
@@ -10,26 +10,76 @@
 #include "kernels/render_settings.h"
 #include "sdf/march_lanes.h"
 
-SS_FN void store_marches(MarchLanes m, int first, int pixels, __global RayMarch* marches) {
+#ifndef MARCH_REFILL_LANES
+#define MARCH_REFILL_LANES 4
+#endif
+
+/* The march of lane `lane` of `st` into marches[ray]. */
+SS_FN void store_lane(MarchLanesState st, int lane, __global RayMarch* march) {
     float t[8];
     int status[8], steps[8];
-    vstore8(m.t, 0, t);
-    vstore8(m.status, 0, status);
-    vstore8(m.steps, 0, steps);
-    for (int lane = 0; lane < 8 && first + lane < pixels; ++lane) {
-        marches[first + lane].t = t[lane];
-        marches[first + lane].status = status[lane];
-        marches[first + lane].steps = steps[lane];
-    }
+    vstore8(st.m.t, 0, t);
+    vstore8(st.m.status, 0, status);
+    vstore8(st.m.steps, 0, steps);
+    march->t = t[lane];
+    march->status = status[lane];
+    march->steps = steps[lane];
 }
 
-/* The rays of `rays` (kernels/ray_march.h; `stride`: a multiple of 8 at least `pixels`). */
+/* The rays of `rays` (kernels/ray_march.h; `stride`: a multiple of 8 at least `pixels`). Work-item g
+ * marches rays MARCH_RAYS_PER_ITEM g ... up to `pixels` on eight lanes: a lane whose march is done
+ * stores it and takes the next ray, skipping those that are none (a path that has ended), so the
+ * lanes stay busy however long each ray's march and however few rays are left. A lane waits for
+ * company until half the lanes are free: starting a ray costs a few dozen scalar operations. */
 __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, __global const float* rays, __global RayMarch* marches) {
-    int g = (int)get_global_id(0);
-    if (8 * g >= pixels) return;
+    const int first = (int)get_global_id(0) * MARCH_RAYS_PER_ITEM;
+    const int end = min(first + MARCH_RAYS_PER_ITEM, pixels);
+    const MarchSettings s = render_march_settings(&settings);
     uint evaluations = 0u;
-    MarchLanes m = march_lanes(vload8(g, rays), vload8(g, rays + stride), vload8(g, rays + 2 * stride), vload8(g, rays + 3 * stride),
-                               vload8(g, rays + 4 * stride), vload8(g, rays + 5 * stride), 0.0f, vload8(g, rays + 6 * stride),
-                               render_march_settings(&settings), &evaluations);
-    store_marches(m, 8 * g, pixels, marches);
+    float field[RAY_FIELDS][8]; /* each lane's ray: origin, direction, max distance */
+    int lane_ray[8];            /* the ray each lane marches; -1: none */
+    for (int lane = 0; lane < 8; ++lane) {
+        lane_ray[lane] = -1;
+        for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = NO_RAY;
+    }
+    MarchLanesState st = march_lanes_start((float8)0.0f, (float8)NO_RAY, s);
+    float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 0.0f, max_distance = NO_RAY;
+    int next = first;
+    int8 holding = 0; /* the lanes that have a ray, marched or marching */
+    for (;;) {
+        const int8 free = !st.running;
+        /* free lanes: their marches to store, new rays to start */
+        if (next < end ? -SDF_SUM(free) >= MARCH_REFILL_LANES : any(holding && free)) {
+            int running[8], started[8];
+            vstore8(st.running, 0, running);
+            for (int lane = 0; lane < 8; ++lane) {
+                started[lane] = 0;
+                if (running[lane]) continue;
+                if (lane_ray[lane] >= 0) store_lane(st, lane, &marches[lane_ray[lane]]);
+                lane_ray[lane] = -1;
+                while (next < end && 0.0f > rays[6 * stride + next]) ++next; /* no ray: its march is never read */
+                if (next >= end) continue;
+                for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = rays[f * stride + next];
+                lane_ray[lane] = next++;
+                started[lane] = -1;
+            }
+            holding = vload8(0, lane_ray) >= 0;
+            const int8 start = vload8(0, started);
+            if (any(start)) {
+                ox = vload8(0, field[0]);
+                oy = vload8(0, field[1]);
+                oz = vload8(0, field[2]);
+                vx = vload8(0, field[3]);
+                vy = vload8(0, field[4]);
+                vz = vload8(0, field[5]);
+                max_distance = vload8(0, field[6]);
+                st = march_lanes_restart(st, start, (float8)0.0f, max_distance, s);
+            }
+        }
+        if (!any(st.running)) {
+            if (next >= end) break;
+            continue;
+        }
+        march_lanes_advance(&st, ox, oy, oz, vx, vy, vz, max_distance, s, &evaluations);
+    }
 }

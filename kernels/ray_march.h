@@ -2,7 +2,8 @@
  * (kernels/march_packets.cl) hand each other, one entry per pixel:
  *  - rays: seven arrays of `stride` floats (origin x, y, z, direction x, y, z, max distance), so that
  *    a packet kernel loads eight pixels' component at once; a max distance < 0 marks no ray;
- *  - marches: what each ray's march found (sdf/march_lanes.h's MarchLanes, one lane). */
+ *  - marches: what each ray's march found (sdf/march_lanes.h's MarchLanes, one lane); nothing is
+ *    written for no ray. */
 #ifndef KERNELS_RAY_MARCH_H
 #define KERNELS_RAY_MARCH_H
 
@@ -10,6 +11,9 @@
 
 #define RAY_FIELDS 7
 #define NO_RAY -1.0f /* a max distance that marches nothing: the lane is done before it starts */
+/* rays per work-item of a packet kernel: a launch's pixel range is made of whole granules of 64
+ * (render/renderer.hpp, kLaunchGranularity) */
+#define MARCH_RAYS_PER_ITEM 64
 
 typedef struct RayMarch {
     float t;

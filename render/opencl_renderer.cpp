@@ -165,9 +165,10 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pi
 // until no path has anything left to march.
 void OpenClRenderer::launch_wavefront_sample(const kernel::RenderKernelSettings& k, PixelRange pixels) {
     const int image = input_.settings.width * input_.settings.height;
-    // eight pixels a work-item: a range of whole granules of 64 pixels is one of granules of 8
-    const PixelRange packets{pixels.first / 8, (pixels.count + 7) / 8};
-    const size_t packet_local = std::max<size_t>(1, local_size_ / 8), packet_total = size_t(image + 7) / 8;
+    // MARCH_RAYS_PER_ITEM (64) pixels a work-item: a range of whole granules of 64 pixels
+    static_assert(MARCH_RAYS_PER_ITEM == kLaunchGranularity, "a packet work-item marches one granule");
+    const PixelRange packets{pixels.first / MARCH_RAYS_PER_ITEM, (pixels.count + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM};
+    const size_t packet_local = 1, packet_total = size_t(image + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
     for (int iteration = 0;; ++iteration) {
         // the camera ray, max_depth scattering events, and the last shadow ray one step later
         if (iteration > k.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");

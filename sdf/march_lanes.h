@@ -2,10 +2,11 @@
  * implicit surfaces"), with the over-relaxation of Keinert et al. 2014, "Enhanced Sphere Tracing", of
  * SDF_LANES rays at once (single_source/vocabulary.h): one ray on the host and in a scalar kernel
  * (march() in sdf/march.h is this for one lane), a packet of eight in the packet kernels
- * (kernels/march_packets.cl), where the march runs on the CPU's vector lanes. The rays of a packet
- * march together until every one has hit, left its max_distance or used max_steps; a lane that is
- * done keeps its result while the others go on. Each lane computes what the one-lane build computes,
- * the same operations in the same order, so both give the same t, status and steps to the bit.
+ * (kernels/march_packets.cl), where the march runs on the CPU's vector lanes. The lanes step
+ * together; a lane that has hit, left its max_distance or used max_steps stops, and a packet kernel
+ * may start the next ray in it while the others go on. Each lane computes what the one-lane build
+ * computes, the same operations in the same order, so both give the same t, status and steps to the
+ * bit.
  *
  * Needs the scene's field declared before it is included: scene_distance(float3) for one lane
  * (the generated scene source in a kernel; on the host see sdf/sdf.hpp), scene_distance_xyz with
@@ -33,13 +34,59 @@ typedef struct MarchLanes {
     SDF_MASK steps;   /* distance evaluations made for this lane */
 } MarchLanes;
 
-/* Marches each lane from o + t_start v (v unit) to the first surface, where
+/* A march between two steps, per lane: its result so far, whether it still runs, and what the next
+ * step needs (the over-relaxation state below). Each lane's march depends on its own fields only,
+ * so a packet kernel may start a new ray in a lane whose march is done (march_lanes_restart) while
+ * the others go on. */
+typedef struct MarchLanesState {
+    MarchLanes m;
+    SDF_MASK running;
+    SDF_FLOAT side;   /* sign of the field at the start */
+    SDF_FLOAT t_prev; /* where the last step that was not undone started */
+    SDF_FLOAT r_prev; /* its safe radius */
+    SDF_FLOAT step;   /* the length of that step */
+    SDF_FLOAT omega;  /* the over-relaxation: s.over_relaxation, 1 after a failed step */
+} MarchLanesState;
+
+/* Each lane's march at t_start, before its first step: running unless t_start is past its
+ * max_distance (a miss with no step) or max_steps is 0 (out of steps). */
+SS_FN MarchLanesState march_lanes_start(SDF_FLOAT t_start, SDF_FLOAT max_distance, MarchSettings s) {
+    MarchLanesState st;
+    st.m.t = t_start;
+    st.m.steps = (SDF_MASK)0;
+    st.running = !(t_start > max_distance);
+    st.m.status = select((SDF_MASK)MARCH_MISS, (SDF_MASK)MARCH_OUT_OF_STEPS, st.running);
+    st.running = st.running && (SDF_MASK)0 < (SDF_MASK)s.max_steps;
+    st.side = 1.0f;
+    st.t_prev = t_start;
+    st.r_prev = 0.0f;
+    st.step = 0.0f;
+    st.omega = s.over_relaxation;
+    return st;
+}
+
+/* The lanes of `lanes` begin again at t_start (march_lanes_start); the others keep their march. */
+SS_FN MarchLanesState march_lanes_restart(MarchLanesState st, SDF_MASK lanes, SDF_FLOAT t_start, SDF_FLOAT max_distance, MarchSettings s) {
+    MarchLanesState fresh = march_lanes_start(t_start, max_distance, s);
+    st.m.t = select(st.m.t, fresh.m.t, lanes);
+    st.m.status = select(st.m.status, fresh.m.status, lanes);
+    st.m.steps = select(st.m.steps, fresh.m.steps, lanes);
+    st.running = select(st.running, fresh.running, lanes);
+    st.side = select(st.side, fresh.side, lanes);
+    st.t_prev = select(st.t_prev, fresh.t_prev, lanes);
+    st.r_prev = select(st.r_prev, fresh.r_prev, lanes);
+    st.step = select(st.step, fresh.step, lanes);
+    st.omega = select(st.omega, fresh.omega, lanes);
+    return st;
+}
+
+/* One step of every running lane along o + t v (v unit), towards the first surface, where
  * |scene_distance| / lipschitz < max(epsilon_min, epsilon_relative t).
  *
  * The radius r = |scene_distance(p)| / lipschitz is a sphere around p free of surface, so a step of
  * r is safe (Hart 1996). The march works on |d|, so it finds the surface from inside a solid too
  * (refraction; the caller offsets the origin past epsilon, or it hits at t_start). The sign of the
- * field where the march started is kept: a later sign change means the ray crossed a surface.
+ * field at a lane's first step is kept: a later sign change means the ray crossed a surface.
  *
  * Over-relaxation (omega > 1, Keinert et al. 2014, section 3.1): step omega r instead of r. The step
  * from t_prev to t is still safe when the spheres at both ends overlap, omega r_prev <= r_prev + r;
@@ -47,48 +94,48 @@ typedef struct MarchLanes {
  * that surface), a surface may lie in the gap, so the march steps back to t_prev + r_prev -- the
  * plain step -- and goes on with omega = 1. A failed step is not tested for a hit.
  *
- * A lane's max_distance replaces s.max_distance (a shadow ray's ends at its light); `evaluations`
- * counts in a measurement build only. */
+ * A lane stops when it hits, passes its max_distance (a miss) or has made s.max_steps steps (out of
+ * steps); `evaluations` counts in a measurement build only. */
+SS_FN void march_lanes_advance(MarchLanesState* st, SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz,
+                               SDF_FLOAT max_distance, MarchSettings s, uint* evaluations) {
+    (void)evaluations;
+    SDF_MASK running = st->running;
+    SDF_FLOAT t = st->m.t;
+    SDF_FLOAT d = MARCH_LANES_DISTANCE(ox + vx * t, oy + vy * t, oz + vz * t, running, evaluations) * (1.0f / s.lipschitz);
+    SDF_MASK first = running && st->m.steps == (SDF_MASK)0;
+    st->m.steps = select(st->m.steps, st->m.steps + (SDF_MASK)1, running);
+    st->side = select(st->side, select((SDF_FLOAT)1.0f, (SDF_FLOAT)-1.0f, d < 0.0f), first);
+    SDF_FLOAT r = st->side * d; /* > 0 on the starting side */
+    /* the over-relaxed step failed: back to the plain step, omega 1 from now on, no hit test */
+    SDF_MASK failed = running && st->omega > 1.0f && (r < 0.0f || st->step > st->r_prev + r);
+    t = select(t, st->t_prev + st->r_prev, failed);
+    st->step = select(st->step, st->r_prev, failed);
+    st->omega = select(st->omega, (SDF_FLOAT)1.0f, failed);
+    SDF_MASK tested = running && !failed;
+    SDF_MASK hit = tested && fabs(r) < march_epsilon(s, t);
+    st->m.status = select(st->m.status, (SDF_MASK)MARCH_HIT, hit);
+    running = running && !hit;
+    /* r < 0 only with omega = 1: a crossing through rounding or a field that is not a bound;
+     * stepping by r goes back towards the surface. */
+    SDF_MASK advance = tested && !hit;
+    st->t_prev = select(st->t_prev, t, advance);
+    st->r_prev = select(st->r_prev, r, advance);
+    st->step = select(st->step, st->omega * r, advance);
+    t = select(t, t + st->step, advance);
+    SDF_MASK miss = advance && t > max_distance;
+    st->m.status = select(st->m.status, (SDF_MASK)MARCH_MISS, miss);
+    running = running && !miss;
+    st->m.t = t;
+    st->running = running && st->m.steps < (SDF_MASK)s.max_steps;
+}
+
+/* Marches each lane from o + t_start v to its first surface (march_lanes_advance); a lane's
+ * max_distance replaces s.max_distance (a shadow ray's ends at its light). */
 SS_FN MarchLanes march_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_start,
                              SDF_FLOAT max_distance, MarchSettings s, uint* evaluations) {
-    (void)evaluations;
-    MarchLanes m;
-    m.t = t_start;
-    m.steps = (SDF_MASK)0;
-    SDF_MASK running = !(t_start > max_distance);
-    m.status = select((SDF_MASK)MARCH_MISS, (SDF_MASK)MARCH_OUT_OF_STEPS, running);
-    float inv_lipschitz = 1.0f / s.lipschitz;
-    SDF_FLOAT omega = s.over_relaxation;
-    SDF_FLOAT side = 1.0f; /* sign of the field at the start */
-    SDF_FLOAT t_prev = t_start;
-    SDF_FLOAT r_prev = 0.0f;
-    SDF_FLOAT step = 0.0f;
-    for (int i = 0; i < s.max_steps && SDF_ANY(running); ++i) {
-        SDF_FLOAT d = MARCH_LANES_DISTANCE(ox + vx * m.t, oy + vy * m.t, oz + vz * m.t, running, evaluations) * inv_lipschitz;
-        m.steps = select(m.steps, m.steps + (SDF_MASK)1, running);
-        if (i == 0) side = select((SDF_FLOAT)1.0f, (SDF_FLOAT)-1.0f, d < 0.0f);
-        SDF_FLOAT r = side * d; /* > 0 on the starting side */
-        /* the over-relaxed step failed: back to the plain step, omega 1 from now on, no hit test */
-        SDF_MASK failed = running && omega > 1.0f && (r < 0.0f || step > r_prev + r);
-        m.t = select(m.t, t_prev + r_prev, failed);
-        step = select(step, r_prev, failed);
-        omega = select(omega, (SDF_FLOAT)1.0f, failed);
-        SDF_MASK tested = running && !failed;
-        SDF_MASK hit = tested && fabs(r) < march_epsilon(s, m.t);
-        m.status = select(m.status, (SDF_MASK)MARCH_HIT, hit);
-        running = running && !hit;
-        /* r < 0 only with omega = 1: a crossing through rounding or a field that is not a bound;
-         * stepping by r goes back towards the surface. */
-        SDF_MASK advance = tested && !hit;
-        t_prev = select(t_prev, m.t, advance);
-        r_prev = select(r_prev, r, advance);
-        step = select(step, omega * r, advance);
-        m.t = select(m.t, m.t + step, advance);
-        SDF_MASK miss = advance && m.t > max_distance;
-        m.status = select(m.status, (SDF_MASK)MARCH_MISS, miss);
-        running = running && !miss;
-    }
-    return m;
+    MarchLanesState st = march_lanes_start(t_start, max_distance, s);
+    while (SDF_ANY(st.running)) march_lanes_advance(&st, ox, oy, oz, vx, vy, vz, max_distance, s, evaluations);
+    return st.m;
 }
 
 #endif
