@@ -8,8 +8,11 @@ SS_FN float cos2_theta(float3 w) { return w.z * w.z; }
 SS_FN float sin2_theta(float3 w) { return fmax(0.0f, 1.0f - w.z * w.z); }
 SS_FN bool same_hemisphere(float3 a, float3 b) { return a.z * b.z > 0.0f; }
 
-/* Rotation about the normal, used to turn the anisotropy tangent. */
+/* Rotation about the normal, used to turn the anisotropy tangent. Most materials have none: then w
+ * is returned as it is, without a cos and a sin (OpenCL on a CPU reduces their argument in a call of
+ * its own), which the rotation by 0 would give but for the sign of a zero component. */
 SS_FN float3 rotate_about_normal(float3 w, float angle) {
+    if (angle == 0.0f) return w;
     float c = cos(angle), s = sin(angle);
     return make_float3(c * w.x - s * w.y, s * w.x + c * w.y, w.z);
 }

@@ -54,14 +54,27 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
             vstore8(st.running, 0, running);
             for (int lane = 0; lane < 8; ++lane) {
                 started[lane] = 0;
-                if (running[lane]) continue;
-                if (lane_ray[lane] >= 0) store_lane(st, lane, &marches[lane_ray[lane]]);
+                if (running[lane] || lane_ray[lane] < 0) continue;
+                store_lane(st, lane, &marches[lane_ray[lane]]);
                 lane_ray[lane] = -1;
-                while (next < end && 0.0f > rays[6 * stride + next]) ++next; /* no ray: its march is never read */
-                if (next >= end) continue;
-                for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = rays[f * stride + next];
-                lane_ray[lane] = next++;
-                started[lane] = -1;
+            }
+            if (!any(st.running) && next + 8 <= end && !any(0.0f > vload8(0, rays + 6 * stride + next))) {
+                /* eight rays in a row, as a camera's: a packet of neighbouring pixels, loaded whole */
+                for (int f = 0; f < RAY_FIELDS; ++f) vstore8(vload8(0, rays + f * stride + next), 0, field[f]);
+                for (int lane = 0; lane < 8; ++lane) {
+                    lane_ray[lane] = next + lane;
+                    started[lane] = -1;
+                }
+                next += 8;
+            } else {
+                for (int lane = 0; lane < 8; ++lane) {
+                    if (running[lane]) continue;
+                    while (next < end && 0.0f > rays[6 * stride + next]) ++next; /* no ray: its march is never read */
+                    if (next >= end) break;
+                    for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = rays[f * stride + next];
+                    lane_ray[lane] = next++;
+                    started[lane] = -1;
+                }
             }
             holding = vload8(0, lane_ray) >= 0;
             const int8 start = vload8(0, started);
