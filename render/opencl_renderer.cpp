@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 
 #include "brdf/host/measured_registry.hpp"
 #include "opencl/material_layout.hpp"
@@ -45,6 +46,8 @@ void OpenClRenderer::build_kernel() {
     auto start = std::chrono::steady_clock::now();
     const RenderSettings& s = input_.settings;
     std::string options = kBuildOptions + (s.extra_build_options.empty() ? "" : " " + s.extra_build_options);
+    // the wavefront's step prefetches environment texels (kernels/path_tracer_wavefront.h); PoCL only
+    if (wavefront()) options += " -DWAVEFRONT_PREFETCH";
     opencl::Program program = runtime_.build(scene::assemble_scene_kernel(kernel_file(s.integrator), compiled_), options);
     opencl::check_material_layout(runtime_, program);
     opencl::KernelHandle kernel = program.kernel(kernel_name(s.integrator));
