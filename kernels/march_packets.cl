@@ -42,8 +42,8 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
         lane_ray[lane] = -1;
         for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = NO_RAY;
     }
-    MarchLanesState st = march_lanes_start((float8)0.0f, (float8)NO_RAY, s);
-    float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 0.0f, max_distance = NO_RAY;
+    float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 1.0f, max_distance = NO_RAY;
+    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, s);
     int next = first;
     int8 holding = 0; /* the lanes that have a ray, marched or marching */
     for (;;) {
@@ -86,11 +86,13 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
                 vy = vload8(0, field[4]);
                 vz = vload8(0, field[5]);
                 max_distance = vload8(0, field[6]);
-                st = march_lanes_restart(st, start, (float8)0.0f, max_distance, s);
+                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, s);
             }
         }
         if (!any(st.running)) {
-            if (next >= end) break;
+            /* a new ray may be done before its first step (it starts past its exit from the
+             * surface box): its march is stored at the top like any other */
+            if (next >= end && !any(holding)) break;
             continue;
         }
         march_lanes_advance(&st, ox, oy, oz, vx, vy, vz, max_distance, s, &evaluations);

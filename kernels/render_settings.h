@@ -50,6 +50,7 @@ typedef struct RenderKernelSettings {
     int unweighted;       /* 1: with strategy_only, its contribution without the MIS weight */
     float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
     float scene_radius;
+    float surface_lo[3], surface_hi[3]; /* MarchSettings' surface box */
 } RenderKernelSettings;
 
 /* sdf/march.h's settings with what the render settings change; the epsilons stay the defaults. */
@@ -58,6 +59,10 @@ SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
     s.max_steps = k->max_steps;
     s.max_distance = k->max_distance;
     s.over_relaxation = k->over_relaxation;
+    for (int i = 0; i < 3; ++i) {
+        s.surface_lo[i] = k->surface_lo[i];
+        s.surface_hi[i] = k->surface_hi[i];
+    }
     return s;
 }
 

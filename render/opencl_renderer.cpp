@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 
 #include "brdf/host/measured_registry.hpp"
 #include "opencl/material_layout.hpp"

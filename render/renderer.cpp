@@ -106,6 +106,10 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     k.scene_center[1] = compiled_.bounds_center.y;
     k.scene_center[2] = compiled_.bounds_center.z;
     k.scene_radius = std::max(compiled_.bounds_radius, 1e-3f);
+    for (int i = 0; i < 3; ++i) {
+        k.surface_lo[i] = compiled_.surface_lo[i];
+        k.surface_hi[i] = compiled_.surface_hi[i];
+    }
     return k;
 }
 

@@ -487,6 +487,35 @@ void scene_bounds(const Scene& scene, Vec3* center, float* radius) {
     *radius = float(0.5 * glm::length(hi - lo));
 }
 
+// The box of every surface (CompiledScene::surface_lo, surface_hi): the union of the objects'
+// boxes, each holding its solid with f >= dist(p, box) outside it, and of the emitters' spheres.
+// A plane with an axis for its normal bounds its axis on one side, the side of its solid, which
+// the objects' centred boxes cannot say: the ground y = 0 is the box y <= 0, so that a ray
+// going up from a scene on the ground stops marching above its objects. All of space when a
+// repetition breaks the bound: then f >= dist(p, box) need not hold.
+void surface_box(const Scene& scene, const SceneAnalysis& analysis, Vec3* lo, Vec3* hi) {
+    const float inf = std::numeric_limits<float>::infinity();
+    *lo = Vec3(inf);
+    *hi = Vec3(-inf);
+    for (const Object& object : scene.objects) {
+        const ShapeAnalysis a = analyse_shape(object.shape);
+        Vec3 a_lo = a.box_center - a.box_half, a_hi = a.box_center + a.box_half;
+        // the solid of a plane is n.p + offset < 0 (sdf/primitives/plane.h)
+        if (const Plane* p = std::get_if<Plane>(&object.shape.kind))
+            for (int i = 0; i < 3; ++i) {
+                if (p->normal[i] == 1.0f) a_hi[i] = -p->offset;
+                if (p->normal[i] == -1.0f) a_lo[i] = p->offset;
+            }
+        *lo = glm::min(*lo, a_lo);
+        *hi = glm::max(*hi, a_hi);
+    }
+    for (const EmitterSphere& e : scene.emitters) {
+        *lo = glm::min(*lo, e.center - Vec3(e.radius));
+        *hi = glm::max(*hi, e.center + Vec3(e.radius));
+    }
+    if (!analysis.is_distance_bound) *lo = Vec3(-inf), *hi = Vec3(inf);
+}
+
 }  // namespace
 
 std::string float_literal(float value) {
@@ -542,6 +571,7 @@ CompiledScene compile_scene(const Scene& input, const CompileOptions& options) {
     out.emitters = scene.emitters;
     out.point_lights = scene.point_lights;
     scene_bounds(scene, &out.bounds_center, &out.bounds_radius);
+    if (options.object_bounds) surface_box(scene, analysis, &out.surface_lo, &out.surface_hi);
     out.lipschitz = analysis.lipschitz;
     out.is_distance_bound = analysis.is_distance_bound;
     out.warnings = analysis.warnings;

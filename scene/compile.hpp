@@ -3,6 +3,7 @@
 // needs beside it (material slots, emitters, camera, environment, the Lipschitz bound).
 #pragma once
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,7 +19,8 @@ struct CompileOptions {
     std::map<std::string, brdf::Material> material_overrides;  // declared material name -> its replacement
     std::vector<std::string> disabled_objects;                 // object names to leave out
     // Skip, at each point, an object whose bounding box is no nearer than the nearest surface found
-    // so far (the field is unchanged; docs/scenes.md, "Object bounds"). Off for comparisons.
+    // so far (the field is unchanged; docs/scenes.md, "Object bounds"), and end a ray's march once
+    // it has left the box of every surface (the same hits). Off for comparisons.
     bool object_bounds = true;
 };
 
@@ -42,6 +44,11 @@ struct CompiledScene {
     // scene's size for the environment's power (docs/lights.md).
     Vec3 bounds_center{0.0f};
     float bounds_radius = 0.0f;
+    // A box that holds every surface, the objects' boxes (scene/lipschitz.hpp) and the emitters,
+    // -inf / inf along what is unbounded: rays that leave it stop marching (sdf/march_lanes.h).
+    // All of space when the object bounds are off.
+    Vec3 surface_lo{-std::numeric_limits<float>::infinity()};
+    Vec3 surface_hi{std::numeric_limits<float>::infinity()};
     float lipschitz = 1.0f;                      // SCENE_LIPSCHITZ
     bool is_distance_bound = true;               // false when a repetition breaks the bound
     std::vector<std::string> warnings;           // for the command line to print

@@ -34,6 +34,30 @@ typedef struct MarchLanes {
     SDF_MASK steps;   /* distance evaluations made for this lane */
 } MarchLanes;
 
+/* Where a ray o + t v leaves the surface box of s for good, grown by the distance within which a
+ * point counts as a hit (below), by the slabs of Kay and Kajiya 1986: the least of the axes' far
+ * ends. -INFINITY when the ray misses the box, so that it starts past it; INFINITY when the box is
+ * unbounded where the ray goes. A component v = 0 divides to +-INFINITY, which the slabs take as
+ * they should (0 / 0, a ray along a face of the grown box, is a NaN that fmin and fmax drop).
+ *
+ * Why the march may stop there: the compiler's box B holds the solid with f(p) >= dist(p, B)
+ * outside it (scene/lipschitz.hpp), and a point is a hit when f / lipschitz < epsilon(t) <=
+ * epsilon(max_distance), so no point farther than lipschitz epsilon(max_distance) from B is one,
+ * and a ray that has left a box never enters it again. */
+SS_FN SDF_FLOAT march_surface_exit(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, MarchSettings s) {
+    SDF_FLOAT grow = s.lipschitz * march_epsilon(s, (SDF_FLOAT)s.max_distance);
+    SDF_FLOAT o[3], v[3];
+    o[0] = ox, o[1] = oy, o[2] = oz;
+    v[0] = vx, v[1] = vy, v[2] = vz;
+    SDF_FLOAT enter = -INFINITY, exit = INFINITY;
+    for (int i = 0; i < 3; ++i) {
+        SDF_FLOAT t0 = (s.surface_lo[i] - grow - o[i]) / v[i], t1 = (s.surface_hi[i] + grow - o[i]) / v[i];
+        enter = fmax(enter, fmin(t0, t1));
+        exit = fmin(exit, fmax(t0, t1));
+    }
+    return select(exit, (SDF_FLOAT)-INFINITY, enter > exit);
+}
+
 /* A march between two steps, per lane: its result so far, whether it still runs, and what the next
  * step needs (the over-relaxation state below). Each lane's march depends on its own fields only,
  * so a packet kernel may start a new ray in a lane whose march is done (march_lanes_restart) while
@@ -46,15 +70,19 @@ typedef struct MarchLanesState {
     SDF_FLOAT r_prev; /* its safe radius */
     SDF_FLOAT step;   /* the length of that step */
     SDF_FLOAT omega;  /* the over-relaxation: s.over_relaxation, 1 after a failed step */
+    SDF_FLOAT exit;   /* march_surface_exit of the ray */
 } MarchLanesState;
 
-/* Each lane's march at t_start, before its first step: running unless t_start is past its
- * max_distance (a miss with no step) or max_steps is 0 (out of steps). */
-SS_FN MarchLanesState march_lanes_start(SDF_FLOAT t_start, SDF_FLOAT max_distance, MarchSettings s) {
+/* Each lane's march of o + t v from t_start, before its first step: running unless t_start is past
+ * its max_distance or the ray's exit from the surface box (a miss with no step) or max_steps is 0
+ * (out of steps). */
+SS_FN MarchLanesState march_lanes_start(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_start,
+                                        SDF_FLOAT max_distance, MarchSettings s) {
     MarchLanesState st;
     st.m.t = t_start;
     st.m.steps = (SDF_MASK)0;
-    st.running = !(t_start > max_distance);
+    st.exit = march_surface_exit(ox, oy, oz, vx, vy, vz, s);
+    st.running = !(t_start > max_distance) && !(t_start > st.exit);
     st.m.status = select((SDF_MASK)MARCH_MISS, (SDF_MASK)MARCH_OUT_OF_STEPS, st.running);
     st.running = st.running && (SDF_MASK)0 < (SDF_MASK)s.max_steps;
     st.side = 1.0f;
@@ -66,8 +94,9 @@ SS_FN MarchLanesState march_lanes_start(SDF_FLOAT t_start, SDF_FLOAT max_distanc
 }
 
 /* The lanes of `lanes` begin again at t_start (march_lanes_start); the others keep their march. */
-SS_FN MarchLanesState march_lanes_restart(MarchLanesState st, SDF_MASK lanes, SDF_FLOAT t_start, SDF_FLOAT max_distance, MarchSettings s) {
-    MarchLanesState fresh = march_lanes_start(t_start, max_distance, s);
+SS_FN MarchLanesState march_lanes_restart(MarchLanesState st, SDF_MASK lanes, SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy,
+                                          SDF_FLOAT vz, SDF_FLOAT t_start, SDF_FLOAT max_distance, MarchSettings s) {
+    MarchLanesState fresh = march_lanes_start(ox, oy, oz, vx, vy, vz, t_start, max_distance, s);
     st.m.t = select(st.m.t, fresh.m.t, lanes);
     st.m.status = select(st.m.status, fresh.m.status, lanes);
     st.m.steps = select(st.m.steps, fresh.m.steps, lanes);
@@ -77,6 +106,7 @@ SS_FN MarchLanesState march_lanes_restart(MarchLanesState st, SDF_MASK lanes, SD
     st.r_prev = select(st.r_prev, fresh.r_prev, lanes);
     st.step = select(st.step, fresh.step, lanes);
     st.omega = select(st.omega, fresh.omega, lanes);
+    st.exit = select(st.exit, fresh.exit, lanes);
     return st;
 }
 
@@ -95,7 +125,10 @@ SS_FN MarchLanesState march_lanes_restart(MarchLanesState st, SDF_MASK lanes, SD
  * plain step -- and goes on with omega = 1. A failed step is not tested for a hit.
  *
  * A lane stops when it hits, passes its max_distance (a miss) or has made s.max_steps steps (out of
- * steps); `evaluations` counts in a measurement build only. */
+ * steps); `evaluations` counts in a measurement build only. It also ends as a miss once its ray
+ * has left the surface box (march_surface_exit), with the safe sphere of its last point reaching
+ * past the exit, so that an over-relaxed step that overshot is still checked first. Until then the
+ * steps are those of a march without the box: the box changes where a miss stops, not what is hit. */
 SS_FN void march_lanes_advance(MarchLanesState* st, SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz,
                                SDF_FLOAT max_distance, MarchSettings s, uint* evaluations) {
     (void)evaluations;
@@ -122,7 +155,7 @@ SS_FN void march_lanes_advance(MarchLanesState* st, SDF_FLOAT ox, SDF_FLOAT oy, 
     st->r_prev = select(st->r_prev, r, advance);
     st->step = select(st->step, st->omega * r, advance);
     t = select(t, t + st->step, advance);
-    SDF_MASK miss = advance && t > max_distance;
+    SDF_MASK miss = advance && (t > max_distance || st->t_prev + st->r_prev > st->exit);
     st->m.status = select(st->m.status, (SDF_MASK)MARCH_MISS, miss);
     running = running && !miss;
     st->m.t = t;
@@ -133,7 +166,7 @@ SS_FN void march_lanes_advance(MarchLanesState* st, SDF_FLOAT ox, SDF_FLOAT oy, 
  * max_distance replaces s.max_distance (a shadow ray's ends at its light). */
 SS_FN MarchLanes march_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_start,
                              SDF_FLOAT max_distance, MarchSettings s, uint* evaluations) {
-    MarchLanesState st = march_lanes_start(t_start, max_distance, s);
+    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, t_start, max_distance, s);
     while (SDF_ANY(st.running)) march_lanes_advance(&st, ox, oy, oz, vx, vy, vz, max_distance, s, evaluations);
     return st.m;
 }

@@ -16,6 +16,9 @@ typedef struct MarchSettings {
     float max_distance;     /* along the ray, from the origin */
     float over_relaxation;  /* omega: 1 = plain sphere tracing; 1.2..1.6 Keinert et al. 2014 */
     float lipschitz;        /* distances are divided by this (the scene's bound, >= 1) */
+    /* A box holding every surface (the scene compiler's surface box), -INFINITY / INFINITY where
+     * the scene is unbounded: a ray that has left it sees nothing more (sdf/march_lanes.h) */
+    float surface_lo[3], surface_hi[3];
 } MarchSettings;
 
 /* Defaults for scenes of a few units to a few tens of units across:
@@ -26,7 +29,8 @@ typedef struct MarchSettings {
  *    take many small steps and end as MARCH_OUT_OF_STEPS rather than loop for ever;
  *  - max_distance 100: rays that leave it see the environment;
  *  - over_relaxation 1 (plain): safe for any bound; 1.2..1.6 saves steps on grazing rays, at the
- *    price of a step back when a step overshoots (see march()). */
+ *    price of a step back when a step overshoots (see march());
+ *  - no surface box: the whole of space may hold surfaces. */
 SS_FN MarchSettings march_settings_default(float lipschitz) {
     MarchSettings s;
     s.epsilon_relative = 1e-4f;
@@ -35,6 +39,10 @@ SS_FN MarchSettings march_settings_default(float lipschitz) {
     s.max_distance = 100.0f;
     s.over_relaxation = 1.0f;
     s.lipschitz = lipschitz;
+    for (int i = 0; i < 3; ++i) {
+        s.surface_lo[i] = -INFINITY;
+        s.surface_hi[i] = INFINITY;
+    }
     return s;
 }
 
