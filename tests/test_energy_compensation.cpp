@@ -268,7 +268,7 @@ double dielectric_furnace_deviation(int compensation, bool print) {
 }  // namespace
 
 TEST_CASE("furnace with compensation: a white rough dielectric keeps R + T at 1 within 1 % from both sides",
-          "[energy_compensation]") {
+          "[energy_compensation][sweep]") {
     std::printf("furnace, white rough GGX dielectric, compensated, theta 0 30 60 75 85 | from inside 95 105 120 150 180:\n");
     double worst = dielectric_furnace_deviation(1, true);
     std::printf("  largest |albedo - 1| %.4f\n", worst);
