@@ -119,7 +119,7 @@ TEST_CASE("BDPT: the same seed gives the same image", "[render][bdpt][seed]") {
 // observations with the path tracer's at a family-wise level of 1 % (Sidak over 9 regions x 3
 // channels). The two estimate the same expectation, so a region that differs by more than its noise
 // allows fails.
-TEST_CASE("BDPT and the path tracer agree on the Cornell box, region by region (Welch's t-test)", "[render][bdpt][welch]") {
+TEST_CASE("BDPT and the path tracer agree on the Cornell box, region by region (Welch's t-test)", "[render][bdpt][welch][sweep]") {
     using lab::render::Integrator;
     const int size = 24, batches = 8, spp = 8;
     std::vector<lab::film::ImageRgb> batch_images[2];  // [integrator][batch]

@@ -71,7 +71,7 @@ TEST_CASE("chi-square rejects a pdf that is 10% off on half the sphere", "[chi_s
     CHECK(r.p_value < 1e-10);
 }
 
-TEST_CASE("chi-square rejects samples drawn with a 10% different roughness", "[chi_square]") {
+TEST_CASE("chi-square rejects samples drawn with a 10% different roughness", "[chi_square][sweep]") {
     brdf::Material claimed = ggx_metal(0.5f), drawn = ggx_metal(0.55f);
     for (float theta : {0.0f, 60.0f}) {
         brdf::float3 wo = brdf::direction_from_degrees(theta, 30.0f);

@@ -126,7 +126,7 @@ TEST_CASE("furnace: mixtures (metallic, mirror, coat, transmission)", "[energy][
     check_sweep("mixtures", materials, FurnaceOptions());
 }
 
-TEST_CASE("furnace by quadrature: heavy-tailed Hyper-Cauchy at grazing incidence", "[energy]") {
+TEST_CASE("furnace by quadrature: heavy-tailed Hyper-Cauchy at grazing incidence", "[energy][sweep]") {
     // Hyper-Cauchy normals are sampled from D cos (no visible-normal sampling exists), so at grazing
     // incidence the estimator's weights are heavy-tailed (infinite variance for shape <= 2): the
     // bound is checked by quadrature instead, which no sampler enters.

@@ -151,7 +151,7 @@ TEST_CASE("energy tables: the committed tables are what the generator writes", "
                   brdf::energy_dielectric_albedo + (side * DIELECTRIC_GRID_IOR + k) * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU);
 }
 
-TEST_CASE("energy tables: dielectric entries agree with quadrature, which no sampler enters", "[energy_compensation]") {
+TEST_CASE("energy tables: dielectric entries agree with quadrature, which no sampler enters", "[energy_compensation][sweep]") {
     // the generator estimates the dielectric's E with its sampler; adaptive quadrature of bsdf_eval is independent
     // of it. Tolerance: the quadrature's 1e-4 plus 5 standard errors of the table's estimate (the same estimate,
     // recomputed for its error; stratification makes that error an overestimate)
@@ -268,7 +268,7 @@ double dielectric_furnace_deviation(int compensation, bool print) {
 }  // namespace
 
 TEST_CASE("furnace with compensation: a white rough dielectric keeps R + T at 1 within 1 % from both sides",
-          "[energy_compensation]") {
+          "[energy_compensation][sweep]") {
     std::printf("furnace, white rough GGX dielectric, compensated, theta 0 30 60 75 85 | from inside 95 105 120 150 180:\n");
     double worst = dielectric_furnace_deviation(1, true);
     std::printf("  largest |albedo - 1| %.4f\n", worst);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include "film/image.hpp"
+#include "validation/region_t_test.hpp"
 #include "validation/uniform_random.hpp"
 #include "validation/welch_t_test.hpp"
 
@@ -54,4 +56,43 @@ TEST_CASE("Welch's t-test rejects equal means at its level and finds a real diff
     CHECK(welch_t_test({1, 1, 1}, {1, 1}).p_value == 1.0);
     CHECK(welch_t_test({1, 1, 1}, {2, 2}).p_value == 0.0);
     CHECK_THROWS(welch_t_test({1}, {1, 2}));
+}
+
+TEST_CASE("region t-test: regions tile the image, and a brighter region-channel is the one rejected", "[validation][welch]") {
+    // the host code of the renderers' region comparison (validation/region_t_test.hpp) on noise images,
+    // cheap enough for the sanitized run (the Cornell box comparison runs it in the plain build only).
+    // 7 x 5 pixels in 3 x 2 regions: the regions' integer bounds do not divide the image evenly.
+    lab::validation::UniformRandom rng(5);
+    const int width = 7, height = 5, renders = 6;
+    auto noise_images = [&](double mean) {
+        std::vector<lab::film::ImageRgb> images;
+        for (int k = 0; k < renders; ++k) {
+            lab::film::ImageRgb image(width, height);
+            for (float& v : image.rgb) v = float(mean + 0.1 * normal(rng));
+            images.push_back(image);
+        }
+        return images;
+    };
+    std::vector<lab::film::ImageRgb> a = noise_images(1.0), b = noise_images(1.0);
+    lab::validation::RegionComparison same = lab::validation::compare_by_region(a, b, 3, 2, 0.01);
+    REQUIRE(same.regions.size() == 3u * 2u * 3u);
+    long area = 0;
+    for (const lab::validation::RegionTest& r : same.regions) {
+        CHECK((r.x0 >= 0 && r.x0 < r.x1 && r.x1 <= width && r.y0 >= 0 && r.y0 < r.y1 && r.y1 <= height));
+        if (r.channel == 0) area += long(r.x1 - r.x0) * (r.y1 - r.y0);
+    }
+    CHECK(area == width * height);  // every pixel in exactly one region (with the bounds check above)
+    CHECK(same.rejected == 0);      // this seed; level 0.01 / 18 per test
+    // region (column 2, row 1) = pixels [4, 7) x [2, 5), green 0.5 brighter in b: t about 0.5 / ((0.1 / 3) sqrt(2 / 6)),
+    // 26 standard errors of the difference of the means; every other region-channel unchanged
+    for (lab::film::ImageRgb& image : b)
+        for (int y = 2; y < 5; ++y)
+            for (int x = 4; x < 7; ++x) image.pixel(x, y)[1] += 0.5f;
+    lab::validation::RegionComparison shifted = lab::validation::compare_by_region(a, b, 3, 2, 0.01);
+    const lab::validation::RegionTest* worst = shifted.worst();
+    REQUIRE(worst != nullptr);
+    CHECK(shifted.rejected == 1);
+    CHECK((worst->x0 == 4 && worst->y0 == 2 && worst->channel == 1));
+    CHECK_THROWS(lab::validation::compare_by_region({a[0]}, b, 3, 2, 0.01));
+    CHECK_THROWS(lab::validation::compare_by_region(a, b, 8, 2, 0.01));
 }
