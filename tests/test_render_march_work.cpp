@@ -1,7 +1,8 @@
 // The march-work counters (render/march_work.hpp, the generated scene's SCENE_COUNT_EVALUATIONS
 // build): the counting build traces the default build's paths (same film bits), and its count of
 // distance functions per march step is exact where it is known without the counter: 1 for a scene
-// of one object, every object for a plain field (object bounds off).
+// of one object, every object for a plain field (object bounds off); and the test model's box test
+// skips its body somewhere.
 #include <catch2/catch.hpp>
 
 #include "opencl/runtime.hpp"
@@ -33,4 +34,11 @@ TEST_CASE("March work: the counting build traces the same paths and counts every
     lab::render::MarchWork plain = work_of(runtime, "scenes/primitives.json", false);
     CHECK(plain.same_film);
     CHECK(plain.evaluations_per_step == 8.0);
+
+    // scenes/shader_ball.json: the body (large, with a box test of its own), the core and the ground.
+    // The body's test comes after the other two, so it can skip; tested first, against an infinite
+    // nearest distance, it never skipped: exactly 3 per step
+    lab::render::MarchWork ball = work_of(runtime, "scenes/shader_ball.json", true);
+    CHECK(ball.same_film);
+    CHECK(ball.evaluations_per_step < 3.0);
 }
