@@ -38,13 +38,13 @@ SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int pixel) {
  * builds this program with WAVEFRONT_PREFETCH; nothing else changes, not a bit of the image. A
  * camera ray's filtered lookup is left out: neighbouring pixels read neighbouring texels. */
 SS_FN void prefetch_escape_texel(const RenderScene* scene, GLOBAL_MEM const PathState* states, GLOBAL_MEM const RayMarch* ray_marches,
-                                 int pixel, int stride) {
+                                 int pixel, int pixels) {
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
-    if (pixel >= stride || !states[pixel].active || states[pixel].seen_directly || ray_marches[pixel].status == MARCH_HIT) return;
+    if (pixel >= pixels || !states[pixel].active || states[pixel].seen_directly || ray_marches[pixel].status == MARCH_HIT) return;
     float3 d = make_float3(states[pixel].direction[0], states[pixel].direction[1], states[pixel].direction[2]);
     __builtin_prefetch(&scene->env_buffers.texels[cubemap_texel_index(scene->env.face_size, environment_to_local(&scene->env, d))]);
 #else
-    (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)stride;
+    (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels;
 #endif
 }
 
@@ -60,7 +60,8 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
     counters.rays = 0u;
     counters.lost_rays = 0u;
     PathState p;
-    if (iteration > 0) prefetch_escape_texel(scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, stride);
+    /* the image's pixels only: the padding up to the stride has no state */
+    if (iteration > 0) prefetch_escape_texel(scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, camera->width * camera->height);
     if (iteration == 0) {
         Rng rng = rng_make((uint)pixel, (uint)k->first_sample, k->seed_lo, k->seed_hi);
         float3 origin, direction;
