@@ -10,21 +10,8 @@
 #include "kernels/render_settings.h"
 #include "sdf/march_lanes.h"
 
-#ifndef MARCH_REFILL_LANES
+/* free lanes before a packet starts new rays (while the granule has rays left): half of them */
 #define MARCH_REFILL_LANES 4
-#endif
-
-/* The march of lane `lane` of `st` into marches[ray]. */
-SS_FN void store_lane(MarchLanesState st, int lane, __global RayMarch* march) {
-    float t[8];
-    int status[8], steps[8];
-    vstore8(st.m.t, 0, t);
-    vstore8(st.m.status, 0, status);
-    vstore8(st.m.steps, 0, steps);
-    march->t = t[lane];
-    march->status = status[lane];
-    march->steps = steps[lane];
-}
 
 /* The rays of `rays` (kernels/ray_march.h; `stride`: a multiple of 8 at least `pixels`). Work-item g
  * marches rays MARCH_RAYS_PER_ITEM g ... up to `pixels` on eight lanes: a lane whose march is done
@@ -50,12 +37,18 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
         const int8 free = !st.running;
         /* free lanes: their marches to store, new rays to start */
         if (next < end ? -SDF_SUM(free) >= MARCH_REFILL_LANES : any(holding && free)) {
-            int running[8], started[8];
+            int running[8], started[8], status[8], steps[8];
+            float t[8];
             vstore8(st.running, 0, running);
+            vstore8(st.m.t, 0, t);
+            vstore8(st.m.status, 0, status);
+            vstore8(st.m.steps, 0, steps);
             for (int lane = 0; lane < 8; ++lane) {
                 started[lane] = 0;
                 if (running[lane] || lane_ray[lane] < 0) continue;
-                store_lane(st, lane, &marches[lane_ray[lane]]);
+                marches[lane_ray[lane]].t = t[lane];
+                marches[lane_ray[lane]].status = status[lane];
+                marches[lane_ray[lane]].steps = steps[lane];
                 lane_ray[lane] = -1;
             }
             if (!any(st.running) && next + 8 <= end && !any(0.0f > vload8(0, rays + 6 * stride + next))) {
