@@ -49,7 +49,7 @@ SS_FN void prefetch_escape_texel(const RenderScene* scene, GLOBAL_MEM const Path
 }
 
 /* One step of the path of pixel `pixel` for sample k->first_sample (k->sample_count is 1). Sets
- * *unfinished when the path still has a ray or a shadow ray to march. */
+ * unfinished[0] when the path still has a ray to march, unfinished[1] when it has a shadow ray. */
 SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel, int iteration,
                             GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays,
                             GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches,
@@ -88,9 +88,11 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
     ray_counts[pixel] += counters.rays;
     lost_ray_counts[pixel] += counters.lost_rays;
     if (p.active || p.shadow.pending) {
-        /* every writer writes the same 1: the host needs only whether any path goes on, and a
-         * counter's atomics cost more than the step on a CPU */
-        *unfinished = 1u;
+        /* every writer writes the same 1: the host needs only whether any ray, and any shadow ray,
+         * is left to march (it launches only those marches), and a counter's atomics cost more
+         * than the step on a CPU */
+        if (p.active) unfinished[0] = 1u;
+        if (p.shadow.pending) unfinished[1] = 1u;
         return;
     }
     accumulation[pixel] = film_add_path(accumulation[pixel], float3_from_array(p.radiance));

@@ -70,6 +70,12 @@ void Runtime::read(const BufferHandle& buffer, void* data, size_t bytes) const {
     check_cl(clEnqueueReadBuffer(queue_.get(), buffer.get(), CL_TRUE, 0, bytes, data, 0, nullptr, nullptr), "clEnqueueReadBuffer");
 }
 
+void Runtime::zero(const BufferHandle& buffer, size_t bytes) const {
+    if (bytes == 0) return;
+    const cl_uint pattern = 0;
+    check_cl(clEnqueueFillBuffer(queue_.get(), buffer.get(), &pattern, sizeof(pattern), 0, bytes, 0, nullptr, nullptr), "clEnqueueFillBuffer");
+}
+
 void Runtime::launch_1d(const KernelHandle& kernel, size_t count, size_t local, size_t offset) const {
     if (count == 0) return;
     size_t global = (count + local - 1) / local * local;

@@ -43,6 +43,8 @@ public:
     BufferHandle buffer(size_t bytes, cl_mem_flags flags) const;
     void write(const BufferHandle& buffer, const void* data, size_t bytes) const;
     void read(const BufferHandle& buffer, void* data, size_t bytes) const;
+    // Sets the buffer's first `bytes` (a multiple of 4) to zero, in queue order, without waiting.
+    void zero(const BufferHandle& buffer, size_t bytes) const;
 
     // Enqueues `count` work-items in groups of `local` (the global size is rounded up, so kernels
     // check their index against the count). A fixed local size keeps PoCL from compiling a new

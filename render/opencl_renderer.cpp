@@ -115,7 +115,7 @@ void OpenClRenderer::clear_film() {
         runtime_.write(shadow_rays_, no_rays.data(), no_rays.size() * sizeof(float));
         ray_marches_ = runtime_.buffer(n * sizeof(kernel::RayMarch), CL_MEM_READ_WRITE);
         shadow_marches_ = runtime_.buffer(n * sizeof(kernel::RayMarch), CL_MEM_READ_WRITE);
-        unfinished_ = runtime_.buffer(sizeof(cl_uint), CL_MEM_READ_WRITE);
+        unfinished_ = runtime_.buffer(2 * sizeof(cl_uint), CL_MEM_READ_WRITE);
     }
     std::vector<float> zeros(pixels * 4, 0.0f);  // 0.0f and 0u share their bits
     runtime_.write(accumulation_, zeros.data(), pixels * 4 * sizeof(float));
@@ -164,29 +164,35 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pi
 }
 
 // kernels/path_tracer_wavefront.h's loop: steps, and the packets of their rays and shadow rays,
-// until no path has anything left to march.
+// until no path has anything left to march. Per step the host waits once, for the step's two
+// flags (a ray left, a shadow ray left), and launches one march of what is left.
 void OpenClRenderer::launch_wavefront_sample(const kernel::RenderKernelSettings& k, PixelRange pixels) {
     const int image = input_.settings.width * input_.settings.height;
     // MARCH_RAYS_PER_ITEM (64) pixels a work-item: a range of whole granules of 64 pixels
     static_assert(MARCH_RAYS_PER_ITEM == kLaunchGranularity, "a packet work-item marches one granule");
+    const int granules = (image + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
     const PixelRange packets{pixels.first / MARCH_RAYS_PER_ITEM, (pixels.count + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM};
-    const size_t packet_local = 1, packet_total = size_t(image + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
+    // march_rays' work-items: the rays' granules, then the shadow rays'
+    const PixelRange shadow_packets{granules + packets.first, packets.count};
+    const size_t packet_local = 1, packet_total = 2 * size_t(granules);
     for (int iteration = 0;; ++iteration) {
         // the camera ray, max_depth scattering events, and the last shadow ray one step later
         if (iteration > k.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
-        const cl_uint zero = 0;
-        runtime_.write(unfinished_, &zero, sizeof(zero));
+        runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
         cl_uint a = bind_render_arguments(step_kernel_, k);
         for (const auto& value : {iteration, stride_}) opencl::set_kernel_arg(step_kernel_, a++, value);
         for (const opencl::BufferHandle* b : {&states_, &path_rays_, &shadow_rays_, &ray_marches_, &shadow_marches_, &unfinished_})
             opencl::set_kernel_arg(step_kernel_, a++, *b);
         launch_range(step_kernel_, pixels, local_size_, size_t(image));
-        cl_uint unfinished = 0;
-        runtime_.read(unfinished_, &unfinished, sizeof(unfinished));
-        if (unfinished == 0) return;
-        for (const auto& [from, to] : {std::pair{&path_rays_, &ray_marches_}, std::pair{&shadow_rays_, &shadow_marches_}}) {
-            opencl::set_kernel_args(march_rays_, k, image, stride_, *from, *to);
-            launch_range(march_rays_, packets, packet_local, packet_total);
+        cl_uint unfinished[2] = {0, 0};
+        runtime_.read(unfinished_, unfinished, sizeof(unfinished));
+        if (unfinished[0] == 0 && unfinished[1] == 0) return;
+        opencl::set_kernel_args(march_rays_, k, image, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
+        if (unfinished[0] != 0 && unfinished[1] != 0 && packets.count == granules)
+            launch_range(march_rays_, PixelRange{0, 2 * granules}, packet_local, packet_total);  // both, in one launch
+        else {
+            if (unfinished[0] != 0) launch_range(march_rays_, packets, packet_local, packet_total);
+            if (unfinished[1] != 0) launch_range(march_rays_, shadow_packets, packet_local, packet_total);
         }
     }
 }
