@@ -49,7 +49,9 @@ SS_FN void prefetch_escape_texel(const RenderScene* scene, GLOBAL_MEM const Path
 }
 
 /* One step of the path of pixel `pixel` for sample k->first_sample (k->sample_count is 1). Sets
- * unfinished[0] when the path still has a ray to march, unfinished[1] when it has a shadow ray. */
+ * unfinished[0] when the path still has a ray to march, unfinished[1] when it has a shadow ray:
+ * every writer writes the same 1, since the host needs only whether any ray, and any shadow ray, is
+ * left (it launches only those marches), and a counter's atomics cost more than the step on a CPU. */
 SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel, int iteration,
                             GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays,
                             GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches,
@@ -81,21 +83,34 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
             path_scatter(k, s, scene, &p, r);
         }
     }
-    store_ray(rays, stride, pixel, float3_from_array(p.origin), float3_from_array(p.direction), p.active ? s.max_distance : NO_RAY);
-    store_ray(shadow_rays, stride, pixel, float3_from_array(p.shadow.origin), float3_from_array(p.shadow.direction),
-              p.shadow.pending ? shadow_max_distance(s, p.shadow.distance) : NO_RAY);
-    states[pixel] = p;
     ray_counts[pixel] += counters.rays;
     lost_ray_counts[pixel] += counters.lost_rays;
-    if (p.active || p.shadow.pending) {
-        /* every writer writes the same 1: the host needs only whether any ray, and any shadow ray,
-         * is left to march (it launches only those marches), and a counter's atomics cost more
-         * than the step on a CPU */
-        if (p.active) unfinished[0] = 1u;
-        if (p.shadow.pending) unfinished[1] = 1u;
+    if (!p.active && !p.shadow.pending) {
+        /* The path is done. All that is read of it until the next sample's camera step rewrites it
+         * is that it is done: the state's two flags (the early return above) and no ray in either
+         * buffer; so only those are written, not the 152-byte state and fourteen ray fields (most
+         * pixels of a simple scene end at their first or second step). */
+        states[pixel].active = 0;
+        states[pixel].shadow.pending = 0;
+        store_no_ray(rays, stride, pixel);
+        store_no_ray(shadow_rays, stride, pixel);
+        accumulation[pixel] = film_add_path(accumulation[pixel], float3_from_array(p.radiance));
         return;
     }
-    accumulation[pixel] = film_add_path(accumulation[pixel], float3_from_array(p.radiance));
+    if (p.active) {
+        store_ray(rays, stride, pixel, float3_from_array(p.origin), float3_from_array(p.direction), s.max_distance);
+        unfinished[0] = 1u; /* every writer writes the same 1 (see the top of the function) */
+    } else {
+        store_no_ray(rays, stride, pixel);
+    }
+    if (p.shadow.pending) {
+        store_ray(shadow_rays, stride, pixel, float3_from_array(p.shadow.origin), float3_from_array(p.shadow.direction),
+                  shadow_max_distance(s, p.shadow.distance));
+        unfinished[1] = 1u;
+    } else {
+        store_no_ray(shadow_rays, stride, pixel);
+    }
+    states[pixel] = p;
 }
 
 #endif

@@ -31,4 +31,8 @@ SS_FN void store_ray(GLOBAL_MEM float* rays, int stride, int pixel, float3 origi
     rays[6 * stride + pixel] = max_distance;
 }
 
+/* No ray for pixel `pixel`: its max distance alone, which is all that a packet kernel reads of a
+ * ray before it knows that there is one. */
+SS_FN void store_no_ray(GLOBAL_MEM float* rays, int stride, int pixel) { rays[6 * stride + pixel] = NO_RAY; }
+
 #endif
