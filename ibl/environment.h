@@ -122,4 +122,18 @@ SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const floa
     return direction;
 }
 
+/* The texel environment_sample(u1, u2) draws, found as it finds it (the guide tables and cdfs), for
+ * a caller that asks the cache for that texel before it draws the sample (the path tracer's CPU
+ * wavefront, kernels/path_tracer_wavefront.h). On a texel's edge the sample's direction may fall in
+ * the neighbour, whose texel environment_pdf() then reads. */
+SS_FN int environment_sample_texel(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf, GLOBAL_MEM const float* conditional_cdf,
+                                   GLOBAL_MEM const ushort* guide, float u1, float u2) {
+    int n = env->face_size;
+    int row, column;
+    float row_offset, column_offset;
+    distribution2d_sample(marginal_cdf, conditional_cdf, guide, CUBEMAP_FACES * n, n, env->row_guide_size, env->column_guide_size, u1, u2,
+                          &row, &column, &row_offset, &column_offset);
+    return row * n + column; /* row = face * n + j: texel (face * n + j) * n + column */
+}
+
 #endif

@@ -48,6 +48,33 @@ SS_FN void prefetch_escape_texel(const RenderScene* scene, GLOBAL_MEM const Path
 #endif
 }
 
+/* Asks the cache for the texel of the light sample that the path of pixel `pixel` makes at this
+ * step, if it makes one from the environment (its ray hit a surface it scatters from, and the
+ * environment is the light it chooses): the sample draws a texel of a map of megabytes at random.
+ * It peeks at the numbers the path will draw (a copy of its generator) and draws the texel as the
+ * sample will, through the guide table and the cdf, whose lines are then in the cache for the sample
+ * too. A path that ends at an emitter draws nothing: the prefetch is wasted, not wrong. Like
+ * prefetch_escape_texel, changes no bit of the image. The pixel may belong to a work-group that
+ * another thread is stepping: whatever state it reads, the numbers are in [0, 1), so every index
+ * stays inside its buffer, and only a prefetch uses it. */
+SS_FN void prefetch_light_sample_texel(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
+                                       GLOBAL_MEM const RayMarch* ray_marches, int pixel, int pixels) {
+#if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
+    if (pixel >= pixels || !states[pixel].active || ray_marches[pixel].status != MARCH_HIT || states[pixel].depth >= k->max_depth ||
+        k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0)
+        return;
+    Rng rng = states[pixel].rng;
+    float4 u = rng_next4(&rng); /* path_scatter's u_light: xy the sample, w the choice of light */
+    float pmf;
+    int index = select_light(scene->light_cdf, k->light_count, u.w, &pmf);
+    if (!(pmf > 0.0f) || scene->lights[index].type != LIGHT_ENVIRONMENT) return;
+    EnvironmentBuffers b = scene->env_buffers;
+    __builtin_prefetch(&b.texels[environment_sample_texel(&scene->env, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y)]);
+#else
+    (void)k, (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels;
+#endif
+}
+
 /* One step of the path of pixel `pixel` for sample k->first_sample (k->sample_count is 1). Sets
  * unfinished[0] when the path still has a ray to march, unfinished[1] when it has a shadow ray:
  * every writer writes the same 1, since the host needs only whether any ray, and any shadow ray, is
@@ -63,7 +90,11 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
     counters.lost_rays = 0u;
     PathState p;
     /* the image's pixels only: the padding up to the stride has no state */
-    if (iteration > 0) prefetch_escape_texel(scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, camera->width * camera->height);
+    if (iteration > 0) {
+        int pixels = camera->width * camera->height;
+        prefetch_escape_texel(scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, pixels);
+        prefetch_light_sample_texel(k, scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, pixels);
+    }
     if (iteration == 0) {
         Rng rng = rng_make((uint)pixel, (uint)k->first_sample, k->seed_lo, k->seed_hi);
         float3 origin, direction;
