@@ -79,13 +79,18 @@ SS_FN int cubemap_texel_coordinate(int face_size, float a) {
     return (int)floor(fmin(fmax(x, 0.0f), (float)(face_size - 1)));
 }
 
+/* Index of the texel direction d falls into, and d's face coordinates a, b. */
+SS_FN int cubemap_texel(int face_size, float3 d, float* a, float* b) {
+    int face = cubemap_face(d, a, b);
+    int i = cubemap_texel_coordinate(face_size, *a);
+    int j = cubemap_texel_coordinate(face_size, *b);
+    return (face * face_size + j) * face_size + i;
+}
+
 /* Index of the texel direction d falls into. */
 SS_FN int cubemap_texel_index(int face_size, float3 d) {
     float a, b;
-    int face = cubemap_face(d, &a, &b);
-    int i = cubemap_texel_coordinate(face_size, a);
-    int j = cubemap_texel_coordinate(face_size, b);
-    return (face * face_size + j) * face_size + i;
+    return cubemap_texel(face_size, d, &a, &b);
 }
 
 /* dA / d(solid angle) at face point (a, b): (1 + a^2 + b^2)^(3/2) (see the top of this file). */

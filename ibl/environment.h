@@ -51,10 +51,21 @@ SS_FN float3 environment_to_world(const EnvironmentMap* env, float3 e) {
     return make_float3(c * e.x + s * e.z, e.y, -s * e.x + c * e.z);
 }
 
+/* The texel world direction `direction` (any length but 0) falls in, and its face coordinates a, b
+ * (ibl/cubemap.h): what environment_radiance() and environment_pdf() read. */
+SS_FN int environment_texel(const EnvironmentMap* env, float3 direction, float* a, float* b) {
+    return cubemap_texel(env->face_size, environment_to_local(env, direction), a, b);
+}
+
+/* A texel's radiance: its rgb times the map's intensity. */
+SS_FN float3 environment_texel_radiance(const EnvironmentMap* env, float4 texel) {
+    return make_float3(texel.x, texel.y, texel.z) * env->intensity;
+}
+
 /* Radiance arriving from world direction `direction` (any length but 0): the nearest texel. */
 SS_FN float3 environment_radiance(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
-    float4 t = texels[cubemap_texel_index(env->face_size, environment_to_local(env, direction))];
-    return make_float3(t.x, t.y, t.z) * env->intensity;
+    float a, b;
+    return environment_texel_radiance(env, texels[environment_texel(env, direction, &a, &b)]);
 }
 
 /* The same, filtered: bilinear between the four texel centres nearest to the direction on its
@@ -75,8 +86,7 @@ SS_FN float3 environment_radiance_filtered(const EnvironmentMap* env, GLOBAL_MEM
     int row0 = (face * n + j0) * n, row1 = (face * n + j1) * n;
     float4 top = mix(texels[row0 + i0], texels[row0 + i1], fx);
     float4 bottom = mix(texels[row1 + i0], texels[row1 + i1], fx);
-    float4 t = mix(top, bottom, fy);
-    return make_float3(t.x, t.y, t.z) * env->intensity;
+    return environment_texel_radiance(env, mix(top, bottom, fy));
 }
 
 /* Solid-angle density of a point (a, b) of a texel drawn with probability `probability`, the point
@@ -90,13 +100,27 @@ SS_FN float environment_texel_density(int face_size, float probability, float a,
 /* Solid-angle density with which environment_sample() returns world direction `direction`: the
  * probability of its texel, stored in the texel's w (the top of this file), as a density. */
 SS_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction) {
-    int n = env->face_size;
     float a, b;
-    int face = cubemap_face(environment_to_local(env, direction), &a, &b);
-    int i = cubemap_texel_coordinate(n, a);
-    int j = cubemap_texel_coordinate(n, b);
-    float probability = texels[(face * n + j) * n + i].w;
-    return environment_texel_density(n, probability, a, b);
+    float probability = texels[environment_texel(env, direction, &a, &b)].w;
+    return environment_texel_density(env->face_size, probability, a, b);
+}
+
+/* environment_radiance() and environment_pdf() of one direction from one lookup of its texel. */
+SS_FN float3 environment_radiance_pdf(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, float3 direction, float* pdf) {
+    float a, b;
+    float4 t = texels[environment_texel(env, direction, &a, &b)];
+    *pdf = environment_texel_density(env->face_size, t.w, a, b);
+    return environment_texel_radiance(env, t);
+}
+
+/* The cell (row = face * N + j, column) that environment_sample(u1, u2) draws, and the offsets of
+ * u1 and u2 inside its cdf intervals (ibl/distribution2d.h). */
+SS_FN void environment_sample_cell(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf, GLOBAL_MEM const float* conditional_cdf,
+                                   GLOBAL_MEM const ushort* guide, float u1, float u2, int* row, int* column, float* row_offset,
+                                   float* column_offset) {
+    int n = env->face_size;
+    distribution2d_sample(marginal_cdf, conditional_cdf, guide, CUBEMAP_FACES * n, n, env->row_guide_size, env->column_guide_size, u1, u2,
+                          row, column, row_offset, column_offset);
 }
 
 /* A world direction drawn with density proportional to the texels' weights: a texel from
@@ -104,22 +128,29 @@ SS_FN float environment_pdf(const EnvironmentMap* env, GLOBAL_MEM const float4* 
  * cdf intervals. *pdf: its solid-angle density, environment_pdf() of the returned direction. That
  * is the drawn texel's density except on a texel edge, where rounding in the normalisation and
  * rotation may move the direction into the neighbour: then *pdf is the neighbour's, the texel
- * environment_radiance() reads, so radiance / pdf never mixes two texels. */
-SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, GLOBAL_MEM const float* marginal_cdf,
-                                  GLOBAL_MEM const float* conditional_cdf, GLOBAL_MEM const ushort* guide, float u1, float u2,
-                                  float* pdf) {
+ * environment_radiance() reads, so radiance / pdf never mixes two texels. *radiance:
+ * environment_radiance() of the direction, from the same lookup. */
+SS_FN float3 environment_sample_radiance(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, GLOBAL_MEM const float* marginal_cdf,
+                                         GLOBAL_MEM const float* conditional_cdf, GLOBAL_MEM const ushort* guide, float u1, float u2,
+                                         float* pdf, float3* radiance) {
     int n = env->face_size;
     int row, column;
     float row_offset, column_offset;
-    distribution2d_sample(marginal_cdf, conditional_cdf, guide, CUBEMAP_FACES * n, n, env->row_guide_size, env->column_guide_size,
-                          u1, u2, &row, &column, &row_offset, &column_offset);
+    environment_sample_cell(env, marginal_cdf, conditional_cdf, guide, u1, u2, &row, &column, &row_offset, &column_offset);
     int face = row / n;
     int j = row - face * n;
     float a = -1.0f + 2.0f * ((float)column + column_offset) / (float)n;
     float b = -1.0f + 2.0f * ((float)j + row_offset) / (float)n;
     float3 direction = environment_to_world(env, normalize(cubemap_face_point(face, a, b)));
-    *pdf = environment_pdf(env, texels, direction);
+    *radiance = environment_radiance_pdf(env, texels, direction, pdf);
     return direction;
+}
+
+/* The same without the radiance. */
+SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, GLOBAL_MEM const float* marginal_cdf,
+                                GLOBAL_MEM const float* conditional_cdf, GLOBAL_MEM const ushort* guide, float u1, float u2, float* pdf) {
+    float3 radiance;
+    return environment_sample_radiance(env, texels, marginal_cdf, conditional_cdf, guide, u1, u2, pdf, &radiance);
 }
 
 /* The texel environment_sample(u1, u2) draws, found as it finds it (the guide tables and cdfs), for
@@ -128,12 +159,10 @@ SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const floa
  * the neighbour, whose texel environment_pdf() then reads. */
 SS_FN int environment_sample_texel(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf, GLOBAL_MEM const float* conditional_cdf,
                                    GLOBAL_MEM const ushort* guide, float u1, float u2) {
-    int n = env->face_size;
     int row, column;
     float row_offset, column_offset;
-    distribution2d_sample(marginal_cdf, conditional_cdf, guide, CUBEMAP_FACES * n, n, env->row_guide_size, env->column_guide_size, u1, u2,
-                          &row, &column, &row_offset, &column_offset);
-    return row * n + column; /* row = face * n + j: texel (face * n + j) * n + column */
+    environment_sample_cell(env, marginal_cdf, conditional_cdf, guide, u1, u2, &row, &column, &row_offset, &column_offset);
+    return row * env->face_size + column; /* row = face * N + j: texel (face * N + j) * N + column */
 }
 
 #endif

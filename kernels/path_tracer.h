@@ -22,18 +22,26 @@
 #include "kernels/rng.h"
 #include "kernels/bench_standins.h" /* nothing unless a BENCH_STANDIN_* measurement build */
 
-/* The MIS weight of light `index` reached by a ray sampled from the BSDF at `from` with solid-angle
- * density `bsdf_pdf`: 1 after a delta event (no light sample could have made it) or with BSDF
- * sampling alone, 0 with light sampling alone, else the power heuristic against the density with
- * which next-event estimation at `from` samples the same direction. */
-SS_FN float light_hit_weight(const RenderKernelSettings* k, const RenderScene* scene, int index, float3 from, float3 direction,
-                             float bsdf_pdf, bool after_delta) {
+/* The MIS weight of a light reached by a ray sampled from the BSDF with solid-angle density
+ * `bsdf_pdf`: 1 after a delta event (no light sample could have made it) or with BSDF sampling
+ * alone, 0 with light sampling alone, else the power heuristic against `light_density`, the density
+ * with which next-event estimation at the ray's origin samples the same direction (the light's
+ * selection included; only read in that last case). */
+SS_FN float light_hit_mis_weight(const RenderKernelSettings* k, float bsdf_pdf, bool after_delta, float light_density) {
     if (after_delta || k->light_sampling == LIGHT_SAMPLING_BSDF) return 1.0f;
     if (k->light_sampling == LIGHT_SAMPLING_LIGHTS) return 0.0f;
+    return mis_power_heuristic(bsdf_pdf, light_density);
+}
+
+/* The same for light `index` reached from `from` along `direction`: its density looked up only when
+ * the weight needs it. */
+SS_FN float light_hit_weight(const RenderKernelSettings* k, const RenderScene* scene, int index, float3 from, float3 direction,
+                             float bsdf_pdf, bool after_delta) {
+    if (after_delta || k->light_sampling != LIGHT_SAMPLING_MIS) return light_hit_mis_weight(k, bsdf_pdf, after_delta, 0.0f);
     Light light = scene->lights[index];
     float light_density = light_selection_pmf(scene->light_cdf, k->light_count, index) *
                           light_pdf(&light, &scene->env, scene->env_buffers, from, direction);
-    return mis_power_heuristic(bsdf_pdf, light_density);
+    return light_hit_mis_weight(k, bsdf_pdf, after_delta, light_density);
 }
 
 /* Next-event estimation at a surface point: one light chosen by the selection distribution, one
@@ -114,13 +122,18 @@ SS_FN void path_scatter(const RenderKernelSettings* k, MarchSettings s, const Re
     p->active = 0;
     if (march_result.status != MARCH_HIT) {
         bool has_environment = k->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
-        if (has_environment && (k->show_background || !p->seen_directly)) {
+        if (has_environment && p->seen_directly && k->show_background) {
+            /* what the eye sees directly or in mirrors is filtered, so the backdrop shows no texels
+             * (it is seen after delta events only: no light sample could have found it) */
             float weight = light_hit_weight(k, scene, 0, previous_p, direction, p->previous_pdf, p->previous_delta);
-            /* what the eye sees directly or in mirrors is filtered, so the backdrop shows no texels */
-            if (weight > 0.0f)
-                radiance += throughput * weight *
-                            (p->seen_directly ? environment_radiance_filtered(&scene->env, scene->env_buffers.texels, direction)
-                                              : environment_radiance(&scene->env, scene->env_buffers.texels, direction));
+            if (weight > 0.0f) radiance += throughput * weight * environment_radiance_filtered(&scene->env, scene->env_buffers.texels, direction);
+        } else if (has_environment && !p->seen_directly) {
+            /* the radiance and the density of the texel, from one lookup */
+            float env_pdf;
+            float3 le = environment_radiance_pdf(&scene->env, scene->env_buffers.texels, direction, &env_pdf);
+            float weight = light_hit_mis_weight(k, p->previous_pdf, p->previous_delta,
+                                                light_selection_pmf(scene->light_cdf, k->light_count, 0) * env_pdf);
+            if (weight > 0.0f) radiance += throughput * weight * le;
         }
         float3_to_array(radiance, p->radiance);
         return;

@@ -42,7 +42,8 @@ SS_FN void prefetch_escape_texel(const RenderScene* scene, GLOBAL_MEM const Path
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
     if (pixel >= pixels || !states[pixel].active || states[pixel].seen_directly || ray_marches[pixel].status == MARCH_HIT) return;
     float3 d = make_float3(states[pixel].direction[0], states[pixel].direction[1], states[pixel].direction[2]);
-    __builtin_prefetch(&scene->env_buffers.texels[cubemap_texel_index(scene->env.face_size, environment_to_local(&scene->env, d))]);
+    float a, b;
+    __builtin_prefetch(&scene->env_buffers.texels[environment_texel(&scene->env, d, &a, &b)]);
 #else
     (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels;
 #endif

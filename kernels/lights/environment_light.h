@@ -20,11 +20,12 @@ typedef struct EnvironmentBuffers {
 SS_FN LightSample environment_light_sample(const EnvironmentMap* env, EnvironmentBuffers b, float2 u) {
     LightSample s = light_sample_none();
     float pdf;
-    float3 wi = environment_sample(env, b.texels, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y, &pdf);
+    float3 radiance;
+    float3 wi = environment_sample_radiance(env, b.texels, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y, &pdf, &radiance);
     if (!(pdf > 0.0f)) return s;
     s.wi = wi;
     s.distance = LIGHT_INFINITE_DISTANCE;
-    s.radiance = environment_radiance(env, b.texels, wi);
+    s.radiance = radiance;
     s.pdf = pdf;
     s.position = wi; /* a point at infinity: its direction */
     s.normal = -wi;
