@@ -247,3 +247,45 @@ TEST_CASE("ibl: environment sampling beats uniform sampling", "[ibl]") {
         CHECK(uniform_variance / env_variance > 5.0);
     }
 }
+
+// The path tracer's shortcuts through the environment (ibl/environment.h): the radiance and the
+// density of a direction from one lookup of its texel, the sample with its radiance, and the texel a
+// sample draws, found before the sample for a prefetch. The first two must be the separate
+// lookups' very bits; the drawn texel may differ from the sample's only where rounding moves the
+// sample's direction over a texel's edge, a band some ulps wide: fewer than 1 in 10^4 of the
+// samples, where a wrong texel index (row and column swapped, a face off) misses nearly all.
+TEST_CASE("ibl: one lookup gives the radiance and the density, and the texel a sample draws is known before it", "[ibl]") {
+    const Environment contrast = Environment::from_image(contrast_image(), "contrast", options_with(30, 8));
+    const Environment courtyard = lab::ibl::load_environment("envmaps/courtyard.exr", options_with(-75, 16));
+    for (const Environment* env : {&contrast, &courtyard}) {
+        const ::ibl::EnvironmentMap& map = env->map();
+        const brdf::float4* texels = env->texels().data();
+        validation::UniformRandom random(7);
+        long radiance_pdf_differs = 0, sample_differs = 0, texel_differs = 0;
+        const long n = 200000;
+        for (long i = 0; i < n; ++i) {
+            const float3 w = glm::normalize(random.next_float3() * 2.0f - float3(1.0f));
+            float pdf = -1.0f;
+            const float3 l = ::ibl::environment_radiance_pdf(&map, texels, w, &pdf);
+            if (l != ::ibl::environment_radiance(&map, texels, w) || pdf != ::ibl::environment_pdf(&map, texels, w)) ++radiance_pdf_differs;
+
+            const float u1 = random.next_float(), u2 = random.next_float();
+            float sample_pdf = -1.0f, plain_pdf = -2.0f;
+            float3 radiance(-1.0f);
+            const float3 d = ::ibl::environment_sample_radiance(&map, texels, env->marginal_cdf().data(), env->conditional_cdf().data(),
+                                                                env->guide().data(), u1, u2, &sample_pdf, &radiance);
+            const float3 plain = ::ibl::environment_sample(&map, texels, env->marginal_cdf().data(), env->conditional_cdf().data(),
+                                                           env->guide().data(), u1, u2, &plain_pdf);
+            if (d != plain || sample_pdf != plain_pdf || radiance != ::ibl::environment_radiance(&map, texels, d)) ++sample_differs;
+            float a, b;
+            const int drawn = ::ibl::environment_sample_texel(&map, env->marginal_cdf().data(), env->conditional_cdf().data(),
+                                                              env->guide().data(), u1, u2);
+            if (drawn != ::ibl::environment_texel(&map, d, &a, &b)) ++texel_differs;
+        }
+        INFO(env->source() << ": " << texel_differs << " of " << n << " drawn texels differ from the sample's");
+        std::printf("[ibl] %s: %ld of %ld drawn texels differ from the sample's\n", env->source().c_str(), texel_differs, n);
+        CHECK(radiance_pdf_differs == 0);
+        CHECK(sample_differs == 0);
+        CHECK(texel_differs * 10000 < n);
+    }
+}
