@@ -31,45 +31,38 @@ SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int pixel) {
  * texel from memory about as long. */
 #define WAVEFRONT_PREFETCH_AHEAD 4
 
-/* Asks the cache for the environment texel that the path of pixel `pixel` reads at this step if its
- * ray escaped (environment_radiance and environment_pdf, one cache line): a map of megabytes, looked
- * up in random directions, misses the caches nearly every time, and one work-item's lookups are
- * not overlapped. Only with PoCL, whose compiler (clang) has the builtin and whose CPU wavefront
- * builds this program with WAVEFRONT_PREFETCH; nothing else changes, not a bit of the image. A
- * camera ray's filtered lookup is left out: neighbouring pixels read neighbouring texels. */
-SS_FN void prefetch_escape_texel(const RenderScene* scene, GLOBAL_MEM const PathState* states, GLOBAL_MEM const RayMarch* ray_marches,
-                                 int pixel, int pixels) {
+/* Asks the cache for the environment texel that the path of pixel `pixel` reads at this step: a map
+ * of megabytes, looked up in random directions, misses the caches nearly every time, and one
+ * work-item's lookups are not overlapped.
+ *  - Its ray escaped: the texel of its direction (environment_radiance_pdf, one cache line). A
+ *    camera ray's filtered lookup is left out: neighbouring pixels read neighbouring texels.
+ *  - Its ray hit a surface it scatters from, and the environment is the light it chooses: the texel
+ *    its light sample draws. The step peeks at the numbers the path will draw (a copy of its
+ *    generator) and draws the texel as the sample will, through the guide table and the cdf, whose
+ *    lines are then in the cache for the sample too. A path that ends at an emitter draws nothing:
+ *    that prefetch is wasted, not wrong.
+ * Only with PoCL, whose compiler (clang) has the builtin and whose CPU wavefront builds this program
+ * with WAVEFRONT_PREFETCH; nothing else changes, not a bit of the image. The pixel may belong to a
+ * work-group that another thread is stepping: whatever state it reads, every index stays inside its
+ * buffer (the numbers are in [0, 1), a direction's texel is clamped), and only a prefetch uses it. */
+SS_FN void prefetch_step_texel(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
+                               GLOBAL_MEM const RayMarch* ray_marches, int pixel, int pixels) {
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
-    if (pixel >= pixels || !states[pixel].active || states[pixel].seen_directly || ray_marches[pixel].status == MARCH_HIT) return;
-    float3 d = make_float3(states[pixel].direction[0], states[pixel].direction[1], states[pixel].direction[2]);
-    float a, b;
-    __builtin_prefetch(&scene->env_buffers.texels[environment_texel(&scene->env, d, &a, &b)]);
-#else
-    (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels;
-#endif
-}
-
-/* Asks the cache for the texel of the light sample that the path of pixel `pixel` makes at this
- * step, if it makes one from the environment (its ray hit a surface it scatters from, and the
- * environment is the light it chooses): the sample draws a texel of a map of megabytes at random.
- * It peeks at the numbers the path will draw (a copy of its generator) and draws the texel as the
- * sample will, through the guide table and the cdf, whose lines are then in the cache for the sample
- * too. A path that ends at an emitter draws nothing: the prefetch is wasted, not wrong. Like
- * prefetch_escape_texel, changes no bit of the image. The pixel may belong to a work-group that
- * another thread is stepping: whatever state it reads, the numbers are in [0, 1), so every index
- * stays inside its buffer, and only a prefetch uses it. */
-SS_FN void prefetch_light_sample_texel(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
-                                       GLOBAL_MEM const RayMarch* ray_marches, int pixel, int pixels) {
-#if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
-    if (pixel >= pixels || !states[pixel].active || ray_marches[pixel].status != MARCH_HIT || states[pixel].depth >= k->max_depth ||
-        k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0)
+    if (pixel >= pixels || !states[pixel].active) return;
+    EnvironmentBuffers b = scene->env_buffers;
+    if (ray_marches[pixel].status != MARCH_HIT) {
+        if (states[pixel].seen_directly) return;
+        float3 d = make_float3(states[pixel].direction[0], states[pixel].direction[1], states[pixel].direction[2]);
+        float a, c;
+        __builtin_prefetch(&b.texels[environment_texel(&scene->env, d, &a, &c)]);
         return;
+    }
+    if (states[pixel].depth >= k->max_depth || k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0) return;
     Rng rng = states[pixel].rng;
     float4 u = rng_next4(&rng); /* path_scatter's u_light: xy the sample, w the choice of light */
     float pmf;
     int index = select_light(scene->light_cdf, k->light_count, u.w, &pmf);
     if (!(pmf > 0.0f) || scene->lights[index].type != LIGHT_ENVIRONMENT) return;
-    EnvironmentBuffers b = scene->env_buffers;
     __builtin_prefetch(&b.texels[environment_sample_texel(&scene->env, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y)]);
 #else
     (void)k, (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels;
@@ -91,11 +84,7 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
     counters.lost_rays = 0u;
     PathState p;
     /* the image's pixels only: the padding up to the stride has no state */
-    if (iteration > 0) {
-        int pixels = camera->width * camera->height;
-        prefetch_escape_texel(scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, pixels);
-        prefetch_light_sample_texel(k, scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, pixels);
-    }
+    if (iteration > 0) prefetch_step_texel(k, scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, camera->width * camera->height);
     if (iteration == 0) {
         Rng rng = rng_make((uint)pixel, (uint)k->first_sample, k->seed_lo, k->seed_hi);
         float3 origin, direction;
