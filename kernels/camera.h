@@ -87,7 +87,8 @@ SS_FN void camera_generate_ray(const Camera* c, float x, float y, float2 u_lens,
 
 /* The camera ray of one sample of pixel k ((k % width, k / width), row 0 at the top) from its random
  * stream's next four numbers: xy jitter the point within the pixel (a box filter), zw pick the lens
- * point. The path tracer and the camera-march packet kernel (kernels/march_packets.cl) draw it alike. */
+ * point. The path tracer (one work-item's paths, and the wavefront's camera step) and BDPT's camera
+ * subpath (kernels/bdpt_walk.h) draw it alike. */
 SS_FN void camera_pixel_ray(const Camera* c, int pixel, Rng* rng, float3* origin, float3* direction) {
     float x = (float)(pixel % c->width), y = (float)(pixel / c->width);
     float4 u = rng_next4(rng);
