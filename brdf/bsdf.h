@@ -1,7 +1,9 @@
 /* The BRDF module's entry points, shared by lobe plots, the IBL preview and the BDPT kernels.
  * Directions are unit vectors in the local shading frame (z = normal, x = tangent), both pointing
  * away from the surface: wo towards the viewer, wi towards the light. Every entry point clamps the
- * material to its documented ranges and turns the anisotropy tangent by tangent_rotation.
+ * material to its documented ranges and turns the anisotropy tangent by tangent_rotation; the
+ * *_clamped forms take a material that material_clamped() returned, for a caller that evaluates,
+ * samples and weighs one material several times at one vertex and clamps it once.
  * `measured` is the measured-tables buffer (brdf/measured.h) a BRDF_MODEL_MEASURED material reads
  * at its measured_offset; kernels pass their buffer argument. On the host, bsdf_eval, bsdf_pdf and
  * bsdf_sample pass the process's registry (brdf/host/measured_registry.hpp). */
@@ -22,8 +24,8 @@
 #include "measured.h"
 #endif
 
-SS_FN float3 bsdf_eval_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
-    Material m = material_clamped(material);
+SS_FN float3 bsdf_eval_clamped(const Material* clamped, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
+    Material m = *clamped;
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     wi = rotate_about_normal(wi, -m.tangent_rotation);
 #if BRDF_FEATURE_DTOADQ2017
@@ -38,8 +40,8 @@ SS_FN float3 bsdf_eval_tables(const Material* material, GLOBAL_MEM const float* 
     return float3_splat(0.0f);
 }
 
-SS_FN float bsdf_pdf_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
-    Material m = material_clamped(material);
+SS_FN float bsdf_pdf_clamped(const Material* clamped, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
+    Material m = *clamped;
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     wi = rotate_about_normal(wi, -m.tangent_rotation);
 #if BRDF_FEATURE_DTOADQ2017
@@ -55,8 +57,8 @@ SS_FN float bsdf_pdf_tables(const Material* material, GLOBAL_MEM const float* me
 }
 
 /* u: three uniform numbers in [0, 1). */
-SS_FN BsdfSample bsdf_sample_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 u) {
-    Material m = material_clamped(material);
+SS_FN BsdfSample bsdf_sample_clamped(const Material* clamped, GLOBAL_MEM const float* measured, float3 wo, float3 u) {
+    Material m = *clamped;
     wo = rotate_about_normal(wo, -m.tangent_rotation);
     BsdfSample s = bsdf_sample_failed();
 #if BRDF_FEATURE_DTOADQ2017
@@ -70,6 +72,21 @@ SS_FN BsdfSample bsdf_sample_tables(const Material* material, GLOBAL_MEM const f
 #endif
     s.wi = rotate_about_normal(s.wi, m.tangent_rotation);
     return s;
+}
+
+SS_FN float3 bsdf_eval_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
+    Material m = material_clamped(material);
+    return bsdf_eval_clamped(&m, measured, wo, wi);
+}
+
+SS_FN float bsdf_pdf_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
+    Material m = material_clamped(material);
+    return bsdf_pdf_clamped(&m, measured, wo, wi);
+}
+
+SS_FN BsdfSample bsdf_sample_tables(const Material* material, GLOBAL_MEM const float* measured, float3 wo, float3 u) {
+    Material m = material_clamped(material);
+    return bsdf_sample_clamped(&m, measured, wo, u);
 }
 
 #ifndef __OPENCL_C_VERSION__

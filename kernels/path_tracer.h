@@ -47,7 +47,8 @@ SS_FN float light_hit_weight(const RenderKernelSettings* k, const RenderScene* s
 /* Next-event estimation at a surface point: one light chosen by the selection distribution, one
  * sample on it, and the BSDF there. Returns the shadow ray that decides whether the sample counts,
  * with its contribution: `throughput` times the estimate (pending 0 when the sample is worth
- * nothing). u: xy for the light sample, z for the choice of light. */
+ * nothing). m: the material at the hit, clamped (material_clamped). u: xy for the light sample, z
+ * for the choice of light. */
 SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* k, const RenderScene* scene, const Material* m, const SurfaceHit* hit,
                                     float3 u, float3 throughput) {
     ShadowRay shadow;
@@ -59,11 +60,11 @@ SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* k, const RenderS
     LightSample ls = sample_light(&light, &scene->env, scene->env_buffers, hit->p, make_float2(u.x, u.y));
     if (!(ls.pdf > 0.0f) || !(max_component(ls.radiance) > 0.0f)) return shadow;
     float3 wl = frame_to_local(hit->frame, ls.wi);
-    float3 f = bsdf_eval_tables(m, scene->measured, hit->wo, wl);
+    float3 f = bsdf_eval_clamped(m, scene->measured, hit->wo, wl);
     if (!(max_component(f) > 0.0f)) return shadow;
     float light_density = pmf * ls.pdf;
     float weight = (ls.delta || k->light_sampling != LIGHT_SAMPLING_MIS) ? 1.0f
-                                                                         : mis_power_heuristic(light_density, bsdf_pdf_tables(m, scene->measured, hit->wo, wl));
+                                                                         : mis_power_heuristic(light_density, bsdf_pdf_clamped(m, scene->measured, hit->wo, wl));
     float3_to_array(offset_origin(hit->p, hit->frame.n, hit->epsilon, wl.z), shadow.origin);
     float3_to_array(ls.wi, shadow.direction);
     shadow.distance = ls.distance;
@@ -152,12 +153,13 @@ SS_FN void path_scatter(const RenderKernelSettings* k, MarchSettings s, const Re
     if (p->depth >= k->max_depth) return;
 
     Material m = scene->materials[hit.slot]; /* bsdf_* take private pointers */
+    m = material_clamped(&m);                /* once for the vertex's three BSDF calls */
     float4 u_light = rng_next4(&p->rng);
     float4 u_bsdf = rng_next4(&p->rng);
     if (k->light_sampling != LIGHT_SAMPLING_BSDF && k->light_count > 0)
         p->shadow = direct_light_sample(k, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), throughput);
 
-    BsdfSample b = bsdf_sample_tables(&m, scene->measured, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
+    BsdfSample b = bsdf_sample_clamped(&m, scene->measured, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
     if (b.flags == 0) return;
     throughput *= b.f * (fabs(b.wi.z) / b.pdf);
     float3_to_array(hit.p, p->previous_p);
