@@ -13,6 +13,12 @@
 /* free lanes before a packet starts new rays (while the granule has rays left): half of them */
 #define MARCH_REFILL_LANES 4
 
+/* The lanes of a mask as the bits of a uint (bit l: lane l), and the lowest of them: the loops
+ * below visit only the lanes they concern, in increasing order, instead of testing each of the
+ * eight on a branch that the lanes' random finishing makes unpredictable. */
+uint lane_bits(int8 mask) { return (uint)SDF_SUM(mask & (int8)(1, 2, 4, 8, 16, 32, 64, 128)); }
+int lowest_lane(uint bits) { return 31 - (int)clz(bits & (0u - bits)); }
+
 /* The rays of `rays` and `shadow_rays` (kernels/ray_march.h; `stride`: a multiple of 8 at least
  * `pixels`), into `marches` and `shadow_marches`, in one launch: work-items 0 .. granules - 1 take
  * the rays, granules .. 2 granules - 1 the shadow rays (granules: `pixels` in granules of
@@ -47,15 +53,14 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
         const int8 free = !st.running;
         /* free lanes: their marches to store, new rays to start */
         if (next < end ? -SDF_SUM(free) >= MARCH_REFILL_LANES : any(holding && free)) {
-            int running[8], started[8], status[8], steps[8];
+            int started[8], status[8], steps[8];
             float t[8];
-            vstore8(st.running, 0, running);
             vstore8(st.m.t, 0, t);
             vstore8(st.m.status, 0, status);
             vstore8(st.m.steps, 0, steps);
-            for (int lane = 0; lane < 8; ++lane) {
-                started[lane] = 0;
-                if (running[lane] || lane_ray[lane] < 0) continue;
+            vstore8((int8)0, 0, started);
+            for (uint done = lane_bits(free && holding); done != 0u; done &= done - 1u) {
+                const int lane = lowest_lane(done);
                 marches[lane_ray[lane]].t = t[lane];
                 marches[lane_ray[lane]].status = status[lane];
                 marches[lane_ray[lane]].steps = steps[lane];
@@ -70,8 +75,8 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
                 }
                 next += 8;
             } else {
-                for (int lane = 0; lane < 8; ++lane) {
-                    if (running[lane]) continue;
+                for (uint idle = lane_bits(free); idle != 0u; idle &= idle - 1u) {
+                    const int lane = lowest_lane(idle);
                     while (next < end && 0.0f > rays[6 * stride + next]) ++next; /* no ray: its march is never read */
                     if (next >= end) break;
                     for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = rays[f * stride + next];
