@@ -29,37 +29,25 @@
 
 #define CUBEMAP_FACES 6
 
-/* Face of direction d (any length but 0) and its face coordinates a, b in [-1, 1]. */
+/* Face of direction d (any length but 0) and its face coordinates a, b in [-1, 1]:
+ *   face 0 (+x): a = -z/|x|, b = -y/|x|     face 1 (-x): a = z/|x|,  b = -y/|x|
+ *   face 2 (+y): a = x/|y|,  b = z/|y|      face 3 (-y): a = x/|y|,  b = -z/|y|
+ *   face 4 (+z): a = x/|z|,  b = -y/|z|     face 5 (-z): a = -x/|z|, b = -y/|z|
+ * the major axis winning ties in the order x, y, z. Written with selects, not branches: a path's
+ * directions (light samples, rays leaving a surface) fall on the faces at random, which no branch
+ * predictor foresees; the signs are exact, so the results are those of the branches. */
 SS_FN int cubemap_face(float3 d, float* a, float* b) {
     float ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z);
-    if (ax >= ay && ax >= az) {
-        float inv = 1.0f / ax;
-        *b = -d.y * inv;
-        if (d.x >= 0.0f) {
-            *a = -d.z * inv;
-            return 0;
-        }
-        *a = d.z * inv;
-        return 1;
-    }
-    if (ay >= az) {
-        float inv = 1.0f / ay;
-        *a = d.x * inv;
-        if (d.y >= 0.0f) {
-            *b = d.z * inv;
-            return 2;
-        }
-        *b = -d.z * inv;
-        return 3;
-    }
-    float inv = 1.0f / az;
-    *b = -d.y * inv;
-    if (d.z >= 0.0f) {
-        *a = d.x * inv;
-        return 4;
-    }
-    *a = -d.x * inv;
-    return 5;
+    bool x_major = ax >= ay && ax >= az;
+    bool y_major = !x_major && ay >= az;
+    float major = x_major ? d.x : (y_major ? d.y : d.z);
+    bool positive = major >= 0.0f;
+    float inv = 1.0f / (x_major ? ax : (y_major ? ay : az));
+    float a_sign = x_major ? (positive ? -1.0f : 1.0f) : (y_major || positive ? 1.0f : -1.0f);
+    float b_sign = y_major && positive ? 1.0f : -1.0f;
+    *a = (a_sign * (x_major ? d.z : d.x)) * inv;
+    *b = (b_sign * (y_major ? d.z : d.y)) * inv;
+    return (x_major ? 0 : (y_major ? 2 : 4)) + (positive ? 0 : 1);
 }
 
 /* The point (a, b) of a face as a direction (not normalised: its length is sqrt(1 + a^2 + b^2)). */
