@@ -152,8 +152,9 @@ SS_FN void path_scatter(const RenderKernelSettings* k, MarchSettings s, const Re
     }
     if (p->depth >= k->max_depth) return;
 
-    Material m = scene->materials[hit.slot]; /* bsdf_* take private pointers */
-    m = material_clamped(&m);                /* once for the vertex's three BSDF calls */
+    /* bsdf_* take private pointers; the renderer clamped the scene's materials (material_clamped)
+     * when it took them (render/renderer.cpp), so the vertex's three BSDF calls take it as it is */
+    Material m = scene->materials[hit.slot];
     float4 u_light = rng_next4(&p->rng);
     float4 u_bsdf = rng_next4(&p->rng);
     if (k->light_sampling != LIGHT_SAMPLING_BSDF && k->light_count > 0)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "brdf/brdf.hpp"
 #include "brdf/host/features.hpp"
 #include "render/camera_setup.hpp"
 #include "render/film_resolve.hpp"
@@ -35,6 +36,14 @@ bool scatters(const brdf::Material& m) {
     return m.weight_diffuse > 0.0f || m.weight_glossy > 0.0f || m.weight_specular > 0.0f || m.weight_transmission > 0.0f;
 }
 
+// The path tracer's kernels (kernels/path_tracer.h) call the BSDF's entry points for clamped
+// materials (bsdf_*_clamped): every renderer's materials are clamped here, once, when it takes them,
+// not at every vertex. Materials read from files were range-checked already, so this changes none of
+// theirs; it keeps the kernels defined for any struct handed to the renderer.
+void clamp_materials(std::vector<brdf::Material>& materials) {
+    for (brdf::Material& m : materials) m = brdf::material_clamped(&m);
+}
+
 }  // namespace
 
 std::vector<brdf::float4> emission_table(const scene::CompiledScene& scene) {
@@ -52,6 +61,7 @@ Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     check_render_settings(input_.settings);
     compiled_ = scene::compile_scene(input_.scene, compile_options());
     if (compiled_.materials.empty()) throw std::invalid_argument("Renderer: a scene has at least one material slot");
+    clamp_materials(compiled_.materials);
     // Everything about the scene is checked before the (slow) build.
     camera_ = make_camera(compiled_.camera, input_.settings.width, input_.settings.height, compiled_.file);
     // Over-relaxation's step back is safe only where the field bounds the distance (sdf/march.h).
@@ -200,9 +210,11 @@ bool Renderer::set_materials(const std::vector<brdf::Material>& materials) {
     for (size_t k = 0; k < materials.size(); ++k) input_.scene.materials[k].material = materials[k];
     if (rebuild) {
         compiled_ = scene::compile_scene(input_.scene, compile_options());
+        clamp_materials(compiled_.materials);
         build_kernel();
     } else {
         compiled_.materials = materials;
+        clamp_materials(compiled_.materials);
     }
     emission_ = emission_table(compiled_);
     upload_scene();

@@ -110,3 +110,31 @@ TEST_CASE("Renderer: hiding the background blackens what the camera sees of the 
     CHECK(same > 0);
     CHECK(black + same + darker == shown.pixel_count());
 }
+
+// The path tracer's kernels take the materials as the renderer clamped them (render/renderer.cpp),
+// not clamping at each vertex: a material outside its ranges, handed to the renderer, must render
+// as its clamped form does (the BSDF module's own entry points clamp; kernels/path_tracer.h relies
+// on the renderer having done it).
+TEST_CASE("Renderer: a material outside its ranges renders as its clamped form on the device and the host",
+          "[render][interface][opencl][host]") {
+    lab::render::RenderInput input = diffuse_model("envmaps/courtyard.exr");
+    input.settings.width = input.settings.height = 16;
+    lab::opencl::Runtime runtime("");
+    lab::render::OpenClRenderer device(runtime, input);
+    lab::render::HostRenderer host(input, 2);
+    for (lab::render::Renderer* renderer : {static_cast<lab::render::Renderer*>(&device), static_cast<lab::render::Renderer*>(&host)}) {
+        std::vector<brdf::Material> wild = renderer->compiled_scene().materials;
+        size_t sample = 0;
+        while (renderer->compiled_scene().material_names[sample] != lab::scene::kSampleMaterialSlot) ++sample;
+        wild[sample].albedo[0] = 1.7f;      // above 1: a material that makes light
+        wild[sample].albedo[1] = NAN;       // clamped to 0
+        wild[sample].weight_diffuse = 4.0f; // clamped to 1
+        std::vector<brdf::Material> clamped = wild;
+        clamped[sample] = brdf::material_clamped(&wild[sample]);
+        CHECK_FALSE(renderer->set_materials(clamped));
+        lab::film::ImageRgb expected = render_samples(*renderer, 2).image;
+        CHECK_FALSE(renderer->set_materials(wild));
+        lab::film::ImageRgb got = render_samples(*renderer, 2).image;
+        CHECK(got.rgb == expected.rgb);
+    }
+}
