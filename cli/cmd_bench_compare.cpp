@@ -2,7 +2,8 @@
 // same scenes in one run, as a ratio. Each build renders each scene with `render --time` as a
 // child process, the two interleaved and repeated, and the paths/s come from what every render
 // writes into its EXR (dtoadq:spp and dtoadq:seconds, in every build since the render core), so
-// an older build needs no new option to be measured. The median of the repeats is reported.
+// an older build needs no new option to be measured. The median of the repeats is reported, and the
+// median of each repeat's own ratio with its range.
 // Then the same for `bench objects`' grids of N objects (cli/bench_grid.hpp), written as scene
 // files for both builds: the cost per path of one more object in each build, fitted over N, and
 // their ratio (issue 12's per-object target is below 1/3 against the build before the speed work).
@@ -106,22 +107,30 @@ void run_bench_compare(const BenchCompareCommand& c) {
     std::string self = fs::read_symlink("/proc/self/exe").string();
     fs::path folder = fs::temp_directory_path() / ("dtoadq-bench-compare-" + std::to_string(::getpid()));
     fs::create_directories(folder);
-    std::printf("bench compare: this build (%s) against %s; %s, render --time %.1f s, median of %d, interleaved\n\n", self.c_str(),
+    std::printf("bench compare: this build (%s) against %s; %s, render --time %.1f s, median of %d, interleaved\n", self.c_str(),
                 c.other.c_str(), c.size.c_str(), c.seconds, c.repeats);
-    std::printf("%-28s %16s %16s %10s\n", "scene", "paths/s (this)", "paths/s (other)", "this/other");
+    std::printf("paired: the median of each repeat's ratio (the two renders of a repeat one after the other, in alternating\n"
+                "order), with the least and greatest of them: the spread is this machine's noise\n\n");
+    std::printf("%-28s %16s %16s %10s %10s %15s\n", "scene", "paths/s (this)", "paths/s (other)", "this/other", "paired", "(range)");
     // both builds' median paths/s of one scene file, printed as a row: {this build's, the other's}
     auto both = [&](const std::string& scene, const std::string& name) {
         // PoCL compiles a kernel's work-group function at its first launch, into its cache: a short
         // render of each build first, so that no figure pays for that
         render_paths_per_second(c.other, c, scene, folder / "other.exr", 0.01);
         render_paths_per_second(self, c, scene, folder / "this.exr", 0.01);
-        std::vector<double> mine, theirs;
+        std::vector<double> mine, theirs, paired;
         for (int r = 0; r < c.repeats; ++r) {
-            theirs.push_back(render_paths_per_second(c.other, c, scene, folder / "other.exr", c.seconds));
+            // alternating which build goes first, so that a drift of the machine's speed within a
+            // repeat favours neither
+            if (r % 2 == 0) theirs.push_back(render_paths_per_second(c.other, c, scene, folder / "other.exr", c.seconds));
             mine.push_back(render_paths_per_second(self, c, scene, folder / "this.exr", c.seconds));
+            if (r % 2 == 1) theirs.push_back(render_paths_per_second(c.other, c, scene, folder / "other.exr", c.seconds));
+            paired.push_back(mine.back() / theirs.back());
         }
         const std::pair<double, double> medians{median(mine), median(theirs)};
-        std::printf("%-28s %16.3g %16.3g %9.2fx\n", name.c_str(), medians.first, medians.second, medians.first / medians.second);
+        const auto [least, greatest] = std::minmax_element(paired.begin(), paired.end());
+        std::printf("%-28s %16.3g %16.3g %9.2fx %9.2fx %6.2f-%.2fx\n", name.c_str(), medians.first, medians.second, medians.first / medians.second,
+                    median(paired), *least, *greatest);
         std::fflush(stdout);
         return medians;
     };
