@@ -210,12 +210,11 @@ bool Renderer::set_materials(const std::vector<brdf::Material>& materials) {
     for (size_t k = 0; k < materials.size(); ++k) input_.scene.materials[k].material = materials[k];
     if (rebuild) {
         compiled_ = scene::compile_scene(input_.scene, compile_options());
-        clamp_materials(compiled_.materials);
         build_kernel();
     } else {
         compiled_.materials = materials;
-        clamp_materials(compiled_.materials);
     }
+    clamp_materials(compiled_.materials);
     emission_ = emission_table(compiled_);
     upload_scene();
     reset();

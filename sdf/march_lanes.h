@@ -34,6 +34,13 @@ typedef struct MarchLanes {
     SDF_MASK steps;   /* distance evaluations made for this lane */
 } MarchLanes;
 
+/* One axis's slab [lo - grow, hi + grow] for march_surface_exit: narrows [*enter, *exit]. */
+SS_FN void march_surface_slab(float lo, float hi, SDF_FLOAT grow, SDF_FLOAT o, SDF_FLOAT v, SDF_FLOAT* enter, SDF_FLOAT* exit) {
+    SDF_FLOAT t0 = (lo - grow - o) / v, t1 = (hi + grow - o) / v;
+    *enter = fmax(*enter, fmin(t0, t1));
+    *exit = fmin(*exit, fmax(t0, t1));
+}
+
 /* Where a ray o + t v leaves the surface box of s for good, grown by the distance within which a
  * point counts as a hit (below), by the slabs of Kay and Kajiya 1986: the least of the axes' far
  * ends. -INFINITY when the ray misses the box, so that it starts past it; INFINITY when the box is
@@ -43,15 +50,9 @@ typedef struct MarchLanes {
  * Why the march may stop there: the compiler's box B holds the solid with f(p) >= dist(p, B)
  * outside it (scene/lipschitz.hpp), and a point is a hit when f / lipschitz < epsilon(t) <=
  * epsilon(max_distance), so no point farther than lipschitz epsilon(max_distance) from B is one,
- * and a ray that has left a box never enters it again. */
-/* One axis's slab [lo - grow, hi + grow] for march_surface_exit: narrows [*enter, *exit]. */
-SS_FN void march_surface_slab(float lo, float hi, SDF_FLOAT grow, SDF_FLOAT o, SDF_FLOAT v, SDF_FLOAT* enter, SDF_FLOAT* exit) {
-    SDF_FLOAT t0 = (lo - grow - o) / v, t1 = (hi + grow - o) / v;
-    *enter = fmax(*enter, fmin(t0, t1));
-    *exit = fmin(*exit, fmax(t0, t1));
-}
-
-/* The three slabs are three calls with constant indices, not a loop over arrays: PoCL kept such a
+ * and a ray that has left a box never enters it again.
+ *
+ * The three slabs are three calls with constant indices, not a loop over arrays: PoCL kept such a
  * loop, and the copy of the settings it indexes, in memory, where every restart of a packet lane
  * paid a store-forwarding stall for it (a tenth of the packet march's time on the sphere). */
 SS_FN SDF_FLOAT march_surface_exit(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, MarchSettings s) {
