@@ -11,7 +11,10 @@
  * order the adjoint demands: a light subpath arrives from wo and leaves along wi, so the light it
  * carries is what the model scatters from wo into wi, seen by a viewer at wi: the adjoint
  * f*(wo, wi) = f(wi, wo). Sampling still draws wi from the model's own sampler (any density is
- * fine: it is divided out), and only f is swapped. */
+ * fine: it is divided out), and only f is swapped.
+ *
+ * The material is one that material_clamped() returned (bsdf.h's *_clamped forms): the renderer
+ * clamps its materials once when it takes them, not at every vertex. */
 #ifndef BRDF_BSDF_TRANSPORT_H
 #define BRDF_BSDF_TRANSPORT_H
 #include "single_source/vocabulary.h"
@@ -31,16 +34,16 @@ SS_FN float bsdf_radiance_scale(const Material* m, float3 wo, float3 wi) {
 }
 
 SS_FN float3 bsdf_eval_mode(const Material* m, GLOBAL_MEM const float* measured, float3 wo, float3 wi, int mode) {
-    if (mode == TRANSPORT_IMPORTANCE) return bsdf_is_reciprocal(m) ? bsdf_eval_tables(m, measured, wo, wi) : bsdf_eval_tables(m, measured, wi, wo);
-    return bsdf_eval_tables(m, measured, wo, wi) * bsdf_radiance_scale(m, wo, wi);
+    if (mode == TRANSPORT_IMPORTANCE) return bsdf_is_reciprocal(m) ? bsdf_eval_clamped(m, measured, wo, wi) : bsdf_eval_clamped(m, measured, wi, wo);
+    return bsdf_eval_clamped(m, measured, wo, wi) * bsdf_radiance_scale(m, wo, wi);
 }
 
 /* bsdf_sample() with f in the given mode; pdf and flags are the sampler's. */
 SS_FN BsdfSample bsdf_sample_mode(const Material* m, GLOBAL_MEM const float* measured, float3 wo, float3 u, int mode) {
-    BsdfSample b = bsdf_sample_tables(m, measured, wo, u);
+    BsdfSample b = bsdf_sample_clamped(m, measured, wo, u);
     if (b.flags == 0) return b;
     if (mode == TRANSPORT_RADIANCE) b.f = b.f * bsdf_radiance_scale(m, wo, b.wi);
-    else if (!bsdf_is_reciprocal(m) && (b.flags & BSDF_DELTA) == 0) b.f = bsdf_eval_tables(m, measured, b.wi, wo);
+    else if (!bsdf_is_reciprocal(m) && (b.flags & BSDF_DELTA) == 0) b.f = bsdf_eval_clamped(m, measured, b.wi, wo);
     return b;
 }
 

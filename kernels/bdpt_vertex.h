@@ -131,7 +131,7 @@ SS_FN float vertex_pdf(const RenderKernelSettings* k, const Camera* camera, cons
     Material m = scene->materials[v->index];
     float3 wp = frame_to_local(v->frame, vertex_direction(v, prev));
     float3 wn = frame_to_local(v->frame, vertex_direction(v, next));
-    return vertex_convert_density(bsdf_pdf_tables(&m, scene->measured, wp, wn), v, next);
+    return vertex_convert_density(bsdf_pdf_clamped(&m, scene->measured, wp, wn), v, next);
 }
 
 /* f at surface vertex v between its previous vertex and unit world direction w, in the subpath's
