@@ -63,7 +63,11 @@ SS_FN void prefetch_step_texel(const RenderKernelSettings* k, const RenderScene*
     float pmf;
     int index = select_light(scene->light_cdf, k->light_count, u.w, &pmf);
     if (!(pmf > 0.0f) || scene->lights[index].type != LIGHT_ENVIRONMENT) return;
-    __builtin_prefetch(&b.texels[environment_sample_texel(&scene->env, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y)]);
+    int texel = environment_sample_texel(&scene->env, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y);
+    __builtin_prefetch(&b.texels[texel]);
+    /* the texel's two entries of its row's cdf, row * (N + 1) + column: the sample reads them for its
+     * offset inside the texel, which the peek leaves out when the guide alone names the texel */
+    __builtin_prefetch(&b.conditional_cdf[texel + texel / scene->env.face_size]);
 #else
     (void)k, (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels;
 #endif
