@@ -36,10 +36,11 @@ bool scatters(const brdf::Material& m) {
     return m.weight_diffuse > 0.0f || m.weight_glossy > 0.0f || m.weight_specular > 0.0f || m.weight_transmission > 0.0f;
 }
 
-// The path tracer's kernels (kernels/path_tracer.h) call the BSDF's entry points for clamped
-// materials (bsdf_*_clamped): every renderer's materials are clamped here, once, when it takes them,
-// not at every vertex. Materials read from files were range-checked already, so this changes none of
-// theirs; it keeps the kernels defined for any struct handed to the renderer.
+// The integrators' kernels (kernels/path_tracer.h; BDPT's through brdf/bsdf_transport.h) call the
+// BSDF's entry points for clamped materials (bsdf_*_clamped): every renderer's materials are
+// clamped here, once, when it takes them, not at every vertex. Materials read from files were
+// range-checked already, so this changes none of theirs; it keeps the kernels defined for any
+// struct handed to the renderer.
 void clamp_materials(std::vector<brdf::Material>& materials) {
     for (brdf::Material& m : materials) m = brdf::material_clamped(&m);
 }
