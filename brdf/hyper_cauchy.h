@@ -16,6 +16,11 @@ SS_FN float hyper_cauchy_d(float3 m, float sx, float sy, float g) {
     return norm * pow(m.z, 2.0f * g - 4.0f) * pow(2.0f * m.z * m.z + q, -g);
 }
 
+/* A shape's normaliser of the incomplete beta in Lambda and in the slopes' CDF, log(1 / B(g - 1, 1/2)):
+ * three lgamma(), so a BSDF evaluation computes it once (struct Microfacet) rather than in each
+ * Lambda and each sample. */
+SS_FN float hyper_cauchy_log_norm(float g) { return incomplete_beta_log_norm(g - 1.0f, 0.5f); }
+
 /* log of the slope densities' constant C = (g - 1) 2^(g - 1) Gamma(g - 1/2) / (sqrt(pi) Gamma(g)). */
 SS_FN float hyper_cauchy_log_c(float g) {
     return log(g - 1.0f) + (g - 1.0f) * log(2.0f) + lgamma(g - 0.5f) - 0.5f * log(SS_PI) - lgamma(g);
@@ -26,7 +31,8 @@ SS_FN float hyper_cauchy_log_c(float g) {
  *          = C (2 + mu^2)^(3/2 - g) / (2 mu (g - 3/2)) - I_{2/(2+mu^2)}(g - 1, 1/2) / 2.
  * The tail of P2 is a Student-t tail, hence the incomplete beta. Finite for g > 3/2 only: heavier
  * tails have infinite mean slope and mask everything but normal incidence. */
-SS_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g) {
+/* log_norm = hyper_cauchy_log_norm(g) */
+SS_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g, float log_norm) {
     float tangential = sqrt(sqr(sx * w.x) + sqr(sy * w.y));
     float cz = fabs(w.z);
     if (!(tangential > 0.0f)) return 0.0f;
@@ -35,12 +41,12 @@ SS_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g) {
     if (mu > 1e15f) return 0.0f;
     float mu2 = mu * mu;
     float first = exp(hyper_cauchy_log_c(g) + (1.5f - g) * log(2.0f + mu2)) / (2.0f * mu * (g - 1.5f));
-    float tail = 0.5f * incomplete_beta(g - 1.0f, 0.5f, 2.0f / (2.0f + mu2));
+    float tail = 0.5f * incomplete_beta_normed(g - 1.0f, 0.5f, 2.0f / (2.0f + mu2), log_norm);
     return fmax(first - tail, 0.0f);
 }
 
 /* CDF of a unit slope x of the marginal P2 (a Student-t with 2g - 2 degrees of freedom, x^2 / 2 = t^2 / nu);
- * log_norm = incomplete_beta_log_norm(g - 1, 1/2). */
+ * log_norm = hyper_cauchy_log_norm(g). */
 SS_FN float hyper_cauchy_slope_cdf(float x, float g, float log_norm) {
     float tail = 0.5f * incomplete_beta_normed(g - 1.0f, 0.5f, 2.0f / (2.0f + x * x), log_norm);
     return x <= 0.0f ? tail : 1.0f - tail;
@@ -78,12 +84,12 @@ SS_FN float hyper_cauchy_next_iterate(float newton, float lo, float hi) {
     return 0.5f * (lo + hi);
 }
 
-SS_FN float hyper_cauchy_sample_visible_slope_x(float mu, float g, float u) {
+SS_FN float hyper_cauchy_sample_visible_slope_x(float mu, float g, float log_norm, float u) {
     /* A scaled by (2g - 3) / C: the power term carries no special function, so at grazing incidence,
      * where it dominates, the root is as precise as pow() and not as the incomplete beta. For u > 1/2
      * the mass above x, A(mu) - A(x), is matched instead: near mu, where the density vanishes, its
      * logarithm still has a slope, and log A has none. */
-    float c = exp(hyper_cauchy_log_c(g)), log_norm = incomplete_beta_log_norm(g - 1.0f, 0.5f);
+    float c = exp(hyper_cauchy_log_c(g));
     float weight = mu * (2.0f * g - 3.0f) / c;
     float cdf_mu = hyper_cauchy_slope_cdf(mu, g, log_norm), power_mu = pow(2.0f + mu * mu, 1.5f - g);
     bool upper = u > 0.5f;
@@ -97,6 +103,7 @@ SS_FN float hyper_cauchy_sample_visible_slope_x(float mu, float g, float u) {
         float mass = upper ? weight * (cdf_mu - cdf) + (power_mu - power * (2.0f + x * x)) : weight * cdf + power * (2.0f + x * x);
         /* increasing in v either way; d log(mass) / dv = -+ (mu - x) P2(x) cosh v / mass, P2 scaled alike */
         float f = upper ? log_target - log(mass) : log(mass) - log_target;
+        if (f == 0.0f) break; /* the root to float precision: bisecting on from here only wandered (10 to 30 steps) */
         if (f < 0.0f) lo = fmax(lo, v);
         else hi = fmin(hi, v);
         float slope = (mu - x) * (2.0f * g - 3.0f) * power / mass * sqrt(1.0f + x * x);
@@ -112,12 +119,21 @@ SS_FN float hyper_cauchy_sample_visible_slope_x(float mu, float g, float u) {
 SS_FN float hyper_cauchy_sample_student_t(float nu, float u) {
     float log_norm = incomplete_beta_log_norm(0.5f * nu, 0.5f);
     float k = exp(lgamma(0.5f * (nu + 1.0f)) - lgamma(0.5f * nu)) / sqrt(nu * SS_PI);
-    float log_target = log(fmin(u, 1.0f - u));
-    float lo = -INFINITY, hi = 0.0f, v = -1.0f;
+    float target = fmin(u, 1.0f - u), log_target = log(target);
+    /* The root t < 0 is bracketed by two bounds on the density: it is at most K, so the CDF is at
+     * least 1/2 - K |t|; it is below its tail K (t^2/nu)^(-(nu+1)/2), so the CDF is below
+     * K nu^((nu-1)/2) |t|^(-nu). Each bound is the root's limit at one end (t -> 0, t -> -inf), and
+     * both are widened a little in v against rounding. */
+    float t_near = (0.5f - target) / k;
+    float t_far = exp((log(k) + 0.5f * (nu - 1.0f) * log(nu) - log_target) / nu);
+    float lo = -hyper_cauchy_asinh(t_far) - 1e-3f, hi = fmin(0.0f, 1e-3f - hyper_cauchy_asinh(t_near));
+    /* the tail bound is the tighter one in the tail; u = 0 puts it at -inf */
+    float v = fmax(target < 0.1f ? lo : hi, HYPER_CAUCHY_LOWEST_V);
     for (int step = 0; step < HYPER_CAUCHY_INVERSION_STEPS; ++step) {
         float t = hyper_cauchy_sinh(v);
         float cdf = 0.5f * incomplete_beta_normed(0.5f * nu, 0.5f, nu / (nu + t * t), log_norm);
         float f = log(cdf) - log_target;
+        if (f == 0.0f) break;
         if (f < 0.0f) lo = fmax(lo, v);
         else hi = fmin(hi, v);
         float slope = k * pow(1.0f + t * t / nu, -0.5f * (nu + 1.0f)) / cdf * sqrt(1.0f + t * t);
@@ -134,7 +150,7 @@ SS_FN float hyper_cauchy_sample_student_t(float nu, float u) {
 
 /* Visible normals of w (flipped to the upper side) by stretching to unit width, sampling the visible
  * slopes there and stretching back. pdf(m) = G1(w) max(0, w.m) D(m) / |cos theta_w|, as for GGX. */
-SS_FN float3 hyper_cauchy_sample_visible_normal(float3 w, float sx, float sy, float g, float u1, float u2) {
+SS_FN float3 hyper_cauchy_sample_visible_normal(float3 w, float sx, float sy, float g, float log_norm, float u1, float u2) {
     if (w.z < 0.0f) w = -w; /* the normals visible from below are those of the mirrored direction */
     float3 ws = make_float3(sx * w.x, sy * w.y, w.z);
     float tangential = sqrt(ws.x * ws.x + ws.y * ws.y);
@@ -142,7 +158,7 @@ SS_FN float3 hyper_cauchy_sample_visible_normal(float3 w, float sx, float sy, fl
     float sin_phi = tangential > 0.0f ? ws.y / tangential : 0.0f;
     /* at normal incidence the visible slopes are the slopes themselves; mu = 1e15 is that to float precision */
     float mu = tangential > ws.z * 1e-15f ? ws.z / tangential : 1e15f;
-    float x = hyper_cauchy_sample_visible_slope_x(mu, g, u1);
+    float x = hyper_cauchy_sample_visible_slope_x(mu, g, log_norm, u1);
     float y = sqrt((2.0f + x * x) / (2.0f * g - 1.0f)) * hyper_cauchy_sample_student_t(2.0f * g - 1.0f, u2);
     /* turn back to wo's azimuth and stretch back; the normal of slope (x, y) is (-x, -y, 1) normalised */
     float slope_x = sx * (cos_phi * x - sin_phi * y), slope_y = sy * (sin_phi * x + cos_phi * y);

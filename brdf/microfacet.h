@@ -21,18 +21,27 @@ typedef struct Microfacet {
     float ax;   /* GGX alpha along the tangent; Hyper-Cauchy width is alpha / sqrt(2) */
     float ay;   /* ... along the bitangent */
     float shape;
+    float log_norm; /* Hyper-Cauchy only: hyper_cauchy_log_norm(shape), once per evaluation */
 } Microfacet;
+
+SS_FN Microfacet microfacet_make(int kind, float ax, float ay, float shape) {
+    Microfacet mf;
+    mf.kind = kind;
+    mf.ax = ax;
+    mf.ay = ay;
+    mf.shape = shape;
+    mf.log_norm = 0.0f;
+#if BRDF_FEATURE_HYPER_CAUCHY
+    if (kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) mf.log_norm = hyper_cauchy_log_norm(shape);
+#endif
+    return mf;
+}
 
 /* Disney's anisotropy mapping (Burley 2012): aspect = sqrt(1 - 0.9 anisotropic). */
 SS_FN Microfacet microfacet_from_material(const Material* m) {
     float alpha = fmax(sqr(m->roughness), BRDF_MIN_ALPHA);
     float aspect = sqrt(1.0f - 0.9f * m->anisotropic);
-    Microfacet mf;
-    mf.kind = m->distribution;
-    mf.ax = fmax(alpha / aspect, BRDF_MIN_ALPHA);
-    mf.ay = fmax(alpha * aspect, BRDF_MIN_ALPHA);
-    mf.shape = m->hc_shape;
-    return mf;
+    return microfacet_make(m->distribution, fmax(alpha / aspect, BRDF_MIN_ALPHA), fmax(alpha * aspect, BRDF_MIN_ALPHA), m->hc_shape);
 }
 
 SS_FN bool microfacet_is_smooth(Microfacet mf) { return fmax(mf.ax, mf.ay) < BRDF_SMOOTH_ALPHA; }
@@ -56,7 +65,7 @@ SS_FN float microfacet_d(Microfacet mf, float3 m) {
 SS_FN float microfacet_lambda(Microfacet mf, float3 w) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
-        return hyper_cauchy_lambda(w, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape);
+        return hyper_cauchy_lambda(w, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, mf.log_norm);
 #endif
 #if BRDF_FEATURE_GGX
     return ggx_lambda(w, mf.ax, mf.ay);
@@ -75,7 +84,7 @@ SS_FN float microfacet_g2(Microfacet mf, float3 wo, float3 wi) {
 SS_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, float u2) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
-        return hyper_cauchy_sample_visible_normal(wo, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, u1, u2);
+        return hyper_cauchy_sample_visible_normal(wo, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, mf.log_norm, u1, u2);
 #endif
 #if BRDF_FEATURE_GGX
     return ggx_sample_visible_normal(wo, mf.ax, mf.ay, u1, u2);

@@ -17,14 +17,7 @@ using namespace lab::validation;
 
 namespace {
 
-brdf::Microfacet distribution(int kind, float ax, float ay, float shape) {
-    brdf::Microfacet mf;
-    mf.kind = kind;
-    mf.ax = ax;
-    mf.ay = ay;
-    mf.shape = shape;
-    return mf;
-}
+brdf::Microfacet distribution(int kind, float ax, float ay, float shape) { return brdf::microfacet_make(kind, ax, ay, shape); }
 
 // GGX and Hyper-Cauchy at several widths (alpha_x, alpha_y), anisotropic ones included.
 std::vector<brdf::Microfacet> distributions() {
