@@ -3,6 +3,7 @@
  * arguments are the path tracer's (kernels/path_tracer.cl), bound the same way. */
 #pragma OPENCL FP_CONTRACT OFF
 
+#include "scene/materials.h" /* the feature switches, before any brdf/ header */
 #include "scene/generated.h"
 
 #include "kernels/material_layout.h"

@@ -4,6 +4,7 @@
  * the same arguments, so the host (render/opencl_renderer) binds them the same way. */
 #pragma OPENCL FP_CONTRACT OFF
 
+#include "scene/materials.h" /* the feature switches, before any brdf/ header */
 #include "scene/generated.h"
 
 #include "kernels/material_layout.h"

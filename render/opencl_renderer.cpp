@@ -62,8 +62,16 @@ void OpenClRenderer::build_kernel() {
     kernel_ = std::move(kernel);
     if (wavefront()) {
         step_kernel_ = program_->kernel("render_pt_step");
-        packet_program_.emplace(runtime_.build(scene::assemble_scene_kernel("kernels/march_packets.cl", compiled_), options + " -DSDF_LANES=8"));
-        march_rays_ = packet_program_->kernel("march_rays");
+        // The marches see only the geometry (scene/generated.h): a change of materials, which
+        // rebuilds the step kernel, keeps this program.
+        opencl::AssembledSource packets = scene::assemble_scene_kernel("kernels/march_packets.cl", compiled_);
+        std::string packet_options = options + " -DSDF_LANES=8";
+        if (!packet_program_ || packets.text != packet_source_ || packet_options != packet_options_) {
+            packet_program_.emplace(runtime_.build(packets, packet_options));
+            march_rays_ = packet_program_->kernel("march_rays");
+            packet_source_ = std::move(packets.text);
+            packet_options_ = std::move(packet_options);
+        }
     }
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -37,6 +37,7 @@ private:
     cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& k) const;
     void launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const;
     std::optional<opencl::Program> packet_program_;
+    std::string packet_source_, packet_options_;  // what packet_program_ was built from
     opencl::KernelHandle step_kernel_, march_rays_;
     opencl::BufferHandle states_, path_rays_, shadow_rays_, ray_marches_, shadow_marches_, unfinished_;
     int stride_ = 0;  // entries of each ray array: the pixels rounded up to a whole packet

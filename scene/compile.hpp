@@ -1,6 +1,6 @@
-// The scene compiler: a Scene becomes OpenCL C source (the virtual file "scene/generated.h") that
-// defines the scene's distance field with only the sdf/ headers it uses, plus what the renderer
-// needs beside it (material slots, emitters, camera, environment, the Lipschitz bound).
+// The scene compiler: a Scene becomes OpenCL C source (the virtual files "scene/generated.h" and
+// "scene/materials.h") that defines the scene's distance field with only the sdf/ headers it uses,
+// plus what the renderer // needs beside it (material slots, emitters, camera, environment, the Lipschitz bound).
 #pragma once
 
 #include <limits>
@@ -30,10 +30,13 @@ Scene apply_options(const Scene& scene, const CompileOptions& options);
 
 struct CompiledScene {
     std::string file;                            // the scene file, for messages
-    // Defines SCENE_LIPSCHITZ, SCENE_MATERIAL_COUNT, SCENE_EMITTER_COUNT, the BRDF_FEATURE_ switches
-    // of its materials, and scene_distance / scene_distance_material / scene_analytic_normal.
-    // Include it before any brdf/ header (the feature switches must come first).
+    // scene/generated.h, the geometry: defines SCENE_LIPSCHITZ, SCENE_EMITTER_COUNT, and
+    // scene_distance / scene_distance_material / scene_analytic_normal.
     std::string source;
+    // scene/materials.h: SCENE_MATERIAL_COUNT and the BRDF_FEATURE_ switches of its materials.
+    // A kernel that shades includes it before any brdf/ header (the switches must come first); one
+    // that only marches leaves it out, and so is the same program whatever the materials.
+    std::string material_source;
     std::vector<brdf::Material> materials;       // per slot: declared materials, then one per emitter
     std::vector<std::string> material_names;     // per slot
     std::vector<Vec3> emission;                  // per slot: an emitter's radiance, else 0

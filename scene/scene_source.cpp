@@ -3,9 +3,9 @@
 namespace lab::scene {
 
 opencl::AssembledSource assemble_scene_kernel(const std::string& entry, const CompiledScene& scene) {
-    const std::string& generated = scene.source;
-    return opencl::assemble_source(entry, [&generated](const std::string& path) -> std::string_view {
-        if (path == kGeneratedScenePath) return generated;
+    return opencl::assemble_source(entry, [&scene](const std::string& path) -> std::string_view {
+        if (path == kGeneratedScenePath) return scene.source;
+        if (path == kSceneMaterialsPath) return scene.material_source;
         return opencl::embedded_kernel_file(path);
     });
 }

@@ -57,15 +57,29 @@ TEST_CASE("scene compiler: a sphere-only scene's kernel holds no other sdf code"
         INFO(absent);
         CHECK(source.text.find(absent) == std::string::npos);
     }
-    // The contract's defines, and the BRDF features of a white Lambert material only.
-    for (const char* line : {"#define SCENE_LIPSCHITZ 1.0f\n", "#define SCENE_MATERIAL_COUNT 1\n", "#define SCENE_EMITTER_COUNT 0\n",
-                             "#define BRDF_FEATURE_DIFFUSE 1\n", "#define BRDF_FEATURE_GLOSSY 0\n", "#define BRDF_FEATURE_TRANSMISSION 0\n",
-                             "SS_FN float scene_distance(float3 p)", "SS_FN float scene_distance_material(float3 p, int* material)",
-                             "SS_FN int scene_analytic_normal(float3 p, float3* n)", "SS_FN float3 scene_object_0_normal(float3 p)"}) {
+    // The contract's defines in the geometry, and the BRDF features of a white Lambert material only
+    // apart from it (scene/materials.h), where the scene probe, which shades nothing, does not look.
+    for (const char* line : {"#define SCENE_LIPSCHITZ 1.0f\n", "#define SCENE_EMITTER_COUNT 0\n", "SS_FN float scene_distance(float3 p)",
+                             "SS_FN float scene_distance_material(float3 p, int* material)", "SS_FN int scene_analytic_normal(float3 p, float3* n)",
+                             "SS_FN float3 scene_object_0_normal(float3 p)"}) {
         INFO(line);
         CHECK(c.source.find(line) != std::string::npos);
     }
+    for (const char* line : {"#define SCENE_MATERIAL_COUNT 1\n", "#define BRDF_FEATURE_DIFFUSE 1\n", "#define BRDF_FEATURE_GLOSSY 0\n",
+                             "#define BRDF_FEATURE_TRANSMISSION 0\n"}) {
+        INFO(line);
+        CHECK(c.material_source.find(line) != std::string::npos);
+        CHECK(c.source.find(line) == std::string::npos);
+    }
     CHECK(c.material_names == std::vector<std::string>{"white"});
+    // The render kernels see those switches: a white Lambert scene's has no microfacet code.
+    for (const char* kernel : {"kernels/path_tracer.cl", "kernels/bdpt.cl"}) {
+        INFO(kernel);
+        std::string text = lab::scene::assemble_scene_kernel(kernel, c).text;
+        CHECK(text.find("lambert") != std::string::npos);
+        CHECK(text.find("ggx_d(") == std::string::npos);
+        CHECK(text.find("hyper_cauchy_d(") == std::string::npos);
+    }
 }
 
 TEST_CASE("scene compiler: the shader ball includes exactly the headers it uses", "[scene]") {
@@ -125,10 +139,18 @@ TEST_CASE("scene compiler: material overrides and disabled objects", "[scene]") 
     CHECK(std::memcmp(&c.materials[0], &gold, sizeof(gold)) == 0);
     CHECK(c.materials[1].weight_diffuse == 1.0f);  // the ground's stays
     // Gold needs glossy reflection, the default glossy plastic and the ground need diffuse.
-    CHECK(c.source.find("#define BRDF_FEATURE_GLOSSY 1\n") != std::string::npos);
+    CHECK(c.material_source.find("#define BRDF_FEATURE_GLOSSY 1\n") != std::string::npos);
     lab::scene::CompileOptions grey_only;
     grey_only.material_overrides["sample"] = ball.materials[1].material;
-    CHECK(lab::scene::compile_scene(ball, grey_only).source.find("#define BRDF_FEATURE_GLOSSY 0\n") != std::string::npos);
+    CompiledScene grey = lab::scene::compile_scene(ball, grey_only);
+    CHECK(grey.material_source.find("#define BRDF_FEATURE_GLOSSY 0\n") != std::string::npos);
+    // The geometry is the same whatever the materials, and so is every program that only marches
+    // (the packet kernels): the renderer keeps it, and a cold PoCL cache compiles it once.
+    CHECK(grey.source == c.source);
+    CHECK(lab::scene::assemble_scene_kernel("kernels/march_packets.cl", grey).text ==
+          lab::scene::assemble_scene_kernel("kernels/march_packets.cl", c).text);
+    CHECK(lab::scene::assemble_scene_kernel("kernels/path_tracer.cl", grey).text !=
+          lab::scene::assemble_scene_kernel("kernels/path_tracer.cl", c).text);
 
     lab::scene::CompileOptions no_ground;
     no_ground.disabled_objects = {"ground"};
@@ -168,7 +190,7 @@ TEST_CASE("scene compiler: emitters get material slots with their radiance", "[s
     CHECK(c.emission[3] == Vec3(40.0f, 34.0f, 26.0f));
     CHECK(c.emission[0] == Vec3(0.0f));
     CHECK(c.source.find("#define SCENE_EMITTER_COUNT 1\n") != std::string::npos);
-    CHECK(c.source.find("#define SCENE_MATERIAL_COUNT 4\n") != std::string::npos);
+    CHECK(c.material_source.find("#define SCENE_MATERIAL_COUNT 4\n") != std::string::npos);
     // Hitting the emitter returns its slot.
     int material = -1;
     float d = lab::scene::scene_distance_material(lab::scene::load_scene("scenes/metaballs.json"), c.emitters[0].center, &material);
