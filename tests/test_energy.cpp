@@ -127,9 +127,10 @@ TEST_CASE("furnace: mixtures (metallic, mirror, coat, transmission)", "[energy][
 }
 
 TEST_CASE("furnace by quadrature: heavy-tailed Hyper-Cauchy at grazing incidence", "[energy][sweep]") {
-    // Hyper-Cauchy normals are sampled from D cos (no visible-normal sampling exists), so at grazing
-    // incidence the estimator's weights are heavy-tailed (infinite variance for shape <= 2): the
-    // bound is checked by quadrature instead, which no sampler enters.
+    // The bound by quadrature, which no sampler enters: for the heaviest tails at grazing incidence
+    // a check that does not rest on the visible-normal sampler (its sampled furnace:
+    // test_energy_compensation.cpp). Written when Hyper-Cauchy normals were sampled from D cos,
+    // whose weights there had infinite variance for shape <= 2.
     double largest = 0.0;
     for (float shape : {1.6f, 2.0f, 3.0f})
         for (float theta : {60.0f, 85.0f, 89.9f, 120.0f, 175.0f})
