@@ -16,14 +16,27 @@ SS_FN float hyper_cauchy_d(float3 m, float sx, float sy, float g) {
     return norm * pow(m.z, 2.0f * g - 4.0f) * pow(2.0f * m.z * m.z + q, -g);
 }
 
-/* A shape's normaliser of the incomplete beta in Lambda and in the slopes' CDF, log(1 / B(g - 1, 1/2)):
- * three lgamma(), so a BSDF evaluation computes it once (struct Microfacet) rather than in each
- * Lambda and each sample. */
-SS_FN float hyper_cauchy_log_norm(float g) { return incomplete_beta_log_norm(g - 1.0f, 0.5f); }
+/* A shape's constants, which need lgamma(): a BSDF evaluation computes them once (struct Microfacet)
+ * rather than in each Lambda and each sample (seven lgamma per sample, two per Lambda). */
+typedef struct HyperCauchyShape {
+    float log_norm;         /* log(1 / B(g - 1, 1/2)): the incomplete beta's in Lambda and in the slopes' CDF */
+    float log_c;            /* log of the slope densities' constant C = (g - 1) 2^(g - 1) Gamma(g - 1/2) / (sqrt(pi) Gamma(g)) */
+    float student_log_norm; /* log(1 / B(nu/2, 1/2)), nu = 2g - 1: the second slope's Student-t CDF */
+    float student_k;        /* that Student-t's density at 0, Gamma((nu + 1)/2) / (Gamma(nu/2) sqrt(nu pi)) */
+} HyperCauchyShape;
 
-/* log of the slope densities' constant C = (g - 1) 2^(g - 1) Gamma(g - 1/2) / (sqrt(pi) Gamma(g)). */
-SS_FN float hyper_cauchy_log_c(float g) {
-    return log(g - 1.0f) + (g - 1.0f) * log(2.0f) + lgamma(g - 0.5f) - 0.5f * log(SS_PI) - lgamma(g);
+/* Four lgamma for all four: for g in [BRDF_HC_SHAPE_MIN, BRDF_HC_SHAPE_MAX] the arguments
+ * (g - 1) + 1/2 = nu/2 = g - 1/2 and (nu + 1)/2 = g are exact in float, so each constant has the
+ * bits of its own formula, incomplete_beta_log_norm(g - 1, 1/2) and so on. */
+SS_FN HyperCauchyShape hyper_cauchy_shape(float g) {
+    float lgamma_g = lgamma(g), lgamma_half_less = lgamma(g - 0.5f), lgamma_half = lgamma(0.5f);
+    float nu = 2.0f * g - 1.0f;
+    HyperCauchyShape s;
+    s.log_norm = lgamma_half_less - lgamma(g - 1.0f) - lgamma_half;
+    s.log_c = log(g - 1.0f) + (g - 1.0f) * log(2.0f) + lgamma_half_less - 0.5f * log(SS_PI) - lgamma_g;
+    s.student_log_norm = lgamma_g - lgamma_half_less - lgamma_half;
+    s.student_k = exp(lgamma_g - lgamma_half_less) / sqrt(nu * SS_PI);
+    return s;
 }
 
 /* Smith Lambda from the marginal slope density P2(q) = C (2 + q^2)^(1/2 - g). With mu = cot theta / s(phi):
@@ -31,8 +44,8 @@ SS_FN float hyper_cauchy_log_c(float g) {
  *          = C (2 + mu^2)^(3/2 - g) / (2 mu (g - 3/2)) - I_{2/(2+mu^2)}(g - 1, 1/2) / 2.
  * The tail of P2 is a Student-t tail, hence the incomplete beta. Finite for g > 3/2 only: heavier
  * tails have infinite mean slope and mask everything but normal incidence. */
-/* log_norm = hyper_cauchy_log_norm(g) */
-SS_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g, float log_norm) {
+/* shape = hyper_cauchy_shape(g) */
+SS_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g, HyperCauchyShape shape) {
     float tangential = sqrt(sqr(sx * w.x) + sqr(sy * w.y));
     float cz = fabs(w.z);
     if (!(tangential > 0.0f)) return 0.0f;
@@ -40,13 +53,13 @@ SS_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g, float log
     if (mu < 1e-12f) return 1e30f;
     if (mu > 1e15f) return 0.0f;
     float mu2 = mu * mu;
-    float first = exp(hyper_cauchy_log_c(g) + (1.5f - g) * log(2.0f + mu2)) / (2.0f * mu * (g - 1.5f));
-    float tail = 0.5f * incomplete_beta_normed(g - 1.0f, 0.5f, 2.0f / (2.0f + mu2), log_norm);
+    float first = exp(shape.log_c + (1.5f - g) * log(2.0f + mu2)) / (2.0f * mu * (g - 1.5f));
+    float tail = 0.5f * incomplete_beta_normed(g - 1.0f, 0.5f, 2.0f / (2.0f + mu2), shape.log_norm);
     return fmax(first - tail, 0.0f);
 }
 
 /* CDF of a unit slope x of the marginal P2 (a Student-t with 2g - 2 degrees of freedom, x^2 / 2 = t^2 / nu);
- * log_norm = hyper_cauchy_log_norm(g). */
+ * log_norm = hyper_cauchy_shape(g).log_norm. */
 SS_FN float hyper_cauchy_slope_cdf(float x, float g, float log_norm) {
     float tail = 0.5f * incomplete_beta_normed(g - 1.0f, 0.5f, 2.0f / (2.0f + x * x), log_norm);
     return x <= 0.0f ? tail : 1.0f - tail;
@@ -84,13 +97,13 @@ SS_FN float hyper_cauchy_next_iterate(float newton, float lo, float hi) {
     return 0.5f * (lo + hi);
 }
 
-SS_FN float hyper_cauchy_sample_visible_slope_x(float mu, float g, float log_norm, float u) {
+SS_FN float hyper_cauchy_sample_visible_slope_x(float mu, float g, HyperCauchyShape shape, float u) {
     /* A scaled by (2g - 3) / C: the power term carries no special function, so at grazing incidence,
      * where it dominates, the root is as precise as pow() and not as the incomplete beta. For u > 1/2
      * the mass above x, A(mu) - A(x), is matched instead: near mu, where the density vanishes, its
      * logarithm still has a slope, and log A has none. */
-    float c = exp(hyper_cauchy_log_c(g));
-    float weight = mu * (2.0f * g - 3.0f) / c;
+    float log_norm = shape.log_norm;
+    float weight = mu * (2.0f * g - 3.0f) / exp(shape.log_c);
     float cdf_mu = hyper_cauchy_slope_cdf(mu, g, log_norm), power_mu = pow(2.0f + mu * mu, 1.5f - g);
     bool upper = u > 0.5f;
     float log_target = log((upper ? 1.0f - u : u) * (weight * cdf_mu + power_mu));
@@ -114,11 +127,10 @@ SS_FN float hyper_cauchy_sample_visible_slope_x(float mu, float g, float log_nor
     return hyper_cauchy_sinh(v);
 }
 
-/* Student-t with nu degrees of freedom, density K (1 + t^2/nu)^(-(nu+1)/2), P(T <= -|t|) =
+/* Student-t with nu = 2g - 1 degrees of freedom, density K (1 + t^2/nu)^(-(nu+1)/2), P(T <= -|t|) =
  * I_{nu/(nu+t^2)}(nu/2, 1/2) / 2: the lower tail is inverted for t <= 0 and mirrored for u > 1/2. */
-SS_FN float hyper_cauchy_sample_student_t(float nu, float u) {
-    float log_norm = incomplete_beta_log_norm(0.5f * nu, 0.5f);
-    float k = exp(lgamma(0.5f * (nu + 1.0f)) - lgamma(0.5f * nu)) / sqrt(nu * SS_PI);
+SS_FN float hyper_cauchy_sample_student_t(float nu, HyperCauchyShape shape, float u) {
+    float log_norm = shape.student_log_norm, k = shape.student_k;
     float target = fmin(u, 1.0f - u), log_target = log(target);
     /* The root t < 0 is bracketed by two bounds on the density: it is at most K, so the CDF is at
      * least 1/2 - K |t|; it is below its tail K (t^2/nu)^(-(nu+1)/2), so the CDF is below
@@ -150,7 +162,7 @@ SS_FN float hyper_cauchy_sample_student_t(float nu, float u) {
 
 /* Visible normals of w (flipped to the upper side) by stretching to unit width, sampling the visible
  * slopes there and stretching back. pdf(m) = G1(w) max(0, w.m) D(m) / |cos theta_w|, as for GGX. */
-SS_FN float3 hyper_cauchy_sample_visible_normal(float3 w, float sx, float sy, float g, float log_norm, float u1, float u2) {
+SS_FN float3 hyper_cauchy_sample_visible_normal(float3 w, float sx, float sy, float g, HyperCauchyShape shape, float u1, float u2) {
     if (w.z < 0.0f) w = -w; /* the normals visible from below are those of the mirrored direction */
     float3 ws = make_float3(sx * w.x, sy * w.y, w.z);
     float tangential = sqrt(ws.x * ws.x + ws.y * ws.y);
@@ -158,8 +170,8 @@ SS_FN float3 hyper_cauchy_sample_visible_normal(float3 w, float sx, float sy, fl
     float sin_phi = tangential > 0.0f ? ws.y / tangential : 0.0f;
     /* at normal incidence the visible slopes are the slopes themselves; mu = 1e15 is that to float precision */
     float mu = tangential > ws.z * 1e-15f ? ws.z / tangential : 1e15f;
-    float x = hyper_cauchy_sample_visible_slope_x(mu, g, log_norm, u1);
-    float y = sqrt((2.0f + x * x) / (2.0f * g - 1.0f)) * hyper_cauchy_sample_student_t(2.0f * g - 1.0f, u2);
+    float x = hyper_cauchy_sample_visible_slope_x(mu, g, shape, u1);
+    float y = sqrt((2.0f + x * x) / (2.0f * g - 1.0f)) * hyper_cauchy_sample_student_t(2.0f * g - 1.0f, shape, u2);
     /* turn back to wo's azimuth and stretch back; the normal of slope (x, y) is (-x, -y, 1) normalised */
     float slope_x = sx * (cos_phi * x - sin_phi * y), slope_y = sy * (sin_phi * x + cos_phi * y);
     return normalize(make_float3(-slope_x, -slope_y, 1.0f));

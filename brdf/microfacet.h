@@ -21,7 +21,9 @@ typedef struct Microfacet {
     float ax;   /* GGX alpha along the tangent; Hyper-Cauchy width is alpha / sqrt(2) */
     float ay;   /* ... along the bitangent */
     float shape;
-    float log_norm; /* Hyper-Cauchy only: hyper_cauchy_log_norm(shape), once per evaluation */
+#if BRDF_FEATURE_HYPER_CAUCHY
+    HyperCauchyShape hc; /* Hyper-Cauchy only: hyper_cauchy_shape(shape), once per evaluation */
+#endif
 } Microfacet;
 
 SS_FN Microfacet microfacet_make(int kind, float ax, float ay, float shape) {
@@ -30,9 +32,9 @@ SS_FN Microfacet microfacet_make(int kind, float ax, float ay, float shape) {
     mf.ax = ax;
     mf.ay = ay;
     mf.shape = shape;
-    mf.log_norm = 0.0f;
 #if BRDF_FEATURE_HYPER_CAUCHY
-    if (kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) mf.log_norm = hyper_cauchy_log_norm(shape);
+    mf.hc.log_norm = mf.hc.log_c = mf.hc.student_log_norm = mf.hc.student_k = 0.0f;
+    if (kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) mf.hc = hyper_cauchy_shape(shape);
 #endif
     return mf;
 }
@@ -65,7 +67,7 @@ SS_FN float microfacet_d(Microfacet mf, float3 m) {
 SS_FN float microfacet_lambda(Microfacet mf, float3 w) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
-        return hyper_cauchy_lambda(w, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, mf.log_norm);
+        return hyper_cauchy_lambda(w, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, mf.hc);
 #endif
 #if BRDF_FEATURE_GGX
     return ggx_lambda(w, mf.ax, mf.ay);
@@ -84,7 +86,7 @@ SS_FN float microfacet_g2(Microfacet mf, float3 wo, float3 wi) {
 SS_FN float3 microfacet_sample_normal(Microfacet mf, float3 wo, float u1, float u2) {
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY)
-        return hyper_cauchy_sample_visible_normal(wo, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, mf.log_norm, u1, u2);
+        return hyper_cauchy_sample_visible_normal(wo, mf.ax * BRDF_INV_SQRT2, mf.ay * BRDF_INV_SQRT2, mf.shape, mf.hc, u1, u2);
 #endif
 #if BRDF_FEATURE_GGX
     return ggx_sample_visible_normal(wo, mf.ax, mf.ay, u1, u2);
