@@ -17,16 +17,14 @@ using namespace lab::validation;
 
 namespace {
 
-brdf::Microfacet distribution(int kind, float ax, float ay, float shape) { return brdf::microfacet_make(kind, ax, ay, shape); }
-
 // GGX and Hyper-Cauchy at several widths (alpha_x, alpha_y), anisotropic ones included.
 std::vector<brdf::Microfacet> distributions() {
     const float widths[][2] = {{0.01f, 0.01f}, {0.2f, 0.2f}, {1.0f, 1.0f}, {0.6f, 0.15f}, {0.05f, 0.3f}};
     std::vector<brdf::Microfacet> all;
     for (const auto& w : widths) {
-        all.push_back(distribution(BRDF_DISTRIBUTION_GGX, w[0], w[1], 2.0f));
+        all.push_back(brdf::microfacet_make(BRDF_DISTRIBUTION_GGX, w[0], w[1], 2.0f));
         for (float shape : {1.6f, 2.0f, 3.0f, 8.0f, 16.0f})
-            all.push_back(distribution(BRDF_DISTRIBUTION_HYPER_CAUCHY, w[0], w[1], shape));
+            all.push_back(brdf::microfacet_make(BRDF_DISTRIBUTION_HYPER_CAUCHY, w[0], w[1], shape));
     }
     return all;
 }
@@ -106,8 +104,8 @@ TEST_CASE("Hyper-Cauchy of shape 2 is GGX: D, Lambda, G1, G2", "[microfacet]") {
     double worst_d = 0.0, worst_lambda = 0.0, worst_g = 0.0;
     for (int i = 0; i < 20000; ++i) {
         float ax = rng.uniform(0.01f, 1.0f), ay = i % 2 ? ax : rng.uniform(0.01f, 1.0f);
-        brdf::Microfacet ggx = distribution(BRDF_DISTRIBUTION_GGX, ax, ay, 2.0f);
-        brdf::Microfacet hc = distribution(BRDF_DISTRIBUTION_HYPER_CAUCHY, ax, ay, 2.0f);
+        brdf::Microfacet ggx = brdf::microfacet_make(BRDF_DISTRIBUTION_GGX, ax, ay, 2.0f);
+        brdf::Microfacet hc = brdf::microfacet_make(BRDF_DISTRIBUTION_HYPER_CAUCHY, ax, ay, 2.0f);
         brdf::float3 m = uniform_hemisphere_direction(rng), wo = uniform_hemisphere_direction(rng),
                      wi = uniform_sphere_direction(rng);
         double d_ggx = brdf::microfacet_d(ggx, m), d_hc = brdf::microfacet_d(hc, m);
