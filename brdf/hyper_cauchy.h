@@ -43,8 +43,7 @@ SS_FN HyperCauchyShape hyper_cauchy_shape(float g) {
  *   Lambda = (1/mu) int_mu^inf (q - mu) P2(q) dq
  *          = C (2 + mu^2)^(3/2 - g) / (2 mu (g - 3/2)) - I_{2/(2+mu^2)}(g - 1, 1/2) / 2.
  * The tail of P2 is a Student-t tail, hence the incomplete beta. Finite for g > 3/2 only: heavier
- * tails have infinite mean slope and mask everything but normal incidence. */
-/* shape = hyper_cauchy_shape(g) */
+ * tails have infinite mean slope and mask everything but normal incidence. shape = hyper_cauchy_shape(g). */
 SS_FN float hyper_cauchy_lambda(float3 w, float sx, float sy, float g, HyperCauchyShape shape) {
     float tangential = sqrt(sqr(sx * w.x) + sqr(sy * w.y));
     float cz = fabs(w.z);

@@ -1,6 +1,7 @@
 // The scene compiler: a Scene becomes OpenCL C source (the virtual files "scene/generated.h" and
 // "scene/materials.h") that defines the scene's distance field with only the sdf/ headers it uses,
-// plus what the renderer // needs beside it (material slots, emitters, camera, environment, the Lipschitz bound).
+// plus what the renderer needs beside it (material slots, emitters, camera, environment, the
+// Lipschitz bound).
 #pragma once
 
 #include <limits>
