@@ -68,9 +68,9 @@ inline float3 floor(float3 v) { return glm::floor(v); }
 inline float3 round(float3 v) { return glm::round(v); }
 inline float sign(float x) { return x > 0.0f ? 1.0f : (x < 0.0f ? -1.0f : 0.0f); }
 inline int min(int a, int b) { return a < b ? a : b; }
-inline int max(int a, int b) { return a > b || b != b ? a : b; }
+inline int max(int a, int b) { return a > b ? a : b; }
 inline uint min(uint a, uint b) { return a < b ? a : b; }
-inline uint max(uint a, uint b) { return a > b || b != b ? a : b; }
+inline uint max(uint a, uint b) { return a > b ? a : b; }
 // OpenCL defines mix(x, y, a) as x + (y - x) a; glm::mix computes x (1 - a) + y a, which rounds
 // differently, so the host would not match the kernels.
 // OpenCL's sinpi(x) = sin(pi x) and cospi(x): the product pi x is not rounded first
