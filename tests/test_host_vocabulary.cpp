@@ -4,19 +4,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <vector>
 
 #include "single_source/host_vocabulary.hpp"
+#include "tests/float_bits.hpp"
 
 namespace {
-
-unsigned bits(float x) {
-    unsigned b;
-    std::memcpy(&b, &x, sizeof b);
-    return b;
-}
 
 // Every pair of these: NaN, both zeros, infinities, a denormal, ordinary and equal values.
 std::vector<float> operands() {
@@ -31,14 +25,14 @@ TEST_CASE("fmax and fmin give libm's bits, NaN and signed zeros included", "[voc
     int pairs = 0;
     for (float a : v) {
         for (float b : v) {
-            INFO("a = " << a << " (bits " << bits(a) << "), b = " << b << " (bits " << bits(b) << ")");
+            INFO("a = " << a << " (bits " << float_bits(a) << "), b = " << b << " (bits " << float_bits(b) << ")");
             float max_libm = std::fmax(a, b), min_libm = std::fmin(a, b);
             float max_here = single_source::fmax(a, b), min_here = single_source::fmin(a, b);
             // a NaN result: any NaN (libm does not promise which one's payload)
             if (std::isnan(max_libm)) CHECK(std::isnan(max_here));
-            else CHECK(bits(max_here) == bits(max_libm));
+            else CHECK(float_bits(max_here) == float_bits(max_libm));
             if (std::isnan(min_libm)) CHECK(std::isnan(min_here));
-            else CHECK(bits(min_here) == bits(min_libm));
+            else CHECK(float_bits(min_here) == float_bits(min_libm));
             ++pairs;
         }
     }

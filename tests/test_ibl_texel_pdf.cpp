@@ -6,12 +6,12 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "ibl/environment.hpp"
 #include "ibl/ibl.hpp"
+#include "tests/float_bits.hpp"
 #include "validation/uniform_random.hpp"
 
 using brdf::float3;
@@ -19,12 +19,6 @@ using lab::ibl::Environment;
 using lab::ibl::EnvironmentOptions;
 
 namespace {
-
-uint32_t bits(float v) {
-    uint32_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
 
 // The density of `direction` from the cdfs: what environment_pdf computed before the texels held
 // their probabilities, from the same single-source pieces.
@@ -69,13 +63,13 @@ long mismatches(const Environment& env, std::string* first) {
         for (int i = 0; i < n; ++i) {
             const float stored = env.texels()[size_t(r) * n + i].w;
             const float p = ibl::distribution2d_probability(env.marginal_cdf().data(), env.conditional_cdf().data(), n, r, i);
-            if (bits(stored) != bits(p))
+            if (float_bits(stored) != float_bits(p))
                 fail("texel row " + std::to_string(r) + " column " + std::to_string(i) + ": w " + std::to_string(stored) +
                      " but probability " + std::to_string(p));
         }
     auto check = [&](float3 d, const char* kind) {
         const float got = env.pdf(d), expected = pdf_from_cdfs(env, d);
-        if (bits(got) != bits(expected))
+        if (float_bits(got) != float_bits(expected))
             fail(std::string(kind) + " direction (" + std::to_string(d.x) + ", " + std::to_string(d.y) + ", " +
                  std::to_string(d.z) + "): pdf " + std::to_string(got) + " but " + std::to_string(expected) + " from the cdfs");
     };
@@ -85,7 +79,7 @@ long mismatches(const Environment& env, std::string* first) {
     for (int k = 0; k < 20000; ++k) {
         float pdf = 0.0f;
         const float3 d = env.sample(rng.next_float(), rng.next_float(), &pdf);
-        if (bits(pdf) != bits(pdf_from_cdfs(env, d)))
+        if (float_bits(pdf) != float_bits(pdf_from_cdfs(env, d)))
             fail("sampled direction: *pdf " + std::to_string(pdf) + " but " + std::to_string(pdf_from_cdfs(env, d)) + " from the cdfs");
     }
     return bad;
