@@ -11,13 +11,27 @@
 namespace lab::ibl {
 
 namespace {
+
 constexpr double kPi = 3.14159265358979323846;
+
+// Whether a face's points have x and z that depend on a alone and y on b alone (+x, -x, +z, -z), as
+// ibl/cubemap.h's cubemap_face_point lays them out.
+bool around_y_axis(int face) {
+    const brdf::float3 p = ::ibl::cubemap_face_point(face, 0.5f, 0.25f);
+    const brdf::float3 other_b = ::ibl::cubemap_face_point(face, 0.5f, -0.75f), other_a = ::ibl::cubemap_face_point(face, -0.5f, 0.25f);
+    return p.x == other_b.x && p.z == other_b.z && p.y == other_a.y;
 }
+
+}  // namespace
+
+double latlong_azimuth(double x, double z) { return std::atan2(-x, z) / (2.0 * kPi) + 0.5; }
+
+double latlong_elevation(double y, double horizontal) { return 0.5 - std::atan2(y, horizontal) / kPi; }
 
 void latlong_coordinates(brdf::float3 d, double* u, double* v) {
     const double x = d.x, y = d.y, z = d.z;
-    *u = std::atan2(-x, z) / (2.0 * kPi) + 0.5;
-    *v = 0.5 - std::atan2(y, std::sqrt(x * x + z * z)) / kPi;
+    *u = latlong_azimuth(x, z);
+    *v = latlong_elevation(y, std::sqrt(x * x + z * z));
 }
 
 brdf::float3 latlong_direction(double u, double v) {
@@ -27,23 +41,35 @@ brdf::float3 latlong_direction(double u, double v) {
     return brdf::float3(float(-c * std::sin(phi)), float(std::sin(elevation)), float(c * std::cos(phi)));
 }
 
-brdf::float3 latlong_bilinear(const LatLongImage& image, double u, double v) {
-    const int w = image.width, h = image.height;
-    const double fx = u * w - 0.5, fy = std::clamp(v * h - 0.5, 0.0, double(h - 1));
-    const double x0f = std::floor(fx), y0f = std::floor(fy);
-    const double tx = fx - x0f, ty = fy - y0f;
-    int x0 = int(x0f) % w;
-    if (x0 < 0) x0 += w;
-    const int x1 = (x0 + 1) % w;
-    const int y0 = int(y0f), y1 = std::min(y0 + 1, h - 1);
+LatLongTaps latlong_column_taps(int width, double u) {
+    const double fx = u * width - 0.5;
+    const double x0f = std::floor(fx);
+    int x0 = int(x0f) % width;
+    if (x0 < 0) x0 += width;
+    return {x0, (x0 + 1) % width, fx - x0f};
+}
+
+LatLongTaps latlong_row_taps(int height, double v) {
+    const double fy = std::clamp(v * height - 0.5, 0.0, double(height - 1));
+    const double y0f = std::floor(fy);
+    const int y0 = int(y0f);
+    return {y0, std::min(y0 + 1, height - 1), fy - y0f};
+}
+
+brdf::float3 latlong_bilinear(const LatLongImage& image, const LatLongTaps& column, const LatLongTaps& row) {
+    const int w = image.width;
     auto pixel = [&](int x, int y, int c) { return double(image.rgb[(size_t(y) * w + x) * 3 + c]); };
     double rgb[3];
     for (int c = 0; c < 3; ++c) {
-        const double top = pixel(x0, y0, c) + (pixel(x1, y0, c) - pixel(x0, y0, c)) * tx;
-        const double bottom = pixel(x0, y1, c) + (pixel(x1, y1, c) - pixel(x0, y1, c)) * tx;
-        rgb[c] = top + (bottom - top) * ty;
+        const double top = pixel(column.first, row.first, c) + (pixel(column.second, row.first, c) - pixel(column.first, row.first, c)) * column.t;
+        const double bottom = pixel(column.first, row.second, c) + (pixel(column.second, row.second, c) - pixel(column.first, row.second, c)) * column.t;
+        rgb[c] = top + (bottom - top) * row.t;
     }
     return brdf::float3(float(rgb[0]), float(rgb[1]), float(rgb[2]));
+}
+
+brdf::float3 latlong_bilinear(const LatLongImage& image, double u, double v) {
+    return latlong_bilinear(image, latlong_column_taps(image.width, u), latlong_row_taps(image.height, v));
 }
 
 int cubemap_supersampling(int image_width, int face_size) {
@@ -58,38 +84,94 @@ std::vector<brdf::float4> equirect_to_cubemap(const LatLongImage& image, int fac
         image.rgb.size() != size_t(image.width) * size_t(image.height) * 3)
         throw std::invalid_argument("equirect_to_cubemap: empty image or face size");
     const int s = cubemap_supersampling(image.width, n);
-    const int rows = CUBEMAP_FACES * n;
-    std::vector<brdf::float4> texels(size_t(rows) * n);
+    const int samples = n * s;  // sample positions along a face's axis
+    std::vector<brdf::float4> texels(size_t(CUBEMAP_FACES) * n * n);
 
-    auto convert_row = [&](int r) {
-        const int face = r / n, j = r % n;
-        for (int i = 0; i < n; ++i) {
-            double sum[3] = {0.0, 0.0, 0.0}, weight_sum = 0.0;
-            for (int sj = 0; sj < s; ++sj) {
-                const float b = float(-1.0 + 2.0 * (j + (sj + 0.5) / s) / n);
-                for (int si = 0; si < s; ++si) {
-                    const float a = float(-1.0 + 2.0 * (i + (si + 0.5) / s) / n);
-                    // Points equally spaced in (a, b) stand for d(omega) = dA / (1 + a^2 + b^2)^(3/2).
-                    const double weight = 1.0 / double(::ibl::cubemap_area_per_solid_angle(a, b));
-                    double u, v;
-                    latlong_coordinates(::ibl::cubemap_face_point(face, a, b), &u, &v);
-                    const brdf::float3 l = latlong_bilinear(image, u, v);
-                    sum[0] += weight * l.x;
-                    sum[1] += weight * l.y;
-                    sum[2] += weight * l.z;
-                    weight_sum += weight;
+    // Texel i's stratum si lies at face coordinate axis[i s + si], on both axes of every face.
+    std::vector<float> axis(samples);
+    for (int i = 0; i < n; ++i)
+        for (int si = 0; si < s; ++si) axis[size_t(i) * s + si] = float(-1.0 + 2.0 * (i + (si + 0.5) / s) / n);
+
+    // On the four faces around the y axis a point's x and z depend on a alone and its y on b alone, so
+    // its azimuth, the image columns it reads and its distance from the axis are per a: computed once.
+    // Its image rows depend on y and that distance, which the four faces share (y = -b, x^2 + z^2 =
+    // 1 + a^2): computed on the first of them, and taken by another where its two values are equal.
+    struct SideSample {
+        LatLongTaps column;
+        double horizontal;  // hypot(x, z)
+    };
+    bool side_face[CUBEMAP_FACES];
+    int first_side = -1;
+    std::vector<SideSample> side(size_t(CUBEMAP_FACES) * samples);
+    for (int face = 0; face < CUBEMAP_FACES; ++face) {
+        side_face[face] = around_y_axis(face);
+        if (!side_face[face]) continue;
+        if (first_side < 0) first_side = face;
+        for (int k = 0; k < samples; ++k) {
+            const brdf::float3 p = ::ibl::cubemap_face_point(face, axis[k], 0.0f);
+            const double x = p.x, z = p.z;
+            side[size_t(face) * samples + k] = {latlong_column_taps(image.width, latlong_azimuth(x, z)), std::sqrt(x * x + z * z)};
+        }
+    }
+    struct RowScratch {
+        std::vector<double> weight;       // per stratum row sj and sample k
+        std::vector<LatLongTaps> rows;    // the first side face's image rows, per sj and k
+    };
+
+    // Row j of every face: the strata's solid-angle weights are the same on all six.
+    auto convert_rows = [&](int j, RowScratch& scratch) {
+        for (int sj = 0; sj < s; ++sj) {
+            const float b = axis[size_t(j) * s + sj];
+            // Points equally spaced in (a, b) stand for d(omega) = dA / (1 + a^2 + b^2)^(3/2).
+            for (int k = 0; k < samples; ++k)
+                scratch.weight[size_t(sj) * samples + k] = 1.0 / double(::ibl::cubemap_area_per_solid_angle(axis[k], b));
+            if (first_side < 0) continue;
+            const double y = ::ibl::cubemap_face_point(first_side, 0.0f, b).y;
+            for (int k = 0; k < samples; ++k)
+                scratch.rows[size_t(sj) * samples + k] =
+                    latlong_row_taps(image.height, latlong_elevation(y, side[size_t(first_side) * samples + k].horizontal));
+        }
+        for (int face = 0; face < CUBEMAP_FACES; ++face) {
+            const SideSample* face_side = &side[size_t(face) * samples];
+            const SideSample* first = &side[size_t(std::max(first_side, 0)) * samples];
+            for (int i = 0; i < n; ++i) {
+                double sum[3] = {0.0, 0.0, 0.0}, weight_sum = 0.0;
+                for (int sj = 0; sj < s; ++sj) {
+                    const float b = axis[size_t(j) * s + sj];
+                    const double y = ::ibl::cubemap_face_point(face, 0.0f, b).y;  // on a side face
+                    const bool same_y = first_side >= 0 && y == ::ibl::cubemap_face_point(first_side, 0.0f, b).y;
+                    for (int si = 0; si < s; ++si) {
+                        const int k = i * s + si;
+                        const double w = scratch.weight[size_t(sj) * samples + k];
+                        brdf::float3 l;
+                        if (side_face[face]) {
+                            const LatLongTaps row = same_y && face_side[k].horizontal == first[k].horizontal
+                                                        ? scratch.rows[size_t(sj) * samples + k]
+                                                        : latlong_row_taps(image.height, latlong_elevation(y, face_side[k].horizontal));
+                            l = latlong_bilinear(image, face_side[k].column, row);
+                        } else {
+                            double u, v;
+                            latlong_coordinates(::ibl::cubemap_face_point(face, axis[k], b), &u, &v);
+                            l = latlong_bilinear(image, u, v);
+                        }
+                        sum[0] += w * l.x;
+                        sum[1] += w * l.y;
+                        sum[2] += w * l.z;
+                        weight_sum += w;
+                    }
                 }
+                texels[(size_t(face) * n + j) * n + i] =
+                    brdf::float4(float(sum[0] / weight_sum), float(sum[1] / weight_sum), float(sum[2] / weight_sum), 1.0f);
             }
-            texels[size_t(r) * n + i] =
-                brdf::float4(float(sum[0] / weight_sum), float(sum[1] / weight_sum), float(sum[2] / weight_sum), 1.0f);
         }
     };
 
     if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
-    threads = std::min(threads, rows);
+    threads = std::min(threads, n);
     std::atomic<int> next{0};
     auto worker = [&]() {
-        for (int r = next++; r < rows; r = next++) convert_row(r);
+        RowScratch scratch{std::vector<double>(size_t(s) * samples), std::vector<LatLongTaps>(size_t(s) * samples)};
+        for (int j = next++; j < n; j = next++) convert_rows(j, scratch);
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < threads; ++t) pool.emplace_back(worker);

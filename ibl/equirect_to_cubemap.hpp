@@ -20,10 +20,22 @@ struct LatLongImage {
 //   v = 0.5 - atan2(d.y, hypot(d.x, d.z)) / pi   (v = 0: +y, the top row)
 // Pixel (x, y) of a W x H image covers u in [x/W, (x+1)/W], v in [y/H, (y+1)/H].
 void latlong_coordinates(brdf::float3 d, double* u, double* v);
+// Its two halves: u from the direction's x and z, v from its y and hypot(x, z).
+double latlong_azimuth(double x, double z);
+double latlong_elevation(double y, double horizontal);
 brdf::float3 latlong_direction(double u, double v);  // the inverse, a unit vector
 
 // Bilinear interpolation between pixel centres, wrapping around in u and clamped in v.
 brdf::float3 latlong_bilinear(const LatLongImage& image, double u, double v);
+// The same in two halves: the two pixel columns (rows) around u (v) and the second one's weight, so
+// that lookups that share a u share its columns.
+struct LatLongTaps {
+    int first, second;
+    double t;
+};
+LatLongTaps latlong_column_taps(int width, double u);
+LatLongTaps latlong_row_taps(int height, double v);
+brdf::float3 latlong_bilinear(const LatLongImage& image, const LatLongTaps& column, const LatLongTaps& row);
 
 // Supersamples per texel and axis: at least 4, and about two per image pixel a texel spans, so a
 // small face still averages every pixel it covers (at most 64).
