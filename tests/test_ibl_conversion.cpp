@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,27 @@ double worst_relative_error(const std::vector<double>& a, const std::vector<doub
     return worst;
 }
 
+// Smooth variation, a narrow bright spot and a sharp-edged band: 512 x 256.
+LatLongImage synthetic_image() {
+    LatLongImage image;
+    image.width = 512;
+    image.height = 256;
+    image.rgb.resize(size_t(image.width) * image.height * 3);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const double u = (x + 0.5) / image.width, v = (y + 0.5) / image.height;
+            const double smooth = 1.0 + 0.5 * std::sin(6.0 * kPi * u) * std::sin(kPi * v);
+            const double du = std::fmin(std::fabs(u - 0.3), 1.0 - std::fabs(u - 0.3)), dv = v - 0.35;
+            const double spot = 5000.0 * std::exp(-(du * du + dv * dv) / (2.0 * 0.004 * 0.004));
+            const double band = (v > 0.6 && v < 0.62) ? 20.0 : 0.0;
+            float* p = &image.rgb[(size_t(y) * image.width + x) * 3];
+            p[0] = float(smooth + spot);
+            p[1] = float(smooth + band);
+            p[2] = float(0.1 * smooth);
+        }
+    return image;
+}
+
 EnvironmentOptions face_size(int n) {
     EnvironmentOptions o;
     o.face_size = n;
@@ -81,23 +103,7 @@ TEST_CASE("ibl: texel solid angles sum to 4 pi", "[ibl]") {
 }
 
 TEST_CASE("ibl: conversion keeps the sphere integral of a synthetic image", "[ibl]") {
-    // Smooth variation, a narrow bright spot and a sharp-edged band: 512 x 256.
-    LatLongImage image;
-    image.width = 512;
-    image.height = 256;
-    image.rgb.resize(size_t(image.width) * image.height * 3);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            const double u = (x + 0.5) / image.width, v = (y + 0.5) / image.height;
-            const double smooth = 1.0 + 0.5 * std::sin(6.0 * kPi * u) * std::sin(kPi * v);
-            const double du = std::fmin(std::fabs(u - 0.3), 1.0 - std::fabs(u - 0.3)), dv = v - 0.35;
-            const double spot = 5000.0 * std::exp(-(du * du + dv * dv) / (2.0 * 0.004 * 0.004));
-            const double band = (v > 0.6 && v < 0.62) ? 20.0 : 0.0;
-            float* p = &image.rgb[(size_t(y) * image.width + x) * 3];
-            p[0] = float(smooth + spot);
-            p[1] = float(smooth + band);
-            p[2] = float(0.1 * smooth);
-        }
+    const LatLongImage image = synthetic_image();
     const std::vector<double> reference = latlong_integral(image);
     for (int n : {16, 64, 128}) {
         const Environment env = Environment::from_image(image, "synthetic", face_size(n));
@@ -150,4 +156,44 @@ TEST_CASE("ibl: a constant environment is exactly constant", "[ibl]") {
     }
     const Environment converted = Environment::from_image(image, "constant image", face_size(24));
     for (const brdf::float4& t : converted.texels()) REQUIRE(brdf::float3(t.x, t.y, t.z) == brdf::float3(0.7f, 0.3f, 1e-3f));
+}
+
+TEST_CASE("ibl: the conversion shares work between points and threads without changing a bit", "[ibl]") {
+    // equirect_to_cubemap computes once what its points share (docs/environments.md). Each texel is
+    // checked against the same average computed whole at every point, through the public lookups,
+    // on every face (the four around y share rows, the two on it do not), and the result against
+    // other thread counts. Face size 37: rows split unevenly between threads.
+    const LatLongImage image = synthetic_image();
+    const int n = 37, s = lab::ibl::cubemap_supersampling(image.width, n);
+    const std::vector<brdf::float4> texels = lab::ibl::equirect_to_cubemap(image, n, 1);
+    int differ = 0, checked = 0;
+    for (int face = 0; face < 6; ++face)
+        for (int j = 0; j < n; j += 3)
+            for (int i = 0; i < n; i += 2) {
+                double sum[3] = {0.0, 0.0, 0.0}, weight_sum = 0.0;
+                for (int sj = 0; sj < s; ++sj)
+                    for (int si = 0; si < s; ++si) {
+                        const float a = float(-1.0 + 2.0 * (i + (si + 0.5) / s) / n), b = float(-1.0 + 2.0 * (j + (sj + 0.5) / s) / n);
+                        const double weight = 1.0 / double(::ibl::cubemap_area_per_solid_angle(a, b));
+                        double u, v;
+                        lab::ibl::latlong_coordinates(::ibl::cubemap_face_point(face, a, b), &u, &v);
+                        const float3 l = lab::ibl::latlong_bilinear(image, u, v);
+                        sum[0] += weight * l.x;
+                        sum[1] += weight * l.y;
+                        sum[2] += weight * l.z;
+                        weight_sum += weight;
+                    }
+                const brdf::float4 t = texels[(size_t(face) * n + j) * n + i];
+                const bool same = t.x == float(sum[0] / weight_sum) && t.y == float(sum[1] / weight_sum) && t.z == float(sum[2] / weight_sum);
+                INFO("face " << face << " texel (" << i << ", " << j << ")");
+                CHECK(same);
+                differ += same ? 0 : 1;
+                ++checked;
+            }
+    std::printf("[ibl] conversion against the whole computation at every point: %d of %d texels differ\n", differ, checked);
+    for (int threads : {2, 3, 8}) {
+        const std::vector<brdf::float4> other = lab::ibl::equirect_to_cubemap(image, n, threads);
+        INFO(threads << " threads");
+        CHECK(std::memcmp(other.data(), texels.data(), texels.size() * sizeof(texels[0])) == 0);
+    }
 }
