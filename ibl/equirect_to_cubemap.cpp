@@ -95,12 +95,13 @@ std::vector<brdf::float4> equirect_to_cubemap(const LatLongImage& image, int fac
     // On the four faces around the y axis a point's x and z depend on a alone and its y on b alone, so
     // its azimuth, the image columns it reads and its distance from the axis are per a: computed once.
     // Its image rows depend on y and that distance, which the four faces share (y = -b, x^2 + z^2 =
-    // 1 + a^2): computed on the first of them, and taken by another where its two values are equal.
+    // 1 + a^2): computed on the first of them, and taken by another whose two values equal them at
+    // every point (shares_rows).
     struct SideSample {
         LatLongTaps column;
         double horizontal;  // hypot(x, z)
     };
-    bool side_face[CUBEMAP_FACES];
+    bool side_face[CUBEMAP_FACES], shares_rows[CUBEMAP_FACES] = {};
     int first_side = -1;
     std::vector<SideSample> side(size_t(CUBEMAP_FACES) * samples);
     for (int face = 0; face < CUBEMAP_FACES; ++face) {
@@ -112,6 +113,11 @@ std::vector<brdf::float4> equirect_to_cubemap(const LatLongImage& image, int fac
             const double x = p.x, z = p.z;
             side[size_t(face) * samples + k] = {latlong_column_taps(image.width, latlong_azimuth(x, z)), std::sqrt(x * x + z * z)};
         }
+        shares_rows[face] = true;
+        for (int k = 0; k < samples; ++k)
+            shares_rows[face] = shares_rows[face] &&
+                                side[size_t(face) * samples + k].horizontal == side[size_t(first_side) * samples + k].horizontal &&
+                                ::ibl::cubemap_face_point(face, 0.0f, axis[k]).y == ::ibl::cubemap_face_point(first_side, 0.0f, axis[k]).y;
     }
     struct RowScratch {
         std::vector<double> weight;       // per stratum row sj and sample k
@@ -133,21 +139,19 @@ std::vector<brdf::float4> equirect_to_cubemap(const LatLongImage& image, int fac
         }
         for (int face = 0; face < CUBEMAP_FACES; ++face) {
             const SideSample* face_side = &side[size_t(face) * samples];
-            const SideSample* first = &side[size_t(std::max(first_side, 0)) * samples];
             for (int i = 0; i < n; ++i) {
                 double sum[3] = {0.0, 0.0, 0.0}, weight_sum = 0.0;
                 for (int sj = 0; sj < s; ++sj) {
                     const float b = axis[size_t(j) * s + sj];
-                    const double y = ::ibl::cubemap_face_point(face, 0.0f, b).y;  // on a side face
-                    const bool same_y = first_side >= 0 && y == ::ibl::cubemap_face_point(first_side, 0.0f, b).y;
                     for (int si = 0; si < s; ++si) {
                         const int k = i * s + si;
                         const double w = scratch.weight[size_t(sj) * samples + k];
                         brdf::float3 l;
                         if (side_face[face]) {
-                            const LatLongTaps row = same_y && face_side[k].horizontal == first[k].horizontal
-                                                        ? scratch.rows[size_t(sj) * samples + k]
-                                                        : latlong_row_taps(image.height, latlong_elevation(y, face_side[k].horizontal));
+                            const LatLongTaps row =
+                                shares_rows[face] ? scratch.rows[size_t(sj) * samples + k]
+                                                  : latlong_row_taps(image.height, latlong_elevation(::ibl::cubemap_face_point(face, 0.0f, b).y,
+                                                                                                     face_side[k].horizontal));
                             l = latlong_bilinear(image, face_side[k].column, row);
                         } else {
                             double u, v;
