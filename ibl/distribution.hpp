@@ -1,26 +1,29 @@
-// Host side of environment importance sampling: the cdfs that ibl/distribution2d.h samples, and their
-// guide tables, built over the texels of a cube map with weights luminance x solid angle.
+// Host side of importance sampling: the cdfs that ibl/distribution1d.h samples (the lights'
+// selection), and the environment's distribution over the texels of a cube map with weights
+// luminance x solid angle, as the alias tables that ibl/environment.h samples.
 #pragma once
 
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "ibl/alias_table.hpp"
 
 namespace lab::ibl {
 
 // Every weight is raised to at least this fraction of the weights' sum before normalising, so that
-// every cell keeps a probability that a float cdf resolves (a step of about 2^-22 against the
-// 2^-24 spacing of floats below 1) and no texel with radiance is ever unreachable. At most
-// n 2^-22 of the mass moves to floored cells (7e-4 for the 3072 rows of 512-texel faces).
-constexpr double kCdfFloor = 0x1.0p-22;
+// every cell keeps a probability that the float sampler resolves (a cdf step of about 2^-22 against
+// the 2^-24 spacing of floats below 1; in an alias table of n cells, a threshold of n 2^-22 against
+// the n 2^-24 that separates two of the generator's numbers in one entry) and no texel with
+// radiance is ever unreachable. At most n 2^-22 of the mass moves to floored cells (7e-4 for the
+// 3072 rows of 512-texel faces).
+constexpr double kSamplingFloor = 0x1.0p-22;
+
+// The weights raised to the floor above (their sum must be positive and finite).
+std::vector<double> floored_weights(const std::vector<double>& weights);
 
 // The n + 1 entries of the cdf of n non-negative weights with a positive sum: 0, ..., exactly 1,
 // strictly increasing thanks to the floor above. Accumulated in double, stored as float.
 std::vector<float> piecewise_constant_cdf(const std::vector<double>& weights);
-
-// The guide table of a cdf of n + 1 entries (ibl/distribution2d.h): guide_size entries (a power of
-// two), entry m the largest k < n with cdf[k] <= m / guide_size. Appended to `guide`.
-void append_cdf_guide(const float* cdf, int n, int guide_size, std::vector<unsigned short>* guide);
 
 // Exact solid angle of the rectangle [a0, a1] x [b0, b1] on a cube face at distance 1:
 // the integral of (1 + a^2 + b^2)^(-3/2) da db, whose antiderivative in a and b is
@@ -33,20 +36,21 @@ double texel_solid_angle(int face_size, int i, int j);
 // Luminance Y of linear Rec. 709 / sRGB primaries (ITU-R BT.709 weights).
 double luminance(double r, double g, double b);
 
-struct CubemapDistribution {
-    std::vector<float> marginal_cdf;     // 6N + 1 entries: over the rows r = face * N + j
-    std::vector<float> conditional_cdf;  // 6N (N + 1) entries: row r's cdf over its texels
-    std::vector<unsigned short> guide;   // the marginal's guide table, then each row's (distribution2d.h)
-};
+// The environment's alias tables over the texels of a cube map, 6N + 6N^2 entries: the table over
+// the rows r = face * N + j, then row r's over its texels at 6N + r N (ibl/environment.h). Texel
+// weight = luminance x exact solid angle, floored within its row; a row's weight is the sum of its
+// texels', floored among the rows. A row without light falls back to its texels' solid angles
+// (uniform within the row) and gets the floor's share of the rows' table; an environment without
+// light falls back to solid angles everywhere: uniform over the sphere.
+std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<brdf::float4>& texels, int face_size);
 
-// Texel weight = luminance x exact solid angle. A row without light falls back to its texels'
-// solid angles (uniform within the row) and gets the floor's share of the marginal; an environment
-// without light falls back to solid angles everywhere: uniform over the sphere.
-CubemapDistribution build_cubemap_distribution(const std::vector<brdf::float4>& texels, int face_size);
+// The probability with which the sampler draws each of the 6N^2 texels through those tables: its
+// row's times the texel's in the row, each exact for the generator's numbers
+// (alias_table_probabilities), their product rounded once to float.
+std::vector<float> cubemap_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size);
 
-// Writes into every texel's w its probability under `d`: distribution2d_probability() of the
-// cdfs, the very float the sampler realises, which environment_pdf() reads back (ibl/environment.h).
-// Must run again whenever the texels or their distribution change.
-void store_texel_probabilities(const CubemapDistribution& d, int face_size, std::vector<brdf::float4>* texels);
+// Writes into every texel's w its probability through `alias`, which environment_pdf() reads back
+// (ibl/environment.h). Must run again whenever the texels or their tables change.
+void store_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size, std::vector<brdf::float4>* texels);
 
 }  // namespace lab::ibl

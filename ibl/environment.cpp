@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -16,8 +17,8 @@
 
 namespace lab::ibl {
 
-// The guide tables index cells in ushorts (ibl/distribution2d.h).
-static_assert(CUBEMAP_FACES * kMaxFaceSize <= 65536, "a row index must fit the guide's ushort");
+// The alias tables name cells by int (ibl/alias_table.h).
+static_assert(int64_t(CUBEMAP_FACES) * kMaxFaceSize * (kMaxFaceSize + 1) <= INT32_MAX, "an alias table's cell must fit an int");
 
 namespace {
 
@@ -104,15 +105,10 @@ Environment::Environment(std::vector<brdf::float4> texels, int face_size, std::s
                          const EnvironmentOptions& options)
     : texels_(std::move(texels)), source_(std::move(source)) {
     map_.face_size = face_size;
-    map_.row_guide_size = ::ibl::distribution_guide_size(CUBEMAP_FACES * face_size);
-    map_.column_guide_size = ::ibl::distribution_guide_size(face_size);
     for (const brdf::float4& t : texels_) brightest_ = std::max({brightest_, t.x, t.y, t.z});
     set_transform(options.rotation_degrees, options.exposure_stops);
-    CubemapDistribution d = build_cubemap_distribution(texels_, face_size);
-    store_texel_probabilities(d, face_size, &texels_);  // environment_pdf() reads them
-    marginal_cdf_ = std::move(d.marginal_cdf);
-    conditional_cdf_ = std::move(d.conditional_cdf);
-    guide_ = std::move(d.guide);
+    alias_ = build_cubemap_alias_tables(texels_, face_size);
+    store_texel_probabilities(alias_, face_size, &texels_);  // environment_pdf() reads them
 }
 
 Environment Environment::from_image(const LatLongImage& image, std::string source, const EnvironmentOptions& options) {
@@ -157,8 +153,7 @@ brdf::float3 Environment::radiance_filtered(brdf::float3 direction) const {
 }
 
 brdf::float3 Environment::sample(float u1, float u2, float* pdf) const {
-    return ::ibl::environment_sample(&map_, texels_.data(), marginal_cdf_.data(), conditional_cdf_.data(), guide_.data(), u1, u2,
-                                     pdf);
+    return ::ibl::environment_sample(&map_, texels_.data(), alias_.data(), u1, u2, pdf);
 }
 
 float Environment::pdf(brdf::float3 direction) const {

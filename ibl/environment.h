@@ -1,22 +1,20 @@
 /* Image-based lighting from an environment stored as a cube map (ibl/cubemap.h), with importance
- * sampling of its texels (ibl/distribution2d.h). The same code runs in kernels and on the host.
+ * sampling of its texels (ibl/alias_table.h). The same code runs in kernels and on the host.
  *
  * Buffers (built by lab::ibl::Environment, ibl/environment.hpp), for face size N:
- *   texels       6 N^2 float4, index (face * N + j) * N + i: xyz the linear RGB radiance, the
- *                average over the texel's solid angle, read with the nearest-texel rule, so the
- *                radiance is constant on every texel; w the texel's probability under the sampler,
- *                distribution2d_probability() of the cdfs below, stored by the host when it builds
- *                them (lab::ibl::Environment), so that environment_pdf() reads the one cache line
- *                environment_radiance() reads for the same direction instead of three or four more
- *                in the cdfs (which, at N = 256, do not fit a CPU's L2 cache beside the texels);
- *   marginal     6N + 1 floats: cdf over the 6N rows of the faces stacked top to bottom
- *                (row r = face * N + j);
- *   conditional  6N (N + 1) floats: per row, the cdf over its N texels;
- *   guide        G_rows + 6N G_columns ushorts: the guide tables of the marginal and of each row's
- *                conditional (ibl/distribution2d.h), G = distribution_guide_size() of 6N and of N,
- *                so that a sample searches one or two cdf entries instead of all of them.
- * A texel's probability is proportional to its luminance times its solid angle (plus a floor so
- * that every texel can be drawn; ibl/distribution.hpp).
+ *   texels  6 N^2 float4, index (face * N + j) * N + i: xyz the linear RGB radiance, the average
+ *           over the texel's solid angle, read with the nearest-texel rule, so the radiance is
+ *           constant on every texel; w the probability with which the sampler draws the texel,
+ *           computed by the host from the alias tables below, rounding included
+ *           (ibl/distribution.hpp), so that environment_pdf() reads the one cache line
+ *           environment_radiance() reads for the same direction;
+ *   alias   6N + 6N^2 AliasEntry: the alias table over the 6N rows of the faces stacked top to
+ *           bottom (row r = face * N + j), then row r's table over its N texels at 6N + r N.
+ * A sample reads one entry of the rows' table (72 KB at N = 512: it stays cached), one entry of a
+ * row's, and the texel: two lines of memory, each at an address known before the load, which the
+ * path tracer asks the cache for ahead (kernels/path_tracer_wavefront.h). A texel's probability is
+ * proportional to its luminance times its solid angle, plus a floor so that every texel can be
+ * drawn (ibl/distribution.hpp).
  *
  * Rotation: the environment is turned by the angle theta about +y (right-handed), so what the
  * image shows in direction e is seen in world direction R e, with
@@ -27,7 +25,7 @@
 
 #include "single_source/vocabulary.h"
 #include "ibl/cubemap.h"
-#include "ibl/distribution2d.h"
+#include "ibl/alias_table.h"
 
 /* Plain 4-byte scalars only: the same layout in OpenCL C and C++, passed to kernels by value. */
 typedef struct EnvironmentMap {
@@ -35,8 +33,6 @@ typedef struct EnvironmentMap {
     float rotation_cos; /* cos and sin of the rotation about +y */
     float rotation_sin;
     float intensity;    /* multiplies the texels' radiance: 2^exposure */
-    int row_guide_size;    /* distribution_guide_size(6N): the marginal's guide table */
-    int column_guide_size; /* distribution_guide_size(N): each row's */
 } EnvironmentMap;
 
 /* World direction -> direction in the image's frame: R^-1 w. */
@@ -113,30 +109,35 @@ SS_FN float3 environment_radiance_pdf(const EnvironmentMap* env, GLOBAL_MEM cons
     return environment_texel_radiance(env, t);
 }
 
-/* The cell (row = face * N + j, column) that environment_sample(u1, u2) draws, and the offsets of
- * u1 and u2 inside its cdf intervals (ibl/distribution2d.h). */
-SS_FN void environment_sample_cell(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf, GLOBAL_MEM const float* conditional_cdf,
-                                   GLOBAL_MEM const ushort* guide, float u1, float u2, int* row, int* column, float* row_offset,
-                                   float* column_offset) {
+/* The rows' alias table and row `row`'s (the top of this file). */
+SS_FN GLOBAL_MEM const AliasEntry* environment_row_table(GLOBAL_MEM const AliasEntry* alias) { return alias; }
+SS_FN GLOBAL_MEM const AliasEntry* environment_column_table(const EnvironmentMap* env, GLOBAL_MEM const AliasEntry* alias, int row) {
     int n = env->face_size;
-    distribution2d_sample(marginal_cdf, conditional_cdf, guide, CUBEMAP_FACES * n, n, env->row_guide_size, env->column_guide_size, u1, u2,
-                          row, column, row_offset, column_offset);
+    return alias + CUBEMAP_FACES * n + row * n;
+}
+
+/* The cell (row = face * N + j, column) that environment_sample(u1, u2) draws, and the offsets of
+ * u1 and u2 inside the parts of [0, 1) that drew it (ibl/alias_table.h). */
+SS_FN void environment_sample_cell(const EnvironmentMap* env, GLOBAL_MEM const AliasEntry* alias, float u1, float u2, int* row,
+                                   int* column, float* row_offset, float* column_offset) {
+    int n = env->face_size;
+    *row = alias_table_sample(environment_row_table(alias), CUBEMAP_FACES * n, u1, row_offset);
+    *column = alias_table_sample(environment_column_table(env, alias, *row), n, u2, column_offset);
 }
 
 /* A world direction drawn with density proportional to the texels' weights: a texel from
- * (u1, u2) (the cdfs inverted through their guide tables), then a uniform point in its square from the offsets of u1 and u2 inside the texel's
- * cdf intervals. *pdf: its solid-angle density, environment_pdf() of the returned direction. That
- * is the drawn texel's density except on a texel edge, where rounding in the normalisation and
- * rotation may move the direction into the neighbour: then *pdf is the neighbour's, the texel
- * environment_radiance() reads, so radiance / pdf never mixes two texels. *radiance:
- * environment_radiance() of the direction, from the same lookup. */
-SS_FN float3 environment_sample_radiance(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, GLOBAL_MEM const float* marginal_cdf,
-                                         GLOBAL_MEM const float* conditional_cdf, GLOBAL_MEM const ushort* guide, float u1, float u2,
-                                         float* pdf, float3* radiance) {
+ * (u1, u2) through the alias tables, then a uniform point in its square from the offsets of u1 and
+ * u2. *pdf: its solid-angle density, environment_pdf() of the returned direction. That is the drawn
+ * texel's density except on a texel edge, where rounding in the normalisation and rotation may move
+ * the direction into the neighbour: then *pdf is the neighbour's, the texel environment_radiance()
+ * reads, so radiance / pdf never mixes two texels. *radiance: environment_radiance() of the
+ * direction, from the same lookup. */
+SS_FN float3 environment_sample_radiance(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, GLOBAL_MEM const AliasEntry* alias,
+                                         float u1, float u2, float* pdf, float3* radiance) {
     int n = env->face_size;
     int row, column;
     float row_offset, column_offset;
-    environment_sample_cell(env, marginal_cdf, conditional_cdf, guide, u1, u2, &row, &column, &row_offset, &column_offset);
+    environment_sample_cell(env, alias, u1, u2, &row, &column, &row_offset, &column_offset);
     int face = row / n;
     int j = row - face * n;
     float a = -1.0f + 2.0f * ((float)column + column_offset) / (float)n;
@@ -147,21 +148,28 @@ SS_FN float3 environment_sample_radiance(const EnvironmentMap* env, GLOBAL_MEM c
 }
 
 /* The same without the radiance. */
-SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, GLOBAL_MEM const float* marginal_cdf,
-                                GLOBAL_MEM const float* conditional_cdf, GLOBAL_MEM const ushort* guide, float u1, float u2, float* pdf) {
+SS_FN float3 environment_sample(const EnvironmentMap* env, GLOBAL_MEM const float4* texels, GLOBAL_MEM const AliasEntry* alias, float u1,
+                                float u2, float* pdf) {
     float3 radiance;
-    return environment_sample_radiance(env, texels, marginal_cdf, conditional_cdf, guide, u1, u2, pdf, &radiance);
+    return environment_sample_radiance(env, texels, alias, u1, u2, pdf, &radiance);
 }
 
-/* The texel environment_sample(u1, u2) draws, found as it finds it (the guide tables and cdfs), for
- * a caller that asks the cache for that texel before it draws the sample (the path tracer's CPU
- * wavefront, kernels/path_tracer_wavefront.h). On a texel's edge the sample's direction may fall in
- * the neighbour, whose texel environment_pdf() then reads. */
-SS_FN int environment_sample_texel(const EnvironmentMap* env, GLOBAL_MEM const float* marginal_cdf, GLOBAL_MEM const float* conditional_cdf,
-                                   GLOBAL_MEM const ushort* guide, float u1, float u2) {
+/* What environment_sample(u1, u2) reads, found as it finds it, for a caller that asks the cache for
+ * it ahead (the path tracer's CPU wavefront, kernels/path_tracer_wavefront.h):
+ *  - the entry of the drawn row's table (its index in `alias`), which needs only the rows' table;
+ *  - the drawn texel, which needs that entry too. On a texel's edge the sample's direction may fall
+ *    in the neighbour, whose texel environment_pdf() then reads. */
+SS_FN int environment_sample_column_entry(const EnvironmentMap* env, GLOBAL_MEM const AliasEntry* alias, float u1, float u2) {
+    int n = env->face_size;
+    float row_offset, f;
+    int row = alias_table_sample(environment_row_table(alias), CUBEMAP_FACES * n, u1, &row_offset);
+    return CUBEMAP_FACES * n + row * n + alias_table_entry(n, u2, &f);
+}
+
+SS_FN int environment_sample_texel(const EnvironmentMap* env, GLOBAL_MEM const AliasEntry* alias, float u1, float u2) {
     int row, column;
     float row_offset, column_offset;
-    environment_sample_cell(env, marginal_cdf, conditional_cdf, guide, u1, u2, &row, &column, &row_offset, &column_offset);
+    environment_sample_cell(env, alias, u1, u2, &row, &column, &row_offset, &column_offset);
     return row * env->face_size + column; /* row = face * N + j: texel (face * N + j) * N + column */
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ibl/alias_table.hpp"
 #include "ibl/equirect_to_cubemap.hpp"
 #include "ibl/ibl.hpp"
 
@@ -31,13 +32,12 @@ public:
     // The same radiance from every direction (non-negative, finite).
     static Environment constant(brdf::float3 radiance, std::string source, const EnvironmentOptions& options);
 
-    // What a kernel gets: the struct by value and four __global buffers.
+    // What a kernel gets: the struct by value and two __global buffers.
     const ::ibl::EnvironmentMap& map() const { return map_; }
     // 6 N^2: xyz the radiance before intensity, w the texel's probability (ibl/environment.h)
     const std::vector<brdf::float4>& texels() const { return texels_; }
-    const std::vector<float>& marginal_cdf() const { return marginal_cdf_; }
-    const std::vector<float>& conditional_cdf() const { return conditional_cdf_; }
-    const std::vector<unsigned short>& guide() const { return guide_; }  // the cdfs' guide tables
+    // 6N + 6N^2: the rows' alias table, then each row's (ibl/environment.h)
+    const std::vector<AliasEntry>& alias() const { return alias_; }
     int face_size() const { return map_.face_size; }
     // The file name, or the constant spec, this environment came from.
     const std::string& source() const { return source_; }
@@ -63,8 +63,7 @@ private:
 
     ::ibl::EnvironmentMap map_{};
     std::vector<brdf::float4> texels_;
-    std::vector<float> marginal_cdf_, conditional_cdf_;
-    std::vector<unsigned short> guide_;
+    std::vector<AliasEntry> alias_;
     std::string source_;
     float rotation_degrees_ = 0.0f, exposure_stops_ = 0.0f;
     float brightest_ = 0.0f;  // the largest texel channel: an exposure must keep it finite

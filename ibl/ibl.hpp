@@ -10,5 +10,6 @@ using namespace ::single_source;
 #include "ibl/environment.h"
 }  // namespace ibl
 
-static_assert(sizeof(ibl::EnvironmentMap) == 24, "EnvironmentMap must match its OpenCL layout");
+static_assert(sizeof(ibl::EnvironmentMap) == 16, "EnvironmentMap must match its OpenCL layout");
+static_assert(sizeof(ibl::AliasEntry) == 8, "AliasEntry must match its OpenCL layout");
 static_assert(sizeof(single_source::float4) == 16, "a texel is four packed floats, like an OpenCL float4");

@@ -140,7 +140,7 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* k, MarchSettings s, con
         le = float3_from_array(light.emission);
     } else {
         EnvironmentBuffers eb = scene->env_buffers;
-        float3 wi = environment_sample(&scene->env, eb.texels, eb.marginal_cdf, eb.conditional_cdf, eb.guide, u_dir.x, u_dir.y, &pdf_dir);
+        float3 wi = environment_sample(&scene->env, eb.texels, eb.alias, u_dir.x, u_dir.y, &pdf_dir);
         if (!(pdf_dir > 0.0f)) return 0;
         v.type = VERTEX_ENVIRONMENT;
         v.p = wi;

@@ -11,14 +11,13 @@
 #include "kernels/path_tracer_wavefront.h"
 
 __kernel void render_pt(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
-                        __global const float* env_marginal_cdf, __global const float* env_conditional_cdf, __global const ushort* env_guide,
+                        __global const AliasEntry* env_alias,
                         __global const Material* materials, __global const float* measured, __global const float4* emission, __global const Light* lights,
                         __global const float* light_cdf, __global const int* light_of_slot, __global float4* accumulation, __global uint* splat,
                         __global uint* ray_counts, __global uint* lost_ray_counts) {
     int pixel = (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
-    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_marginal_cdf,
-                                          env_conditional_cdf, env_guide);
+    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     (void)splat; /* the path tracer adds to its own pixel only */
     path_tracer_pixel(&settings, &camera, &scene, pixel, accumulation, ray_counts, lost_ray_counts);
 }
@@ -26,7 +25,7 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
 /* One step of the wavefront (kernels/path_tracer_wavefront.h): render_pt's arguments, then the
  * wavefront's buffers. */
 __kernel void render_pt_step(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
-                             __global const float* env_marginal_cdf, __global const float* env_conditional_cdf, __global const ushort* env_guide,
+                             __global const AliasEntry* env_alias,
                              __global const Material* materials, __global const float* measured, __global const float4* emission,
                              __global const Light* lights, __global const float* light_cdf, __global const int* light_of_slot,
                              __global float4* accumulation, __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts,
@@ -34,8 +33,7 @@ __kernel void render_pt_step(RenderKernelSettings settings, Camera camera, Envir
                              __global const RayMarch* ray_marches, __global const RayMarch* shadow_marches, __global volatile uint* unfinished) {
     int pixel = (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
-    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_marginal_cdf,
-                                          env_conditional_cdf, env_guide);
+    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     (void)splat;
     path_tracer_step(&settings, &camera, &scene, pixel, iteration, states, stride, rays, shadow_rays, ray_marches, shadow_marches, accumulation,
                      ray_counts, lost_ray_counts, unfinished);

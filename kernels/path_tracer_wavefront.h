@@ -28,48 +28,59 @@ SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int pixel) {
 }
 
 /* Pixels ahead whose environment texel a step prefetches: a step takes some hundred nanoseconds, a
- * texel from memory about as long. */
+ * line from memory about as long. The entry of the alias table that a light sample reads before its
+ * texel is asked for twice as far ahead, so that it is in the cache when the texel's turn comes. */
 #define WAVEFRONT_PREFETCH_AHEAD 4
 
-/* Asks the cache for the environment texel that the path of pixel `pixel` reads at this step: a map
+/* Whether the path of pixel `pixel` scatters at this step and draws its light sample from the
+ * environment, with the two numbers that sample will use in *u: the step peeks at them through a
+ * copy of the path's generator (path_scatter's u_light: xy the sample, w the choice of light). A
+ * path that ends at an emitter draws nothing: a prefetch for it is wasted, not wrong. */
+SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states, int pixel,
+                                   float2* u) {
+    if (states[pixel].depth >= k->max_depth || k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0) return false;
+    Rng rng = states[pixel].rng;
+    float4 numbers = rng_next4(&rng);
+    float pmf;
+    int index = select_light(scene->light_cdf, k->light_count, numbers.w, &pmf);
+    if (!(pmf > 0.0f) || scene->lights[index].type != LIGHT_ENVIRONMENT) return false;
+    *u = make_float2(numbers.x, numbers.y);
+    return true;
+}
+
+/* Asks the cache for what the path of pixel `pixel` reads from the environment at this step: a map
  * of megabytes, looked up in random directions, misses the caches nearly every time, and one
  * work-item's lookups are not overlapped.
  *  - Its ray escaped: the texel of its direction (environment_radiance_pdf, one cache line). A
  *    camera ray's filtered lookup is left out: neighbouring pixels read neighbouring texels.
  *  - Its ray hit a surface it scatters from, and the environment is the light it chooses: the texel
- *    its light sample draws. The step peeks at the numbers the path will draw (a copy of its
- *    generator) and draws the texel as the sample will, through the guide table and the cdf, whose
- *    lines are then in the cache for the sample too. A path that ends at an emitter draws nothing:
- *    that prefetch is wasted, not wrong.
+ *    its light sample draws (`texel`) or, from further ahead, the entry of the drawn row's alias
+ *    table that names that texel (!texel). The rows' own table is small enough to stay cached, so
+ *    neither peek waits for memory: each address is known without a load that misses.
  * Only with PoCL, whose compiler (clang) has the builtin and whose CPU wavefront builds this program
  * with WAVEFRONT_PREFETCH; nothing else changes, not a bit of the image. The pixel may belong to a
  * work-group that another thread is stepping: whatever state it reads, every index stays inside its
  * buffer (the numbers are in [0, 1), a direction's texel is clamped), and only a prefetch uses it. */
-SS_FN void prefetch_step_texel(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
-                               GLOBAL_MEM const RayMarch* ray_marches, int pixel, int pixels) {
+SS_FN void prefetch_step_environment(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
+                                     GLOBAL_MEM const RayMarch* ray_marches, int pixel, int pixels, bool texel) {
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
     if (pixel >= pixels || !states[pixel].active) return;
     EnvironmentBuffers b = scene->env_buffers;
     if (ray_marches[pixel].status != MARCH_HIT) {
-        if (states[pixel].seen_directly) return;
+        if (!texel || states[pixel].seen_directly) return;
         float3 d = make_float3(states[pixel].direction[0], states[pixel].direction[1], states[pixel].direction[2]);
         float a, c;
         __builtin_prefetch(&b.texels[environment_texel(&scene->env, d, &a, &c)]);
         return;
     }
-    if (states[pixel].depth >= k->max_depth || k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0) return;
-    Rng rng = states[pixel].rng;
-    float4 u = rng_next4(&rng); /* path_scatter's u_light: xy the sample, w the choice of light */
-    float pmf;
-    int index = select_light(scene->light_cdf, k->light_count, u.w, &pmf);
-    if (!(pmf > 0.0f) || scene->lights[index].type != LIGHT_ENVIRONMENT) return;
-    int texel = environment_sample_texel(&scene->env, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y);
-    __builtin_prefetch(&b.texels[texel]);
-    /* the texel's two entries of its row's cdf, row * (N + 1) + column: the sample reads them for its
-     * offset inside the texel, which the peek leaves out when the guide alone names the texel */
-    __builtin_prefetch(&b.conditional_cdf[texel + texel / scene->env.face_size]);
+    float2 u;
+    if (!peek_environment_sample(k, scene, states, pixel, &u)) return;
+    if (texel)
+        __builtin_prefetch(&b.texels[environment_sample_texel(&scene->env, b.alias, u.x, u.y)]);
+    else
+        __builtin_prefetch(&b.alias[environment_sample_column_entry(&scene->env, b.alias, u.x, u.y)]);
 #else
-    (void)k, (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels;
+    (void)k, (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels, (void)texel;
 #endif
 }
 
@@ -88,7 +99,11 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
     counters.lost_rays = 0u;
     PathState p;
     /* the image's pixels only: the padding up to the stride has no state */
-    if (iteration > 0) prefetch_step_texel(k, scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, camera->width * camera->height);
+    if (iteration > 0) {
+        const int pixels = camera->width * camera->height;
+        prefetch_step_environment(k, scene, states, ray_marches, pixel + 2 * WAVEFRONT_PREFETCH_AHEAD, pixels, false);
+        prefetch_step_environment(k, scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, pixels, true);
+    }
     if (iteration == 0) {
         Rng rng = rng_make((uint)pixel, (uint)k->first_sample, k->seed_lo, k->seed_hi);
         float3 origin, direction;

@@ -32,8 +32,7 @@ typedef struct RenderScene {
  * host renderer holds them. */
 SS_FN RenderScene render_scene_make(GLOBAL_MEM const Material* materials, GLOBAL_MEM const float* measured, GLOBAL_MEM const float4* emission, GLOBAL_MEM const Light* lights,
                                     GLOBAL_MEM const float* light_cdf, GLOBAL_MEM const int* light_of_slot, EnvironmentMap env,
-                                    GLOBAL_MEM const float4* env_texels, GLOBAL_MEM const float* env_marginal_cdf,
-                                    GLOBAL_MEM const float* env_conditional_cdf, GLOBAL_MEM const ushort* env_guide) {
+                                    GLOBAL_MEM const float4* env_texels, GLOBAL_MEM const AliasEntry* env_alias) {
     RenderScene scene;
     scene.materials = materials;
     scene.measured = measured;
@@ -43,9 +42,7 @@ SS_FN RenderScene render_scene_make(GLOBAL_MEM const Material* materials, GLOBAL
     scene.light_of_slot = light_of_slot;
     scene.env = env;
     scene.env_buffers.texels = env_texels;
-    scene.env_buffers.marginal_cdf = env_marginal_cdf;
-    scene.env_buffers.conditional_cdf = env_conditional_cdf;
-    scene.env_buffers.guide = env_guide;
+    scene.env_buffers.alias = env_alias;
     return scene;
 }
 

@@ -45,8 +45,7 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange rang
     const ibl::Environment& env = bound_environment();
     kernel::RenderScene scene = kernel::render_scene_make(compiled_.materials.data(), brdf::measured_tables(), emission_.data(), lights_.lights.data(),
                                                           lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(),
-                                                          env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data(),
-                                                          env.guide().data());
+                                                          env.texels().data(), env.alias().data());
 
     const int pixels = range.first + range.count;
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());

@@ -82,9 +82,7 @@ void OpenClRenderer::upload_scene() {
     // environment's rotation and exposure (kernel arguments), change: uploaded once per map.
     if (env.texels().data() != uploaded_texels_) {
         texels_ = upload(runtime_, env.texels());
-        marginal_ = upload(runtime_, env.marginal_cdf());
-        conditional_ = upload(runtime_, env.conditional_cdf());
-        guide_ = upload(runtime_, env.guide());
+        alias_ = upload(runtime_, env.alias());
         uploaded_texels_ = env.texels().data();
     }
     materials_ = upload(runtime_, compiled_.materials);
@@ -143,13 +141,13 @@ void OpenClRenderer::launch_range(const opencl::KernelHandle& kernel, PixelRange
     runtime_.launch_1d(kernel, size_t(range.count), local, size_t(range.first));
 }
 
-// Arguments 0 .. 16, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
+// Arguments 0 .. 14, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
 cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& k) const {
     cl_uint a = 0;
     opencl::set_kernel_arg(kernel, a++, k);
     opencl::set_kernel_arg(kernel, a++, camera_);
     opencl::set_kernel_arg(kernel, a++, bound_environment().map());
-    for (const opencl::BufferHandle* b : {&texels_, &marginal_, &conditional_, &guide_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
+    for (const opencl::BufferHandle* b : {&texels_, &alias_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
                                           &light_cdf_, &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
         opencl::set_kernel_arg(kernel, a++, *b);
     return a;

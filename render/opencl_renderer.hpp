@@ -42,7 +42,7 @@ private:
     opencl::BufferHandle states_, path_rays_, shadow_rays_, ray_marches_, shadow_marches_, unfinished_;
     int stride_ = 0;  // entries of each ray array: the pixels rounded up to a whole packet
     size_t local_size_ = 64;
-    opencl::BufferHandle texels_, marginal_, conditional_, guide_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
+    opencl::BufferHandle texels_, alias_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
     opencl::BufferHandle measured_;  // brdf::measured_table_data(), or one float for a scene without measured materials
     size_t measured_floats_ = 0;
     opencl::BufferHandle accumulation_, splat_, rays_, lost_;

@@ -70,7 +70,7 @@ struct Fixture {
         p.material_slot = -1;
         lights = {e, s, p};
         scene = render_scene_make(materials.data(), brdf::measured_tables(), emission.data(), lights.data(), cdf.data(), light_of_slot.data(), env.map(),
-                                  env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data(), env.guide().data());
+                                  env.texels().data(), env.alias().data());
         k.light_count = 3;
         k.scene_radius = 5.0f;
         lab::scene::Camera c;

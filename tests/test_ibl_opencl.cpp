@@ -22,8 +22,7 @@ const char* kKernel = R"(#pragma OPENCL FP_CONTRACT OFF
 #include "ibl/environment.h"
 
 __kernel void environment_batch(int count, EnvironmentMap env, __global const float4* texels,
-                                __global const float* marginal, __global const float* conditional,
-                                __global const ushort* guide, __global const float* directions, __global const float* u,
+                                __global const AliasEntry* alias, __global const float* directions, __global const float* u,
                                 __global float* radiance, __global float* pdf,
                                 __global float* sampled, __global float* sampled_pdf) {
     int i = (int)get_global_id(0);
@@ -35,7 +34,7 @@ __kernel void environment_batch(int count, EnvironmentMap env, __global const fl
     radiance[3 * i + 2] = l.z;
     pdf[i] = environment_pdf(&env, texels, d);
     float p;
-    float3 w = environment_sample(&env, texels, marginal, conditional, guide, u[2 * i], u[2 * i + 1], &p);
+    float3 w = environment_sample(&env, texels, alias, u[2 * i], u[2 * i + 1], &p);
     sampled[3 * i] = w.x;
     sampled[3 * i + 1] = w.y;
     sampled[3 * i + 2] = w.z;
@@ -82,9 +81,7 @@ TEST_CASE("ibl: the OpenCL build of environment.h agrees with the C++ build", "[
         return b;
     };
     const auto texels = input(env.texels().data(), env.texels().size() * sizeof(brdf::float4));
-    const auto marginal = input(env.marginal_cdf().data(), env.marginal_cdf().size() * sizeof(float));
-    const auto conditional = input(env.conditional_cdf().data(), env.conditional_cdf().size() * sizeof(float));
-    const auto guide = input(env.guide().data(), env.guide().size() * sizeof(unsigned short));
+    const auto alias = input(env.alias().data(), env.alias().size() * sizeof(lab::ibl::AliasEntry));
     const auto dir_buffer = input(directions.data(), directions.size() * sizeof(float));
     const auto u_buffer = input(u.data(), u.size() * sizeof(float));
     const auto radiance = runtime.buffer(3 * count * sizeof(float), CL_MEM_WRITE_ONLY);
@@ -94,15 +91,13 @@ TEST_CASE("ibl: the OpenCL build of environment.h agrees with the C++ build", "[
     lab::opencl::set_kernel_arg(kernel, 0, count);
     lab::opencl::set_kernel_arg(kernel, 1, env.map());
     lab::opencl::set_kernel_arg(kernel, 2, texels);
-    lab::opencl::set_kernel_arg(kernel, 3, marginal);
-    lab::opencl::set_kernel_arg(kernel, 4, conditional);
-    lab::opencl::set_kernel_arg(kernel, 5, guide);
-    lab::opencl::set_kernel_arg(kernel, 6, dir_buffer);
-    lab::opencl::set_kernel_arg(kernel, 7, u_buffer);
-    lab::opencl::set_kernel_arg(kernel, 8, radiance);
-    lab::opencl::set_kernel_arg(kernel, 9, pdf);
-    lab::opencl::set_kernel_arg(kernel, 10, sampled);
-    lab::opencl::set_kernel_arg(kernel, 11, sampled_pdf);
+    lab::opencl::set_kernel_arg(kernel, 3, alias);
+    lab::opencl::set_kernel_arg(kernel, 4, dir_buffer);
+    lab::opencl::set_kernel_arg(kernel, 5, u_buffer);
+    lab::opencl::set_kernel_arg(kernel, 6, radiance);
+    lab::opencl::set_kernel_arg(kernel, 7, pdf);
+    lab::opencl::set_kernel_arg(kernel, 8, sampled);
+    lab::opencl::set_kernel_arg(kernel, 9, sampled_pdf);
     runtime.launch_1d(kernel, count, 64);
     std::vector<float> cl_radiance(3 * count), cl_pdf(count), cl_sampled(3 * count), cl_sampled_pdf(count);
     runtime.read(radiance, cl_radiance.data(), cl_radiance.size() * sizeof(float));

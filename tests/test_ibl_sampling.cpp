@@ -149,8 +149,7 @@ TEST_CASE("ibl: the environment pdf integrates to 1 and follows the texel weight
     for (int t = 0; t < 6 * n * n; ++t) {
         const brdf::float4 x = courtyard.texels()[t];
         const double expected = lab::ibl::luminance(x.x, x.y, x.z) * lab::ibl::texel_solid_angle(n, t % n, (t / n) % n) / total;
-        const double p = ibl::distribution2d_probability(courtyard.marginal_cdf().data(), courtyard.conditional_cdf().data(),
-                                                         n, t / n, t % n);
+        const double p = courtyard.texels()[t].w;  // the probability the alias tables draw the texel with
         // Texels far below the mean may sit on the floor; compare those on an absolute scale.
         worst = std::fmax(worst, std::fabs(p - expected) / std::fmax(expected, 1e-3 / (6.0 * n * n)));
     }
@@ -189,7 +188,7 @@ TEST_CASE("ibl: environment sampling beats uniform sampling", "[ibl]") {
             const int i = t % n, j = (t / n) % n;
             const brdf::float4 x = env.texels()[t];
             const double y = lab::ibl::luminance(x.x, x.y, x.z), omega = lab::ibl::texel_solid_angle(n, i, j);
-            const double p = ibl::distribution2d_probability(env.marginal_cdf().data(), env.conditional_cdf().data(), n, t / n, i);
+            const double p = x.w;
             integral += y * omega;
             uniform_second += 4.0 * kPi * y * y * omega;
             env_second += y * y * area / p * inverse_j2[size_t(j) * n + i];
@@ -253,15 +252,16 @@ TEST_CASE("ibl: environment sampling beats uniform sampling", "[ibl]") {
 // sample draws, found before the sample for a prefetch. The first two must be the separate
 // lookups' very bits; the drawn texel may differ from the sample's only where rounding moves the
 // sample's direction over a texel's edge, a band some ulps wide: fewer than 1 in 10^4 of the
-// samples, where a wrong texel index (row and column swapped, a face off) misses nearly all.
-TEST_CASE("ibl: one lookup gives the radiance and the density, and the texel a sample draws is known before it", "[ibl]") {
+// samples, where a wrong texel index (row and column swapped, a face off) misses nearly all. The entry
+// of the row's alias table asked for before that must be the one the sample reads, every time.
+TEST_CASE("ibl: one lookup gives the radiance and the density, and the texel a sample draws and its alias entry are known before it", "[ibl]") {
     const Environment contrast = Environment::from_image(contrast_image(), "contrast", options_with(30, 8));
     const Environment courtyard = lab::ibl::load_environment("envmaps/courtyard.exr", options_with(-75, 16));
     for (const Environment* env : {&contrast, &courtyard}) {
         const ::ibl::EnvironmentMap& map = env->map();
         const brdf::float4* texels = env->texels().data();
         validation::UniformRandom random(7);
-        long radiance_pdf_differs = 0, sample_differs = 0, texel_differs = 0;
+        long radiance_pdf_differs = 0, sample_differs = 0, texel_differs = 0, entry_differs = 0;
         const long n = 200000;
         for (long i = 0; i < n; ++i) {
             const float3 w = glm::normalize(random.next_float3() * 2.0f - float3(1.0f));
@@ -272,20 +272,25 @@ TEST_CASE("ibl: one lookup gives the radiance and the density, and the texel a s
             const float u1 = random.next_float(), u2 = random.next_float();
             float sample_pdf = -1.0f, plain_pdf = -2.0f;
             float3 radiance(-1.0f);
-            const float3 d = ::ibl::environment_sample_radiance(&map, texels, env->marginal_cdf().data(), env->conditional_cdf().data(),
-                                                                env->guide().data(), u1, u2, &sample_pdf, &radiance);
-            const float3 plain = ::ibl::environment_sample(&map, texels, env->marginal_cdf().data(), env->conditional_cdf().data(),
-                                                           env->guide().data(), u1, u2, &plain_pdf);
+            const float3 d = ::ibl::environment_sample_radiance(&map, texels, env->alias().data(), u1, u2, &sample_pdf, &radiance);
+            const float3 plain = ::ibl::environment_sample(&map, texels, env->alias().data(), u1, u2, &plain_pdf);
             if (d != plain || sample_pdf != plain_pdf || radiance != ::ibl::environment_radiance(&map, texels, d)) ++sample_differs;
             float a, b;
-            const int drawn = ::ibl::environment_sample_texel(&map, env->marginal_cdf().data(), env->conditional_cdf().data(),
-                                                              env->guide().data(), u1, u2);
+            const int drawn = ::ibl::environment_sample_texel(&map, env->alias().data(), u1, u2);
             if (drawn != ::ibl::environment_texel(&map, d, &a, &b)) ++texel_differs;
+            // the entry of the drawn row's table the peek asks for: in that row's table, and naming
+            // the drawn column as its own cell or as its alias
+            const int m = map.face_size, entry = ::ibl::environment_sample_column_entry(&map, env->alias().data(), u1, u2);
+            const int in_rows = entry - CUBEMAP_FACES * m, column = drawn % m;
+            if (in_rows < 0 || in_rows / m != drawn / m ||
+                (in_rows % m != column && env->alias()[size_t(entry)].alias != column))
+                ++entry_differs;
         }
         INFO(env->source() << ": " << texel_differs << " of " << n << " drawn texels differ from the sample's");
         std::printf("[ibl] %s: %ld of %ld drawn texels differ from the sample's\n", env->source().c_str(), texel_differs, n);
         CHECK(radiance_pdf_differs == 0);
         CHECK(sample_differs == 0);
         CHECK(texel_differs * 10000 < n);
+        CHECK(entry_differs == 0);
     }
 }

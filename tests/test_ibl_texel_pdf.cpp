@@ -1,7 +1,8 @@
 // environment_pdf() reads a texel's probability from its w (ibl/environment.h), filled on the host
-// from the cdfs. It must give, bit for bit, the density that distribution2d_probability() of the
-// cdfs gives, the probability the sampler realises: at every texel, on texel edges and cube edges,
-// on all six faces, for rotated environments, for the sampler's own *pdf, and after a new transform.
+// from the alias tables. It must give, bit for bit, the density of the probability with which the
+// tables draw the texel (cubemap_texel_probabilities(), which tests/test_ibl_alias.cpp checks
+// against every number of the generator): at every texel, on texel edges and cube edges, on all six
+// faces, for rotated environments, for the sampler's own *pdf, and after a new transform.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ibl/distribution.hpp"
 #include "ibl/environment.hpp"
 #include "ibl/ibl.hpp"
 #include "tests/float_bits.hpp"
@@ -20,15 +22,14 @@ using lab::ibl::EnvironmentOptions;
 
 namespace {
 
-// The density of `direction` from the cdfs: what environment_pdf computed before the texels held
-// their probabilities, from the same single-source pieces.
-float pdf_from_cdfs(const Environment& env, float3 direction) {
+// The density of `direction` from the tables' probabilities, found from the same single-source
+// pieces as environment_pdf but without the texel's w.
+float pdf_from_tables(const Environment& env, const std::vector<float>& probability, float3 direction) {
     const int n = env.face_size();
     float a, b;
     const int face = ibl::cubemap_face(ibl::environment_to_local(&env.map(), direction), &a, &b);
     const int i = ibl::cubemap_texel_coordinate(n, a), j = ibl::cubemap_texel_coordinate(n, b);
-    const float p = ibl::distribution2d_probability(env.marginal_cdf().data(), env.conditional_cdf().data(), n, face * n + j, i);
-    return ibl::environment_texel_density(n, p, a, b);
+    return ibl::environment_texel_density(n, probability[size_t(face * n + j) * n + i], a, b);
 }
 
 // Face coordinates on and beside every texel edge (k / N steps and the floats next to them) and
@@ -51,10 +52,12 @@ std::vector<float3> edge_directions(const Environment& env) {
     return directions;
 }
 
-// Every texel's w against distribution2d_probability(), then the pdf of edge, random and sampled
-// directions against pdf_from_cdfs(); counts the mismatches and reports the first.
+// Every texel's w against the tables' probability, then the pdf of edge, random and sampled
+// directions against pdf_from_tables(); counts the mismatches and reports the first.
 long mismatches(const Environment& env, std::string* first) {
     const int n = env.face_size();
+    const std::vector<float> probability = lab::ibl::cubemap_texel_probabilities(env.alias(), n);
+    auto pdf_of = [&](float3 d) { return pdf_from_tables(env, probability, d); };
     long bad = 0;
     auto fail = [&](const std::string& what) {
         if (bad++ == 0) *first = what;
@@ -62,16 +65,16 @@ long mismatches(const Environment& env, std::string* first) {
     for (int r = 0; r < CUBEMAP_FACES * n; ++r)
         for (int i = 0; i < n; ++i) {
             const float stored = env.texels()[size_t(r) * n + i].w;
-            const float p = ibl::distribution2d_probability(env.marginal_cdf().data(), env.conditional_cdf().data(), n, r, i);
+            const float p = probability[size_t(r) * n + i];
             if (float_bits(stored) != float_bits(p))
                 fail("texel row " + std::to_string(r) + " column " + std::to_string(i) + ": w " + std::to_string(stored) +
                      " but probability " + std::to_string(p));
         }
     auto check = [&](float3 d, const char* kind) {
-        const float got = env.pdf(d), expected = pdf_from_cdfs(env, d);
+        const float got = env.pdf(d), expected = pdf_of(d);
         if (float_bits(got) != float_bits(expected))
             fail(std::string(kind) + " direction (" + std::to_string(d.x) + ", " + std::to_string(d.y) + ", " +
-                 std::to_string(d.z) + "): pdf " + std::to_string(got) + " but " + std::to_string(expected) + " from the cdfs");
+                 std::to_string(d.z) + "): pdf " + std::to_string(got) + " but " + std::to_string(expected) + " from the tables");
     };
     for (const float3& d : edge_directions(env)) check(d, "edge");
     lab::validation::UniformRandom rng(77);
@@ -79,15 +82,15 @@ long mismatches(const Environment& env, std::string* first) {
     for (int k = 0; k < 20000; ++k) {
         float pdf = 0.0f;
         const float3 d = env.sample(rng.next_float(), rng.next_float(), &pdf);
-        if (float_bits(pdf) != float_bits(pdf_from_cdfs(env, d)))
-            fail("sampled direction: *pdf " + std::to_string(pdf) + " but " + std::to_string(pdf_from_cdfs(env, d)) + " from the cdfs");
+        if (float_bits(pdf) != float_bits(pdf_of(d)))
+            fail("sampled direction: *pdf " + std::to_string(pdf) + " but " + std::to_string(pdf_of(d)) + " from the tables");
     }
     return bad;
 }
 
 }  // namespace
 
-TEST_CASE("ibl: environment_pdf from the texel's w equals the density of the cdfs, bit for bit", "[ibl][ibl-texel-pdf]") {
+TEST_CASE("ibl: environment_pdf from the texel's w equals the density of the alias tables, bit for bit", "[ibl][ibl-texel-pdf]") {
     struct Case {
         const char* spec;
         float rotation;

@@ -299,7 +299,7 @@ TEST_CASE("lights: a point light is a delta with radiance I / d^2", "[lights]") 
     CHECK(glm::length(s.normal + s.wi) < 1e-6f);
     // no direction finds a delta light: its pdf for MIS is 0, through the dispatcher too
     const lab::ibl::Environment env = lab::ibl::load_environment("constant:1,1,1", {});
-    const kernel::EnvironmentBuffers b{env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data(), env.guide().data()};
+    const kernel::EnvironmentBuffers b{env.texels().data(), env.alias().data()};
     CHECK(kernel::light_pdf(&l, &env.map(), b, p, s.wi) == 0.0f);
     const kernel::LightSample d = kernel::sample_light(&l, &env.map(), b, p, kernel::make_float2(0.3f, 0.6f));
     CHECK(d.delta == 1);
@@ -311,7 +311,7 @@ TEST_CASE("lights: a point light is a delta with radiance I / d^2", "[lights]") 
 TEST_CASE("lights: the environment light is ibl's sampler, radiance and pdf", "[lights]") {
     // turned by 40 degrees, one stop up, faces of 16 texels
     const lab::ibl::Environment env = lab::ibl::load_environment("envmaps/sunset.exr", {40.0f, 1.0f, 16});
-    const kernel::EnvironmentBuffers b{env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data(), env.guide().data()};
+    const kernel::EnvironmentBuffers b{env.texels().data(), env.alias().data()};
     kernel::Light l{};
     l.type = LIGHT_ENVIRONMENT;
     l.material_slot = -1;

@@ -33,16 +33,13 @@ const char* kKernel = R"(#pragma OPENCL FP_CONTRACT OFF
 static void put3(__global float* o, float3 v) { o[0] = v.x; o[1] = v.y; o[2] = v.z; }
 
 __kernel void lights_batch(int count, int light_count, Camera camera, EnvironmentMap env,
-                           __global const float4* texels, __global const float* marginal, __global const float* conditional,
-                           __global const ushort* guide, __global const Light* lights, __global const float* cdf, __global const float* points,
+                           __global const float4* texels, __global const AliasEntry* alias, __global const Light* lights, __global const float* cdf, __global const float* points,
                            __global const float* u, __global float* out) {
     int i = (int)get_global_id(0);
     if (i >= count) return;
     EnvironmentBuffers b;
     b.texels = texels;
-    b.marginal_cdf = marginal;
-    b.conditional_cdf = conditional;
-    b.guide = guide;
+    b.alias = alias;
     Light l = lights[i % light_count];
     float3 p = (float3)(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
     __global const float* v = u + 6 * i;
@@ -115,7 +112,7 @@ TEST_CASE("lights OpenCL: the samplers and the camera agree with the C++ build",
     const int light_count = int(set.lights.size());
     REQUIRE(light_count == 4);
     const kernel::Camera camera = lab::render::make_camera(scene.camera, 64, 48, scene.file);
-    const kernel::EnvironmentBuffers b{env.texels().data(), env.marginal_cdf().data(), env.conditional_cdf().data(), env.guide().data()};
+    const kernel::EnvironmentBuffers b{env.texels().data(), env.alias().data()};
 
     const int count = 40000;
     lab::validation::UniformRandom rng(2718);
@@ -144,9 +141,7 @@ TEST_CASE("lights OpenCL: the samplers and the camera agree with the C++ build",
         return buffer;
     };
     const auto texels = input(env.texels().data(), env.texels().size() * sizeof(brdf::float4));
-    const auto marginal = input(env.marginal_cdf().data(), env.marginal_cdf().size() * sizeof(float));
-    const auto conditional = input(env.conditional_cdf().data(), env.conditional_cdf().size() * sizeof(float));
-    const auto guide = input(env.guide().data(), env.guide().size() * sizeof(unsigned short));
+    const auto alias = input(env.alias().data(), env.alias().size() * sizeof(lab::ibl::AliasEntry));
     const auto lights = input(set.lights.data(), set.lights.size() * sizeof(kernel::Light));
     const auto cdf = input(set.selection_cdf.data(), set.selection_cdf.size() * sizeof(float));
     const auto point_buffer = input(points.data(), points.size() * sizeof(float));
@@ -157,7 +152,7 @@ TEST_CASE("lights OpenCL: the samplers and the camera agree with the C++ build",
     lab::opencl::set_kernel_arg(kernel, arg++, light_count);
     lab::opencl::set_kernel_arg(kernel, arg++, camera);
     lab::opencl::set_kernel_arg(kernel, arg++, env.map());
-    for (const auto* buffer : {&texels, &marginal, &conditional, &guide, &lights, &cdf, &point_buffer, &u_buffer, &out})
+    for (const auto* buffer : {&texels, &alias, &lights, &cdf, &point_buffer, &u_buffer, &out})
         lab::opencl::set_kernel_arg(kernel, arg++, *buffer);
     runtime.launch_1d(kernel, count, 64);
     std::vector<float> device(size_t(kOutputs) * count);

@@ -7,21 +7,18 @@
 #include "ibl/environment.h"
 #include "kernels/lights/light.h"
 
-/* The environment's four buffers (ibl/environment.h): texels (radiance, and in w the texel's
- * probability, which environment_pdf reads), marginal and conditional cdfs, and the cdfs' guide
- * tables (which only the sampler reads). */
+/* The environment's two buffers (ibl/environment.h): texels (radiance, and in w the texel's
+ * probability, which environment_pdf reads) and the alias tables (which only the sampler reads). */
 typedef struct EnvironmentBuffers {
     GLOBAL_MEM const float4* texels;
-    GLOBAL_MEM const float* marginal_cdf;
-    GLOBAL_MEM const float* conditional_cdf;
-    GLOBAL_MEM const ushort* guide;
+    GLOBAL_MEM const AliasEntry* alias;
 } EnvironmentBuffers;
 
 SS_FN LightSample environment_light_sample(const EnvironmentMap* env, EnvironmentBuffers b, float2 u) {
     LightSample s = light_sample_none();
     float pdf;
     float3 radiance;
-    float3 wi = environment_sample_radiance(env, b.texels, b.marginal_cdf, b.conditional_cdf, b.guide, u.x, u.y, &pdf, &radiance);
+    float3 wi = environment_sample_radiance(env, b.texels, b.alias, u.x, u.y, &pdf, &radiance);
     if (!(pdf > 0.0f)) return s;
     s.wi = wi;
     s.distance = LIGHT_INFINITE_DISTANCE;

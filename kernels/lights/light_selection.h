@@ -2,13 +2,13 @@
  *
  * The host (render/light_set.cpp) builds a cdf of count + 1 floats over the lights: cdf[0] = 0,
  * cdf[count] = 1, light k chosen with probability cdf[k + 1] - cdf[k] (in proportion to its power,
- * or uniform; docs/lights.md). Sampling is ibl/distribution2d.h's one-dimensional sampler, so the
+ * or uniform; docs/lights.md). Sampling is ibl/distribution1d.h's one-dimensional sampler, so the
  * pmf is the difference of the very floats it compares with and a light of probability 0 is never
  * chosen. */
 #ifndef KERNELS_LIGHTS_LIGHT_SELECTION_H
 #define KERNELS_LIGHTS_LIGHT_SELECTION_H
 #include "single_source/vocabulary.h"
-#include "ibl/distribution2d.h"
+#include "ibl/distribution1d.h"
 #include "kernels/lights/environment_light.h"
 #include "kernels/lights/light.h"
 #include "kernels/lights/point_light.h"
