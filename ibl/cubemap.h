@@ -61,10 +61,12 @@ SS_FN float3 cubemap_face_point(int face, float a, float b) {
 }
 
 /* Column (or row) of the texel holding face coordinate a. Clamped, so a = 1 lands in the last
- * texel and a NaN (from a zero direction) in the first: every direction reads a valid texel. */
+ * texel and a NaN (from a zero direction) in the first: every direction reads a valid texel. The
+ * clamped x is >= 0, where truncation is floor: (int) alone, without PoCL's out-of-range checks
+ * of floor (the same bits). */
 SS_FN int cubemap_texel_coordinate(int face_size, float a) {
     float x = (a + 1.0f) * 0.5f * (float)face_size;
-    return (int)floor(fmin(fmax(x, 0.0f), (float)(face_size - 1)));
+    return (int)fmin(fmax(x, 0.0f), (float)(face_size - 1));
 }
 
 /* Index of the texel direction d falls into, and d's face coordinates a, b. */

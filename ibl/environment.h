@@ -76,7 +76,7 @@ SS_FN float3 environment_radiance_filtered(const EnvironmentMap* env, GLOBAL_MEM
     /* texel centres sit at integer x, y */
     float x = fmin(fmax((a + 1.0f) * 0.5f * (float)n - 0.5f, 0.0f), (float)(n - 1));
     float y = fmin(fmax((b + 1.0f) * 0.5f * (float)n - 0.5f, 0.0f), (float)(n - 1));
-    int i0 = (int)floor(x), j0 = (int)floor(y);
+    int i0 = (int)x, j0 = (int)y; /* floor: x, y >= 0 */
     int i1 = min(i0 + 1, n - 1), j1 = min(j0 + 1, n - 1);
     float fx = x - (float)i0, fy = y - (float)j0;
     int row0 = (face * n + j0) * n, row1 = (face * n + j1) * n;
