@@ -1,6 +1,7 @@
 /* The path tracer as a wavefront on OpenCL: the same paths as kernels/path_tracer.h's trace_path,
  * with every march taken out of the work-item, so that packet kernels (kernels/march_packets.cl)
- * march eight rays at a time on the vector lanes. A launch of one sample runs, for every pixel:
+ * march eight rays at a time on the vector lanes. A launch of one or more samples (WavefrontFilm,
+ * below: one path per pixel and sample) runs, for every path:
  *
  *   path_tracer_step (iteration 0: the camera ray);  then  march_rays (the paths' rays);
  *   march_rays (their shadow rays);  path_tracer_step (iteration 1, 2, ...);  ...
@@ -84,73 +85,113 @@ SS_FN void prefetch_step_environment(const RenderKernelSettings* k, const Render
 #endif
 }
 
-/* One step of the path of pixel `pixel` for sample k->first_sample (k->sample_count is 1). Sets
- * unfinished[0] when the path still has a ray to march, unfinished[1] when it has a shadow ray:
- * every writer writes the same 1, since the host needs only whether any ray, and any shadow ray, is
- * left (it launches only those marches), and a counter's atomics cost more than the step on a CPU. */
-SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel, int iteration,
+/* Where the wavefront's paths leave what they gather. With one sample in flight (slots 1), path p
+ * is pixel p's and adds to the film. With several (small images: more paths in flight take the
+ * launches' fixed costs over more work), path slot * pixels + pixel traces sample first_sample +
+ * slot of the pixel and writes its own entries, which render_pt_resolve then adds to the film in
+ * sample order: film_add_path in the same order as one sample at a time, so the same bits. */
+typedef struct WavefrontFilm {
+    int slots;
+    GLOBAL_MEM float4* accumulation; /* the film, per pixel */
+    GLOBAL_MEM uint* ray_counts;
+    GLOBAL_MEM uint* lost_ray_counts;
+    GLOBAL_MEM float4* path_radiance; /* per path, slots > 1: xyz the path's radiance */
+    GLOBAL_MEM uint* path_rays;
+    GLOBAL_MEM uint* path_lost_rays;
+} WavefrontFilm;
+
+/* One step of path `path` (WavefrontFilm: its pixel and sample). Sets unfinished[0] when the path
+ * still has a ray to march, unfinished[1] when it has a shadow ray: every writer writes the same 1,
+ * since the host needs only whether any ray, and any shadow ray, is left (it launches only those
+ * marches), and a counter's atomics cost more than the step on a CPU. */
+SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int path, int iteration,
                             GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays,
-                            GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches,
-                            GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts,
+                            GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches, WavefrontFilm film,
                             GLOBAL_MEM volatile uint* unfinished) {
+    const int pixels = camera->width * camera->height;
+    const int slot = path / pixels, pixel = path - slot * pixels;
+    /* the path's counters: the pixel's own with one sample in flight, else the path's, begun at 0 */
+    GLOBAL_MEM uint* ray_count = film.slots > 1 ? &film.path_rays[path] : &film.ray_counts[pixel];
+    GLOBAL_MEM uint* lost_ray_count = film.slots > 1 ? &film.path_lost_rays[path] : &film.lost_ray_counts[pixel];
     MarchSettings s = render_march_settings(k);
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
     PathState p;
-    /* the image's pixels only: the padding up to the stride has no state */
+    /* the paths only: the padding up to the stride has no state */
     if (iteration > 0) {
-        const int pixels = camera->width * camera->height;
-        prefetch_step_environment(k, scene, states, ray_marches, pixel + 2 * WAVEFRONT_PREFETCH_AHEAD, pixels, false);
-        prefetch_step_environment(k, scene, states, ray_marches, pixel + WAVEFRONT_PREFETCH_AHEAD, pixels, true);
+        prefetch_step_environment(k, scene, states, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, film.slots * pixels, false);
+        prefetch_step_environment(k, scene, states, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, film.slots * pixels, true);
     }
     if (iteration == 0) {
-        Rng rng = rng_make((uint)pixel, (uint)k->first_sample, k->seed_lo, k->seed_hi);
+        Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + slot), k->seed_lo, k->seed_hi);
         float3 origin, direction;
         camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
         p = path_begin(origin, direction, rng); /* its camera ray is marched before the next step */
+        if (film.slots > 1) *ray_count = *lost_ray_count = 0u;
     } else {
-        if (!states[pixel].active && !states[pixel].shadow.pending) return; /* finished at an earlier step */
-        p = states[pixel];
+        if (!states[path].active && !states[path].shadow.pending) return; /* finished at an earlier step */
+        p = states[path];
         if (p.shadow.pending) {
-            MarchResult r = load_march(shadow_marches, pixel);
+            MarchResult r = load_march(shadow_marches, path);
             count_march(r, &counters);
             path_resolve_shadow(&p, r);
         }
         if (p.active) {
-            MarchResult r = load_march(ray_marches, pixel);
+            MarchResult r = load_march(ray_marches, path);
             count_march(r, &counters);
             path_scatter(k, s, scene, &p, r);
         }
     }
-    ray_counts[pixel] += counters.rays;
-    lost_ray_counts[pixel] += counters.lost_rays;
+    *ray_count += counters.rays;
+    *lost_ray_count += counters.lost_rays;
     if (!p.active && !p.shadow.pending) {
         /* The path is done. All that is read of it until the next sample's camera step rewrites it
          * is that it is done: the state's two flags (the early return above) and no ray in either
          * buffer; so only those are written, not the 152-byte state and fourteen ray fields (most
          * pixels of a simple scene end at their first or second step). */
-        states[pixel].active = 0;
-        states[pixel].shadow.pending = 0;
-        store_no_ray(rays, stride, pixel);
-        store_no_ray(shadow_rays, stride, pixel);
-        accumulation[pixel] = film_add_path(accumulation[pixel], float3_from_array(p.radiance));
+        states[path].active = 0;
+        states[path].shadow.pending = 0;
+        store_no_ray(rays, stride, path);
+        store_no_ray(shadow_rays, stride, path);
+        float3 l = float3_from_array(p.radiance);
+        if (film.slots > 1)
+            film.path_radiance[path] = make_float4(l.x, l.y, l.z, 0.0f);
+        else
+            film.accumulation[pixel] = film_add_path(film.accumulation[pixel], l);
         return;
     }
     if (p.active) {
-        store_ray(rays, stride, pixel, float3_from_array(p.origin), float3_from_array(p.direction), s.max_distance);
+        store_ray(rays, stride, path, float3_from_array(p.origin), float3_from_array(p.direction), s.max_distance);
         unfinished[0] = 1u; /* every writer writes the same 1 (see the top of the function) */
     } else {
-        store_no_ray(rays, stride, pixel);
+        store_no_ray(rays, stride, path);
     }
     if (p.shadow.pending) {
-        store_ray(shadow_rays, stride, pixel, float3_from_array(p.shadow.origin), float3_from_array(p.shadow.direction),
+        store_ray(shadow_rays, stride, path, float3_from_array(p.shadow.origin), float3_from_array(p.shadow.direction),
                   shadow_max_distance(s, p.shadow.distance));
         unfinished[1] = 1u;
     } else {
-        store_no_ray(shadow_rays, stride, pixel);
+        store_no_ray(shadow_rays, stride, path);
     }
-    states[pixel] = p;
+    states[path] = p;
+}
+
+/* Adds the paths of `film.slots` samples in flight (slots > 1) to pixel `pixel`'s film entries, in
+ * sample order. */
+SS_FN void path_tracer_resolve(int pixels, int pixel, WavefrontFilm film) {
+    float4 sum = film.accumulation[pixel];
+    uint rays = film.ray_counts[pixel], lost_rays = film.lost_ray_counts[pixel];
+    for (int slot = 0; slot < film.slots; ++slot) {
+        int path = slot * pixels + pixel;
+        float4 l = film.path_radiance[path];
+        sum = film_add_path(sum, make_float3(l.x, l.y, l.z));
+        rays += film.path_rays[path];
+        lost_rays += film.path_lost_rays[path];
+    }
+    film.accumulation[pixel] = sum;
+    film.ray_counts[pixel] = rays;
+    film.lost_ray_counts[pixel] = lost_rays;
 }
 
 #endif

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 
 #include "brdf/host/measured_registry.hpp"
 #include "opencl/material_layout.hpp"
@@ -25,6 +26,18 @@ opencl::BufferHandle upload(const opencl::Runtime& runtime, const std::vector<T>
     opencl::BufferHandle buffer = runtime.buffer(std::max<size_t>(data.size(), 1) * sizeof(T), CL_MEM_READ_ONLY);
     if (!data.empty()) runtime.write(buffer, data.data(), data.size() * sizeof(T));
     return buffer;
+}
+
+// Paths the wavefront keeps in flight unless RenderSettings::wavefront_paths says otherwise: a
+// step and a march of a launch cost some fifty microseconds of launching and waiting whatever their
+// size, and at 128 x 128 one sample of a simple scene takes only a few milliseconds.
+constexpr int kWavefrontPaths = 1 << 16;
+
+// Samples of every pixel the wavefront keeps in flight: about kWavefrontPaths paths, at least one sample.
+int wavefront_slots(const RenderSettings& s) {
+    const int64_t pixels = int64_t(s.width) * s.height;
+    const int64_t paths = s.wavefront_paths > 0 ? s.wavefront_paths : kWavefrontPaths;
+    return int(std::max<int64_t>(1, paths / pixels));
 }
 
 }  // namespace
@@ -62,6 +75,7 @@ void OpenClRenderer::build_kernel() {
     kernel_ = std::move(kernel);
     if (wavefront()) {
         step_kernel_ = program_->kernel("render_pt_step");
+        resolve_kernel_ = program_->kernel("render_pt_resolve");
         // The marches see only the geometry (scene/generated.h): a change of materials, which
         // rebuilds the step kernel, keeps this program.
         opencl::AssembledSource packets = scene::assemble_scene_kernel("kernels/march_packets.cl", compiled_);
@@ -109,8 +123,11 @@ void OpenClRenderer::clear_film() {
         lost_ = runtime_.buffer(pixels * sizeof(cl_uint), CL_MEM_READ_WRITE);
         film_pixels_ = pixels;
     }
-    if (wavefront() && size_t(stride_) < pixels) {
-        stride_ = int((pixels + 7) / 8 * 8);
+    const int slots = wavefront() ? wavefront_slots(input_.settings) : 0;
+    if (wavefront() && (slots != wavefront_slots_ || size_t(stride_) < size_t(slots) * pixels)) {
+        wavefront_slots_ = slots;
+        const size_t paths = size_t(slots) * pixels;
+        stride_ = int((paths + 7) / 8 * 8);
         const size_t n = size_t(stride_);
         states_ = runtime_.buffer(n * path_state_bytes(), CL_MEM_READ_WRITE);
         // the padding past the image holds no ray (kernels/ray_march.h), so that its lanes idle
@@ -122,6 +139,9 @@ void OpenClRenderer::clear_film() {
         ray_marches_ = runtime_.buffer(n * sizeof(kernel::RayMarch), CL_MEM_READ_WRITE);
         shadow_marches_ = runtime_.buffer(n * sizeof(kernel::RayMarch), CL_MEM_READ_WRITE);
         unfinished_ = runtime_.buffer(2 * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        path_radiance_ = runtime_.buffer(n * 4 * sizeof(float), CL_MEM_READ_WRITE);
+        path_ray_counts_ = runtime_.buffer(n * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        path_lost_counts_ = runtime_.buffer(n * sizeof(cl_uint), CL_MEM_READ_WRITE);
     }
     std::vector<float> zeros(pixels * 4, 0.0f);  // 0.0f and 0u share their bits
     runtime_.write(accumulation_, zeros.data(), pixels * 4 * sizeof(float));
@@ -155,12 +175,14 @@ cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel
 
 void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pixels) {
     if (wavefront()) {
-        // one sample at a time: the wavefront's buffers hold one path per pixel
-        kernel::RenderKernelSettings one = k;
-        one.sample_count = 1;
-        for (int i = 0; i < k.sample_count; ++i) {
-            one.first_sample = k.first_sample + i;
-            launch_wavefront_sample(one, pixels);
+        // up to wavefront_slots_ samples at a time, and only one for a part of the image: the
+        // buffers hold that many paths of every pixel
+        const bool whole = pixels.first == 0 && pixels.count == input_.settings.width * input_.settings.height;
+        kernel::RenderKernelSettings batch = k;
+        for (int i = 0; i < k.sample_count; i += batch.sample_count) {
+            batch.first_sample = k.first_sample + i;
+            batch.sample_count = whole ? std::min(wavefront_slots_, k.sample_count - i) : 1;
+            launch_wavefront_samples(batch, pixels);
         }
     } else {
         bind_render_arguments(kernel_, k);
@@ -170,14 +192,19 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pi
 }
 
 // kernels/path_tracer_wavefront.h's loop: steps, and the packets of their rays and shadow rays,
-// until no path has anything left to march. Per step the host waits once, for the step's two
-// flags (a ray left, a shadow ray left), and launches one march of what is left.
-void OpenClRenderer::launch_wavefront_sample(const kernel::RenderKernelSettings& k, PixelRange pixels) {
+// until no path has anything left to march; then, with several samples in flight, the resolve that
+// adds them to the film in sample order. Per step the host waits once, for the step's two flags (a
+// ray left, a shadow ray left), and launches one march of what is left.
+void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings& k, PixelRange pixels) {
     const int image = input_.settings.width * input_.settings.height;
-    // MARCH_RAYS_PER_ITEM (64) pixels a work-item: a range of whole granules of 64 pixels
+    const int slots = k.sample_count;
+    // path slot * image + pixel: with one sample, the range's pixels; with several, all of them
+    const PixelRange paths = slots == 1 ? pixels : PixelRange{0, slots * image};
+    const int path_count = slots * image;
+    // MARCH_RAYS_PER_ITEM (64) paths a work-item: a range of whole granules of 64 paths
     static_assert(MARCH_RAYS_PER_ITEM == kLaunchGranularity, "a packet work-item marches one granule");
-    const int granules = (image + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
-    const PixelRange packets{pixels.first / MARCH_RAYS_PER_ITEM, (pixels.count + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM};
+    const int granules = (path_count + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
+    const PixelRange packets{paths.first / MARCH_RAYS_PER_ITEM, (paths.count + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM};
     // march_rays' work-items: the rays' granules, then the shadow rays'
     const PixelRange shadow_packets{granules + packets.first, packets.count};
     const size_t packet_local = 1, packet_total = 2 * size_t(granules);
@@ -189,17 +216,25 @@ void OpenClRenderer::launch_wavefront_sample(const kernel::RenderKernelSettings&
         for (const auto& value : {iteration, stride_}) opencl::set_kernel_arg(step_kernel_, a++, value);
         for (const opencl::BufferHandle* b : {&states_, &path_rays_, &shadow_rays_, &ray_marches_, &shadow_marches_, &unfinished_})
             opencl::set_kernel_arg(step_kernel_, a++, *b);
-        launch_range(step_kernel_, pixels, local_size_, size_t(image));
+        opencl::set_kernel_arg(step_kernel_, a++, slots);
+        for (const opencl::BufferHandle* b : {&path_radiance_, &path_ray_counts_, &path_lost_counts_})
+            opencl::set_kernel_arg(step_kernel_, a++, *b);
+        launch_range(step_kernel_, paths, local_size_, size_t(path_count));
         cl_uint unfinished[2] = {0, 0};
         runtime_.read(unfinished_, unfinished, sizeof(unfinished));
-        if (unfinished[0] == 0 && unfinished[1] == 0) return;
-        opencl::set_kernel_args(march_rays_, k, image, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
+        if (unfinished[0] == 0 && unfinished[1] == 0) break;
+        opencl::set_kernel_args(march_rays_, k, path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
         if (unfinished[0] != 0 && unfinished[1] != 0 && packets.count == granules)
             launch_range(march_rays_, PixelRange{0, 2 * granules}, packet_local, packet_total);  // both, in one launch
         else {
             if (unfinished[0] != 0) launch_range(march_rays_, packets, packet_local, packet_total);
             if (unfinished[1] != 0) launch_range(march_rays_, shadow_packets, packet_local, packet_total);
         }
+    }
+    if (slots > 1) {
+        opencl::set_kernel_args(resolve_kernel_, image, slots, accumulation_, rays_, lost_, path_radiance_, path_ray_counts_,
+                                path_lost_counts_);
+        launch_range(resolve_kernel_, PixelRange{0, image}, local_size_, size_t(image));
     }
 }
 

@@ -32,15 +32,19 @@ private:
     const opencl::Runtime& runtime_;
     std::optional<opencl::Program> program_;
     opencl::KernelHandle kernel_;
-    // The wavefront's step kernel, packet kernel (kernels/march_packets.cl) and per-pixel buffers.
-    void launch_wavefront_sample(const kernel::RenderKernelSettings& k, PixelRange pixels);
+    // The wavefront's step kernel, packet kernel (kernels/march_packets.cl) and per-path buffers:
+    // k.sample_count samples in flight, one path per pixel and sample (the whole image when more
+    // than one).
+    void launch_wavefront_samples(const kernel::RenderKernelSettings& k, PixelRange pixels);
     cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& k) const;
     void launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const;
     std::optional<opencl::Program> packet_program_;
     std::string packet_source_, packet_options_;  // what packet_program_ was built from
-    opencl::KernelHandle step_kernel_, march_rays_;
+    opencl::KernelHandle step_kernel_, resolve_kernel_, march_rays_;
     opencl::BufferHandle states_, path_rays_, shadow_rays_, ray_marches_, shadow_marches_, unfinished_;
-    int stride_ = 0;  // entries of each ray array: the pixels rounded up to a whole packet
+    opencl::BufferHandle path_radiance_, path_ray_counts_, path_lost_counts_;  // per path, several samples in flight
+    int wavefront_slots_ = 0;  // samples in flight the buffers hold
+    int stride_ = 0;           // entries of each ray array: the paths rounded up to a whole packet
     size_t local_size_ = 64;
     opencl::BufferHandle texels_, alias_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
     opencl::BufferHandle measured_;  // brdf::measured_table_data(), or one float for a scene without measured materials

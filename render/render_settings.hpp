@@ -60,6 +60,9 @@ struct RenderSettings {
     // time on the vector lanes (kernels/path_tracer_wavefront.h); false, or a GPU: every ray marched
     // in its path's work-item (the same bits).
     bool packets = true;
+    // Paths the wavefront keeps in flight: as many samples of every pixel as make up about this many
+    // (at least one); 0: the renderer's default (render/opencl_renderer.cpp). The same bits whatever it is.
+    int wavefront_paths = 0;
 };
 
 // Throws lab::InputError naming the option for a size, depth, step count or over-relaxation out of
