@@ -85,6 +85,21 @@ SS_FN void prefetch_step_environment(const RenderKernelSettings* k, const Render
 #endif
 }
 
+/* Asks the cache for the lines of path `path`'s state that prefetch_step_environment reads (its
+ * direction, depth, flags and generator: 36 to 100 bytes into the 148), sixteen paths ahead, so
+ * that its peek eight paths ahead does not wait for them: that first touch of the state was a
+ * quarter of the peek's time in perf, and the hardware's stream prefetcher did not reach so far.
+ * PoCL's CPU wavefront only, as prefetch_step_environment; no bit of the image changes. */
+SS_FN void prefetch_step_state(GLOBAL_MEM const PathState* states, int path, int paths) {
+#if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
+    if (path >= paths) return;
+    __builtin_prefetch(&states[path].direction[0]);
+    __builtin_prefetch(&states[path].rng);
+#else
+    (void)states, (void)path, (void)paths;
+#endif
+}
+
 /* Where the wavefront's paths leave what they gather. With one sample in flight (slots 1), path p
  * is pixel p's and adds to the film. With several (small images: more paths in flight take the
  * launches' fixed costs over more work), path slot * pixels + pixel traces sample first_sample +
@@ -120,6 +135,7 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
     PathState p;
     /* the paths only: the padding up to the stride has no state */
     if (iteration > 0) {
+        prefetch_step_state(states, path + 4 * WAVEFRONT_PREFETCH_AHEAD, film.slots * pixels);
         prefetch_step_environment(k, scene, states, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, film.slots * pixels, false);
         prefetch_step_environment(k, scene, states, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, film.slots * pixels, true);
     }
