@@ -10,7 +10,7 @@
  *           environment_radiance() reads for the same direction;
  *   alias   6N + 6N^2 AliasEntry: the alias table over the 6N rows of the faces stacked top to
  *           bottom (row r = face * N + j), then row r's table over its N texels at 6N + r N.
- * A sample reads one entry of the rows' table (72 KB at N = 512: it stays cached), one entry of a
+ * A sample reads one entry of the rows' table (24 KB at N = 512: it stays cached), one entry of a
  * row's, and the texel: two lines of memory, each at an address known before the load, which the
  * path tracer asks the cache for ahead (kernels/path_tracer_wavefront.h). A texel's probability is
  * proportional to its luminance times its solid angle, plus a floor so that every texel can be
