@@ -1,8 +1,8 @@
 #include "ibl/distribution.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "common/luminance.hpp"

@@ -163,7 +163,7 @@ SS_FN int environment_sample_column_entry(const EnvironmentMap* env, GLOBAL_MEM 
     int n = env->face_size;
     float row_offset, f;
     int row = alias_table_sample(environment_row_table(alias), CUBEMAP_FACES * n, u1, &row_offset);
-    return CUBEMAP_FACES * n + row * n + alias_table_entry(n, u2, &f);
+    return (int)(environment_column_table(env, alias, row) - alias) + alias_table_entry(n, u2, &f);
 }
 
 SS_FN int environment_sample_texel(const EnvironmentMap* env, GLOBAL_MEM const AliasEntry* alias, float u1, float u2) {

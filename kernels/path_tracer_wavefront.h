@@ -20,11 +20,11 @@
 #include "kernels/path_tracer.h"
 #include "kernels/ray_march.h"
 
-SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int pixel) {
+SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int path) {
     MarchResult r;
-    r.t = marches[pixel].t;
-    r.status = marches[pixel].status;
-    r.steps = marches[pixel].steps;
+    r.t = marches[path].t;
+    r.status = marches[path].status;
+    r.steps = marches[path].steps;
     return r;
 }
 
@@ -33,14 +33,14 @@ SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int pixel) {
  * texel is asked for twice as far ahead, so that it is in the cache when the texel's turn comes. */
 #define WAVEFRONT_PREFETCH_AHEAD 4
 
-/* Whether the path of pixel `pixel` scatters at this step and draws its light sample from the
+/* Whether path `path` scatters at this step and draws its light sample from the
  * environment, with the two numbers that sample will use in *u: the step peeks at them through a
  * copy of the path's generator (path_scatter's u_light: xy the sample, w the choice of light). A
  * path that ends at an emitter draws nothing: a prefetch for it is wasted, not wrong. */
-SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states, int pixel,
+SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states, int path,
                                    float2* u) {
-    if (states[pixel].depth >= k->max_depth || k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0) return false;
-    Rng rng = states[pixel].rng;
+    if (states[path].depth >= k->max_depth || k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0) return false;
+    Rng rng = states[path].rng;
     float4 numbers = rng_next4(&rng);
     float pmf;
     int index = select_light(scene->light_cdf, k->light_count, numbers.w, &pmf);
@@ -49,7 +49,7 @@ SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderSc
     return true;
 }
 
-/* Asks the cache for what the path of pixel `pixel` reads from the environment at this step: a map
+/* Asks the cache for what path `path` reads from the environment at this step: a map
  * of megabytes, looked up in random directions, misses the caches nearly every time, and one
  * work-item's lookups are not overlapped.
  *  - Its ray escaped: the texel of its direction (environment_radiance_pdf, one cache line). A
@@ -59,29 +59,29 @@ SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderSc
  *    table that names that texel (!texel). The rows' own table is small enough to stay cached, so
  *    neither peek waits for memory: each address is known without a load that misses.
  * Only with PoCL, whose compiler (clang) has the builtin and whose CPU wavefront builds this program
- * with WAVEFRONT_PREFETCH; nothing else changes, not a bit of the image. The pixel may belong to a
+ * with WAVEFRONT_PREFETCH; nothing else changes, not a bit of the image. The path may belong to a
  * work-group that another thread is stepping: whatever state it reads, every index stays inside its
  * buffer (the numbers are in [0, 1), a direction's texel is clamped), and only a prefetch uses it. */
 SS_FN void prefetch_step_environment(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
-                                     GLOBAL_MEM const RayMarch* ray_marches, int pixel, int pixels, bool texel) {
+                                     GLOBAL_MEM const RayMarch* ray_marches, int path, int paths, bool texel) {
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
-    if (pixel >= pixels || !states[pixel].active) return;
+    if (path >= paths || !states[path].active) return;
     EnvironmentBuffers b = scene->env_buffers;
-    if (ray_marches[pixel].status != MARCH_HIT) {
-        if (!texel || states[pixel].seen_directly) return;
-        float3 d = make_float3(states[pixel].direction[0], states[pixel].direction[1], states[pixel].direction[2]);
+    if (ray_marches[path].status != MARCH_HIT) {
+        if (!texel || states[path].seen_directly) return;
+        float3 d = make_float3(states[path].direction[0], states[path].direction[1], states[path].direction[2]);
         float a, c;
         __builtin_prefetch(&b.texels[environment_texel(&scene->env, d, &a, &c)]);
         return;
     }
     float2 u;
-    if (!peek_environment_sample(k, scene, states, pixel, &u)) return;
+    if (!peek_environment_sample(k, scene, states, path, &u)) return;
     if (texel)
         __builtin_prefetch(&b.texels[environment_sample_texel(&scene->env, b.alias, u.x, u.y)]);
     else
         __builtin_prefetch(&b.alias[environment_sample_column_entry(&scene->env, b.alias, u.x, u.y)]);
 #else
-    (void)k, (void)scene, (void)states, (void)ray_marches, (void)pixel, (void)pixels, (void)texel;
+    (void)k, (void)scene, (void)states, (void)ray_marches, (void)path, (void)paths, (void)texel;
 #endif
 }
 
@@ -124,7 +124,7 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
                             GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches, WavefrontFilm film,
                             GLOBAL_MEM volatile uint* unfinished) {
     const int pixels = camera->width * camera->height;
-    const int slot = path / pixels, pixel = path - slot * pixels;
+    const int slot = path / pixels, pixel = path - slot * pixels, paths = film.slots * pixels;
     /* the path's counters: the pixel's own with one sample in flight, else the path's, begun at 0 */
     GLOBAL_MEM uint* ray_count = film.slots > 1 ? &film.path_rays[path] : &film.ray_counts[pixel];
     GLOBAL_MEM uint* lost_ray_count = film.slots > 1 ? &film.path_lost_rays[path] : &film.lost_ray_counts[pixel];
@@ -135,9 +135,9 @@ SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera,
     PathState p;
     /* the paths only: the padding up to the stride has no state */
     if (iteration > 0) {
-        prefetch_step_state(states, path + 4 * WAVEFRONT_PREFETCH_AHEAD, film.slots * pixels);
-        prefetch_step_environment(k, scene, states, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, film.slots * pixels, false);
-        prefetch_step_environment(k, scene, states, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, film.slots * pixels, true);
+        prefetch_step_state(states, path + 4 * WAVEFRONT_PREFETCH_AHEAD, paths);
+        prefetch_step_environment(k, scene, states, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, paths, false);
+        prefetch_step_environment(k, scene, states, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, paths, true);
     }
     if (iteration == 0) {
         Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + slot), k->seed_lo, k->seed_hi);
