@@ -4,12 +4,16 @@
 // nearly free stand-in (kernels/bench_standins.h), against the default build, interleaved in one
 // run; 1 - default/stand-in is the part's share of the time, as far as the stand-in keeps the
 // paths alike (its rays per path are printed next to it); and the environment's part done twice,
-// on the very same paths: default/twice - 1 is its share without that proviso. (3) Work-group size: paths/s per local
-// size against the default 64. Figures, not timed tests: every ratio is measured within the run.
+// on the very same paths: default/twice - 1 is its share without that proviso. (3) The wavefront's
+// launches (a CPU device): each kind's share of the time and microseconds per sample, the host
+// waiting for every launch (render/opencl_renderer.hpp, WavefrontLaunchTimes). (4) Work-group size:
+// paths/s per local size against the default 64. Figures, not timed tests: every ratio is measured
+// within the run.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/bench_convergence.hpp"
@@ -59,6 +63,31 @@ std::vector<Speed> interleaved(const opencl::Runtime& runtime, const std::vector
     return best;
 }
 
+// The wavefront's launches over a render of `seconds`, each kind's share and time per sample.
+void print_launch_times(const opencl::Runtime& runtime, const render::RenderInput& input, double seconds) {
+    render::OpenClRenderer renderer(runtime, input);
+    if (!renderer.wavefront()) {
+        std::printf("  launches: no wavefront on this device (one work-item per path)\n");
+        return;
+    }
+    renderer.add_samples(1);  // PoCL's first launch of each kernel compiles its work-group function
+    renderer.reset();
+    renderer.time_wavefront_launches(true);
+    render_for(renderer, seconds, [](double) {});
+    const render::WavefrontLaunchTimes& t = renderer.wavefront_launch_times();
+    const int samples = renderer.statistics().samples_per_pixel;
+    const double total = t.total();
+    if (samples <= 0 || !(total > 0.0)) return;
+    std::printf("  launches, share of the time and us per sample (%d samples, the host waiting for each):\n", samples);
+    const std::pair<const char*, const render::WavefrontLaunchTimes::Kind*> kinds[] = {
+        {"camera steps", &t.camera_steps}, {"camera rays' packets", &t.camera_marches}, {"scatter steps", &t.scatter_steps},
+        {"rays' and shadow rays' packets", &t.marches}, {"last steps", &t.last_steps}, {"resolves", &t.resolves}};
+    for (const auto& [name, kind] : kinds)
+        if (kind->launches > 0)
+            std::printf("    %-31s %5.1f %%  %8.1f us  (%d launches)\n", name, 100.0 * kind->seconds / total, 1e6 * kind->seconds / samples,
+                        kind->launches);
+}
+
 void run_bench_breakdown(const BenchBreakdownCommand& c) {
     if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
     if (c.repeats < 1 || c.repeats > 100) throw InputError("--repeats", "", "must be in [1, 100]");
@@ -100,6 +129,7 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         std::printf("  environment twice    %.3g paths/s (%.2fx), %.2f rays/path: share of the time about %.0f %%\n", twice.paths_per_second,
                     twice.paths_per_second / s[0].paths_per_second, twice.rays_per_path,
                     100.0 * (s[0].paths_per_second / twice.paths_per_second - 1.0));
+        print_launch_times(runtime, job.input, c.seconds);
 
         std::vector<render::RenderInput> sizes{job.input};
         for (int l : c.local_sizes) {
@@ -120,7 +150,7 @@ void register_bench_breakdown(CLI::App& bench) {
     auto c = std::make_shared<BenchBreakdownCommand>();
     c->job.size = "96x96";
     auto* cmd = bench.add_subcommand("breakdown", "Where the path tracer's time goes: march steps per ray, evaluations per step, the share of "
-                                                  "random numbers, environment sampling and BSDF, and the work-group size");
+                                                  "random numbers, environment sampling and BSDF, the wavefront's launches, and the work-group size");
     add_render_options(*cmd, &c->job);
     cmd->add_option("--scenes", c->scenes, "Scenes to break down")->capture_default_str();
     cmd->add_option("--local-sizes", c->local_sizes, "Work-group sizes to compare with the default 64")->capture_default_str();

@@ -102,9 +102,10 @@ SS_FN BsdfSample standin_bsdf_sample(float3 wo, float3 u) {
     s.flags = BSDF_REFLECTION;
     return s;
 }
-#define bsdf_eval(m, wo, wi) standin_bsdf_eval(wo, wi)
-#define bsdf_pdf(m, wo, wi) standin_bsdf_pdf(wo, wi)
-#define bsdf_sample(m, wo, u) standin_bsdf_sample(wo, u)
+/* the path tracer calls the *_clamped forms (the renderer clamped its materials once) */
+#define bsdf_eval_clamped(m, measured, wo, wi) standin_bsdf_eval(wo, wi)
+#define bsdf_pdf_clamped(m, measured, wo, wi) standin_bsdf_pdf(wo, wi)
+#define bsdf_sample_clamped(m, measured, wo, u) standin_bsdf_sample(wo, u)
 #endif
 
 #endif

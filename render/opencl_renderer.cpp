@@ -52,6 +52,11 @@ bool OpenClRenderer::wavefront() const {
     return input_.settings.integrator == Integrator::pt && input_.settings.packets && runtime_.device().type == "cpu";
 }
 
+void OpenClRenderer::time_wavefront_launches(bool on) {
+    time_launches_ = on;
+    launch_times_ = WavefrontLaunchTimes{};
+}
+
 std::string OpenClRenderer::device_description() const { return runtime_.device().description(); }
 
 void OpenClRenderer::build_kernel() {
@@ -208,7 +213,14 @@ void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings
     // march_rays' work-items: the rays' granules, then the shadow rays'
     const PixelRange shadow_packets{granules + packets.first, packets.count};
     const size_t packet_local = 1, packet_total = 2 * size_t(granules);
+    // with timing on: the time since `start` added to `kind` (the host has waited for the launch)
+    using Clock = std::chrono::steady_clock;
+    auto count = [](WavefrontLaunchTimes::Kind& kind, Clock::time_point start) {
+        kind.seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        kind.launches += 1;
+    };
     for (int iteration = 0;; ++iteration) {
+        const Clock::time_point step_start = Clock::now();
         // the camera ray, max_depth scattering events, and the last shadow ray one step later
         if (iteration > k.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
         runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
@@ -221,8 +233,11 @@ void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings
             opencl::set_kernel_arg(step_kernel_, a++, *b);
         launch_range(step_kernel_, paths, local_size_, size_t(path_count));
         cl_uint unfinished[2] = {0, 0};
-        runtime_.read(unfinished_, unfinished, sizeof(unfinished));
-        if (unfinished[0] == 0 && unfinished[1] == 0) break;
+        runtime_.read(unfinished_, unfinished, sizeof(unfinished));  // blocking: the step is done
+        const bool last = unfinished[0] == 0 && unfinished[1] == 0;
+        if (time_launches_) count(iteration == 0 ? launch_times_.camera_steps : last ? launch_times_.last_steps : launch_times_.scatter_steps, step_start);
+        if (last) break;
+        const Clock::time_point march_start = Clock::now();
         opencl::set_kernel_args(march_rays_, k, path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
         if (unfinished[0] != 0 && unfinished[1] != 0 && packets.count == granules)
             launch_range(march_rays_, PixelRange{0, 2 * granules}, packet_local, packet_total);  // both, in one launch
@@ -230,11 +245,20 @@ void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings
             if (unfinished[0] != 0) launch_range(march_rays_, packets, packet_local, packet_total);
             if (unfinished[1] != 0) launch_range(march_rays_, shadow_packets, packet_local, packet_total);
         }
+        if (time_launches_) {
+            runtime_.finish();
+            count(iteration == 0 ? launch_times_.camera_marches : launch_times_.marches, march_start);
+        }
     }
     if (slots > 1) {
+        const Clock::time_point resolve_start = Clock::now();
         opencl::set_kernel_args(resolve_kernel_, image, slots, accumulation_, rays_, lost_, path_radiance_, path_ray_counts_,
                                 path_lost_counts_);
         launch_range(resolve_kernel_, PixelRange{0, image}, local_size_, size_t(image));
+        if (time_launches_) {
+            runtime_.finish();
+            count(launch_times_.resolves, resolve_start);
+        }
     }
 }
 

@@ -8,6 +8,24 @@
 
 namespace lab::render {
 
+// Where the wavefront's time goes, launch by launch (`dtoadq bench breakdown`): each kind's seconds,
+// with the host waiting for every launch to end, and its number of launches.
+struct WavefrontLaunchTimes {
+    struct Kind {
+        double seconds = 0.0;
+        int launches = 0;
+    };
+    Kind camera_steps;    // iteration 0: the paths begun, their camera rays left in the buffers
+    Kind camera_marches;  // the camera rays' packets
+    Kind scatter_steps;   // a later step that leaves rays to march (surfaces scattered, light samples drawn)
+    Kind marches;         // the packets of the rays and shadow rays those steps leave
+    Kind last_steps;      // the step that leaves nothing to march (the last shadow rays resolved, escapes looked up)
+    Kind resolves;        // several samples in flight: their paths added to the film
+    double total() const {
+        return camera_steps.seconds + camera_marches.seconds + scatter_steps.seconds + marches.seconds + last_steps.seconds + resolves.seconds;
+    }
+};
+
 class OpenClRenderer final : public Renderer {
 public:
     // Builds the kernel (opencl::KernelBuildError with the mapped log on failure) and uploads the
@@ -19,6 +37,11 @@ public:
     // The path tracer's wavefront (kernels/path_tracer_wavefront.h), when RenderSettings::packets
     // and the device is a CPU: its marches run eight rays per work-item on the vector lanes.
     bool wavefront() const;
+
+    // With `on`, the wavefront's launches are timed from now (the host waits for each: a little
+    // slower than an untimed render), into wavefront_launch_times(), which restarts at 0.
+    void time_wavefront_launches(bool on);
+    const WavefrontLaunchTimes& wavefront_launch_times() const { return launch_times_; }
 
 private:
     void build_kernel() override;
@@ -43,6 +66,8 @@ private:
     opencl::KernelHandle step_kernel_, resolve_kernel_, march_rays_;
     opencl::BufferHandle states_, path_rays_, shadow_rays_, ray_marches_, shadow_marches_, unfinished_;
     opencl::BufferHandle path_radiance_, path_ray_counts_, path_lost_counts_;  // per path, several samples in flight
+    bool time_launches_ = false;
+    WavefrontLaunchTimes launch_times_;
     int wavefront_slots_ = 0;  // samples in flight the buffers hold
     int stride_ = 0;           // entries of each ray array: the paths rounded up to a whole packet
     size_t local_size_ = 64;
