@@ -4,28 +4,43 @@
 // result. Checked on the film bits of a sphere under courtyard.exr.
 #include <catch2/catch.hpp>
 
+#include <cstdint>
+#include <string>
+
 #include "opencl/runtime.hpp"
 #include "render/opencl_renderer.hpp"
 #include "scene/load_scene.hpp"
 #include "scene/test_model.hpp"
 
-TEST_CASE("Bench: the environment-twice build gives the default build's film bits", "[render][bench][opencl]") {
+namespace {
+
+// 2 samples of `scene` at 16x16 under courtyard.exr (face 32), with `options` added to the build.
+struct BenchRender {
+    lab::render::FilmReadback film;
+    uint64_t rays = 0;
+};
+BenchRender render_bench_build(const lab::scene::Scene& scene, const std::string& options) {
     lab::render::RenderInput input;
-    input.scene = lab::scene::load_scene("tools/bench_scenes/sphere.json");
-    lab::ibl::EnvironmentOptions options;
-    options.face_size = 32;
-    input.environment = lab::ibl::load_environment("envmaps/courtyard.exr", options);
+    input.scene = scene;
+    lab::ibl::EnvironmentOptions environment;
+    environment.face_size = 32;
+    input.environment = lab::ibl::load_environment("envmaps/courtyard.exr", environment);
     input.settings.width = input.settings.height = 16;
+    input.settings.extra_build_options = options;
     const lab::opencl::Runtime runtime("");
-    lab::render::OpenClRenderer plain(runtime, input);
-    plain.add_samples(2);
-    input.settings.extra_build_options += " -DBENCH_TWICE_ENVIRONMENT";
-    lab::render::OpenClRenderer twice(runtime, input);
-    twice.add_samples(2);
-    const lab::render::FilmReadback a = plain.film(), b = twice.film();
-    CHECK(plain.statistics().rays == twice.statistics().rays);
-    CHECK(a.accumulation == b.accumulation);
-    CHECK(a.splat == b.splat);
+    lab::render::OpenClRenderer renderer(runtime, input);
+    renderer.add_samples(2);
+    return BenchRender{renderer.film(), renderer.statistics().rays};
+}
+
+}  // namespace
+
+TEST_CASE("Bench: the environment-twice build gives the default build's film bits", "[render][bench][opencl]") {
+    const lab::scene::Scene sphere = lab::scene::load_scene("tools/bench_scenes/sphere.json");
+    const BenchRender plain = render_bench_build(sphere, ""), twice = render_bench_build(sphere, "-DBENCH_TWICE_ENVIRONMENT");
+    CHECK(plain.rays == twice.rays);
+    CHECK(plain.film.accumulation == twice.film.accumulation);
+    CHECK(plain.film.splat == twice.film.splat);
 }
 
 // The BSDF stand-in (-DBENCH_STANDIN_BSDF, a grey Lambert reflector) must replace the calls the path
@@ -34,17 +49,6 @@ TEST_CASE("Bench: the environment-twice build gives the default build's film bit
 // very film and `bench breakdown` read noise as the BSDF's share. On the test model, whose
 // materials are not grey Lambert, its film must differ; that old stand-in fails this check.
 TEST_CASE("Bench: the BSDF stand-in build replaces the path tracer's BSDF", "[render][bench][opencl]") {
-    lab::render::RenderInput input;
-    input.scene = lab::scene::load_test_model();
-    lab::ibl::EnvironmentOptions options;
-    options.face_size = 32;
-    input.environment = lab::ibl::load_environment("envmaps/courtyard.exr", options);
-    input.settings.width = input.settings.height = 16;
-    const lab::opencl::Runtime runtime("");
-    lab::render::OpenClRenderer plain(runtime, input);
-    plain.add_samples(2);
-    input.settings.extra_build_options += " -DBENCH_STANDIN_BSDF";
-    lab::render::OpenClRenderer standin(runtime, input);
-    standin.add_samples(2);
-    CHECK(plain.film().accumulation != standin.film().accumulation);
+    const lab::scene::Scene model = lab::scene::load_test_model();
+    CHECK(render_bench_build(model, "").film.accumulation != render_bench_build(model, "-DBENCH_STANDIN_BSDF").film.accumulation);
 }
