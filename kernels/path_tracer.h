@@ -34,8 +34,9 @@ SS_FN float light_hit_mis_weight(const RenderKernelSettings* k, float bsdf_pdf, 
 }
 
 /* The same for light `index` reached from `from` along `direction`: its density looked up only when
- * the weight needs it. */
-SS_FN float light_hit_weight(const RenderKernelSettings* k, const RenderScene* scene, int index, float3 from, float3 direction,
+ * the weight needs it. Inlined always: out of line (as PoCL's compiler left it), its pointer to the
+ * scene kept a copy of the scene in memory for every work-item of the wavefront's step. */
+SS_FN SS_INLINE_ALWAYS float light_hit_weight(const RenderKernelSettings* k, const RenderScene* scene, int index, float3 from, float3 direction,
                              float bsdf_pdf, bool after_delta) {
     if (after_delta || k->light_sampling != LIGHT_SAMPLING_MIS) return light_hit_mis_weight(k, bsdf_pdf, after_delta, 0.0f);
     Light light = scene->lights[index];

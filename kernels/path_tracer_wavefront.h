@@ -3,7 +3,7 @@
  * march eight rays at a time on the vector lanes. A launch of one or more samples (WavefrontFilm,
  * below: one path per pixel and sample) runs, for every path:
  *
- *   path_tracer_step (iteration 0: the camera ray);  then  march_rays (the paths' rays);
+ *   path_tracer_camera_step (iteration 0: the camera ray);  then  march_rays (the paths' rays);
  *   march_rays (their shadow rays);  path_tracer_step (iteration 1, 2, ...);  ...
  *
  * until a step leaves no ray to march. Iteration 0 begins the path with its camera ray; a later
@@ -62,7 +62,7 @@ SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderSc
  * with WAVEFRONT_PREFETCH; nothing else changes, not a bit of the image. The path may belong to a
  * work-group that another thread is stepping: whatever state it reads, every index stays inside its
  * buffer (the numbers are in [0, 1), a direction's texel is clamped), and only a prefetch uses it. */
-SS_FN void prefetch_step_environment(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
+SS_FN SS_INLINE_ALWAYS void prefetch_step_environment(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
                                      GLOBAL_MEM const RayMarch* ray_marches, int path, int paths, bool texel) {
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
     if (path >= paths || !states[path].active) return;
@@ -115,82 +115,95 @@ typedef struct WavefrontFilm {
     GLOBAL_MEM uint* path_lost_rays;
 } WavefrontFilm;
 
-/* One step of path `path` (WavefrontFilm: its pixel and sample). Sets unfinished[0] when the path
- * still has a ray to march, unfinished[1] when it has a shadow ray: every writer writes the same 1,
- * since the host needs only whether any ray, and any shadow ray, is left (it launches only those
- * marches), and a counter's atomics cost more than the step on a CPU. */
-SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int path, int iteration,
-                            GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays,
-                            GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches, WavefrontFilm film,
-                            GLOBAL_MEM volatile uint* unfinished) {
-    const int pixels = camera->width * camera->height;
-    const int slot = path / pixels, pixel = path - slot * pixels, paths = film.slots * pixels;
-    /* the path's counters: the pixel's own with one sample in flight, else the path's, begun at 0 */
-    GLOBAL_MEM uint* ray_count = film.slots > 1 ? &film.path_rays[path] : &film.ray_counts[pixel];
-    GLOBAL_MEM uint* lost_ray_count = film.slots > 1 ? &film.path_lost_rays[path] : &film.lost_ray_counts[pixel];
-    MarchSettings s = render_march_settings(k);
-    PathCounters counters;
-    counters.rays = 0u;
-    counters.lost_rays = 0u;
-    PathState p;
-    /* the paths only: the padding up to the stride has no state */
-    if (iteration > 0) {
-        prefetch_step_state(states, path + 4 * WAVEFRONT_PREFETCH_AHEAD, paths);
-        prefetch_step_environment(k, scene, states, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, paths, false);
-        prefetch_step_environment(k, scene, states, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, paths, true);
-    }
-    if (iteration == 0) {
-        Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + slot), k->seed_lo, k->seed_hi);
-        float3 origin, direction;
-        camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-        p = path_begin(origin, direction, rng); /* its camera ray is marched before the next step */
-        if (film.slots > 1) *ray_count = *lost_ray_count = 0u;
-    } else {
-        if (!states[path].active && !states[path].shadow.pending) return; /* finished at an earlier step */
-        p = states[path];
-        if (p.shadow.pending) {
-            MarchResult r = load_march(shadow_marches, path);
-            count_march(r, &counters);
-            path_resolve_shadow(&p, r);
-        }
-        if (p.active) {
-            MarchResult r = load_march(ray_marches, path);
-            count_march(r, &counters);
-            path_scatter(k, s, scene, &p, r);
-        }
-    }
-    *ray_count += counters.rays;
-    *lost_ray_count += counters.lost_rays;
-    if (!p.active && !p.shadow.pending) {
+/* What path `path` leaves after its camera step or a step: with nothing left to march, its radiance
+ * to the film; else its ray and shadow ray for the packets, and its state for the next step. Sets
+ * unfinished[0] when the path still has a ray to march, unfinished[1] when it has a shadow ray:
+ * every writer writes the same 1, since the host needs only whether any ray, and any shadow ray, is
+ * left (it launches only those marches), and a counter's atomics cost more than the step on a CPU. */
+SS_FN void path_tracer_leave(MarchSettings s, int path, const PathState* p, GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays,
+                             GLOBAL_MEM float* shadow_rays, WavefrontFilm film, GLOBAL_MEM volatile uint* unfinished) {
+    if (!p->active && !p->shadow.pending) {
         /* The path is done. All that is read of it until the next sample's camera step rewrites it
-         * is that it is done: the state's two flags (the early return above) and no ray in either
+         * is that it is done: the state's two flags (the step's early return) and no ray in either
          * buffer; so only those are written, not the 152-byte state and fourteen ray fields (most
-         * pixels of a simple scene end at their first or second step). */
+         * pixels of a simple scene end at their first or second step). With one sample in flight
+         * the path is its pixel. */
         states[path].active = 0;
         states[path].shadow.pending = 0;
         store_no_ray(rays, stride, path);
         store_no_ray(shadow_rays, stride, path);
-        float3 l = float3_from_array(p.radiance);
+        float3 l = float3_from_array(p->radiance);
         if (film.slots > 1)
             film.path_radiance[path] = make_float4(l.x, l.y, l.z, 0.0f);
         else
-            film.accumulation[pixel] = film_add_path(film.accumulation[pixel], l);
+            film.accumulation[path] = film_add_path(film.accumulation[path], l);
         return;
     }
-    if (p.active) {
-        store_ray(rays, stride, path, float3_from_array(p.origin), float3_from_array(p.direction), s.max_distance);
-        unfinished[0] = 1u; /* every writer writes the same 1 (see the top of the function) */
+    if (p->active) {
+        store_ray(rays, stride, path, float3_from_array(p->origin), float3_from_array(p->direction), s.max_distance);
+        unfinished[0] = 1u; /* every writer writes the same 1 (above) */
     } else {
         store_no_ray(rays, stride, path);
     }
-    if (p.shadow.pending) {
-        store_ray(shadow_rays, stride, path, float3_from_array(p.shadow.origin), float3_from_array(p.shadow.direction),
-                  shadow_max_distance(s, p.shadow.distance));
+    if (p->shadow.pending) {
+        store_ray(shadow_rays, stride, path, float3_from_array(p->shadow.origin), float3_from_array(p->shadow.direction),
+                  shadow_max_distance(s, p->shadow.distance));
         unfinished[1] = 1u;
     } else {
         store_no_ray(shadow_rays, stride, path);
     }
-    states[path] = p;
+    states[path] = *p;
+}
+
+/* The camera step (render_pt_camera, iteration 0): path `path` (WavefrontFilm: sample
+ * first_sample + slot of pixel path - slot * pixels) begins, its camera ray left for the packets.
+ * A kernel of its own: inside the step kernel, whose work-group function holds the scatter's
+ * registers and stack, the same work took a third longer (docs/render.md, stop 29). */
+SS_FN void path_tracer_camera_step(const RenderKernelSettings* k, const Camera* camera, int path, GLOBAL_MEM PathState* states, int stride,
+                                   GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays, WavefrontFilm film,
+                                   GLOBAL_MEM volatile uint* unfinished) {
+    const int pixels = camera->width * camera->height;
+    const int slot = path / pixels, pixel = path - slot * pixels;
+    Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + slot), k->seed_lo, k->seed_hi);
+    float3 origin, direction;
+    camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
+    PathState p = path_begin(origin, direction, rng); /* its camera ray is marched before the next step */
+    if (film.slots > 1) film.path_rays[path] = film.path_lost_rays[path] = 0u; /* the path's counters, begun at 0 */
+    path_tracer_leave(render_march_settings(k), path, &p, states, stride, rays, shadow_rays, film, unfinished);
+}
+
+/* A later step of path `path` (render_pt_step, iterations 1, 2, ...): resolves its pending shadow
+ * ray with its march, then takes the march of its ray and scatters (path_scatter). */
+SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int path, GLOBAL_MEM PathState* states,
+                            int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays, GLOBAL_MEM const RayMarch* ray_marches,
+                            GLOBAL_MEM const RayMarch* shadow_marches, WavefrontFilm film, GLOBAL_MEM volatile uint* unfinished) {
+    const int paths = film.slots * camera->width * camera->height;
+    /* the path's counters: the pixel's own with one sample in flight (the path is the pixel), else
+     * the path's */
+    GLOBAL_MEM uint* ray_count = film.slots > 1 ? &film.path_rays[path] : &film.ray_counts[path];
+    GLOBAL_MEM uint* lost_ray_count = film.slots > 1 ? &film.path_lost_rays[path] : &film.lost_ray_counts[path];
+    prefetch_step_state(states, path + 4 * WAVEFRONT_PREFETCH_AHEAD, paths);
+    prefetch_step_environment(k, scene, states, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, paths, false);
+    prefetch_step_environment(k, scene, states, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, paths, true);
+    if (!states[path].active && !states[path].shadow.pending) return; /* finished at an earlier step */
+    MarchSettings s = render_march_settings(k);
+    PathCounters counters;
+    counters.rays = 0u;
+    counters.lost_rays = 0u;
+    PathState p = states[path];
+    if (p.shadow.pending) {
+        MarchResult r = load_march(shadow_marches, path);
+        count_march(r, &counters);
+        path_resolve_shadow(&p, r);
+    }
+    if (p.active) {
+        MarchResult r = load_march(ray_marches, path);
+        count_march(r, &counters);
+        path_scatter(k, s, scene, &p, r);
+    }
+    *ray_count += counters.rays;
+    *lost_ray_count += counters.lost_rays;
+    path_tracer_leave(s, path, &p, states, stride, rays, shadow_rays, film, unfinished);
 }
 
 /* Adds the paths of `film.slots` samples in flight (slots > 1) to pixel `pixel`'s film entries, in

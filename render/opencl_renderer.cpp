@@ -80,6 +80,7 @@ void OpenClRenderer::build_kernel() {
     kernel_ = std::move(kernel);
     if (wavefront()) {
         step_kernel_ = program_->kernel("render_pt_step");
+        camera_kernel_ = program_->kernel("render_pt_camera");
         resolve_kernel_ = program_->kernel("render_pt_resolve");
         // The marches see only the geometry (scene/generated.h): a change of materials, which
         // rebuilds the step kernel, keeps this program.
@@ -224,14 +225,15 @@ void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings
         // the camera ray, max_depth scattering events, and the last shadow ray one step later
         if (iteration > k.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
         runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
-        cl_uint a = bind_render_arguments(step_kernel_, k);
-        for (const auto& value : {iteration, stride_}) opencl::set_kernel_arg(step_kernel_, a++, value);
+        const opencl::KernelHandle& step = iteration == 0 ? camera_kernel_ : step_kernel_;
+        cl_uint a = bind_render_arguments(step, k);
+        for (const auto& value : {iteration, stride_}) opencl::set_kernel_arg(step, a++, value);
         for (const opencl::BufferHandle* b : {&states_, &path_rays_, &shadow_rays_, &ray_marches_, &shadow_marches_, &unfinished_})
-            opencl::set_kernel_arg(step_kernel_, a++, *b);
-        opencl::set_kernel_arg(step_kernel_, a++, slots);
+            opencl::set_kernel_arg(step, a++, *b);
+        opencl::set_kernel_arg(step, a++, slots);
         for (const opencl::BufferHandle* b : {&path_radiance_, &path_ray_counts_, &path_lost_counts_})
-            opencl::set_kernel_arg(step_kernel_, a++, *b);
-        launch_range(step_kernel_, paths, local_size_, size_t(path_count));
+            opencl::set_kernel_arg(step, a++, *b);
+        launch_range(step, paths, local_size_, size_t(path_count));
         cl_uint unfinished[2] = {0, 0};
         runtime_.read(unfinished_, unfinished, sizeof(unfinished));  // blocking: the step is done
         const bool last = unfinished[0] == 0 && unfinished[1] == 0;

@@ -63,7 +63,7 @@ private:
     void launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const;
     std::optional<opencl::Program> packet_program_;
     std::string packet_source_, packet_options_;  // what packet_program_ was built from
-    opencl::KernelHandle step_kernel_, resolve_kernel_, march_rays_;
+    opencl::KernelHandle step_kernel_, camera_kernel_, resolve_kernel_, march_rays_;
     opencl::BufferHandle states_, path_rays_, shadow_rays_, ray_marches_, shadow_marches_, unfinished_;
     opencl::BufferHandle path_radiance_, path_ray_counts_, path_lost_counts_;  // per path, several samples in flight
     bool time_launches_ = false;

@@ -8,6 +8,9 @@
 
 #ifdef __OPENCL_C_VERSION__
 #define SS_FN static inline
+/* For a function the compiler would keep out of line: the private structs a call passes by address
+ * (the scene, the settings) must then be kept in memory, which PoCL does once per work-item. */
+#define SS_INLINE_ALWAYS __attribute__((always_inline))
 #define make_float2(x, y) ((float2)((x), (y)))
 #define make_float3(x, y, z) ((float3)((x), (y), (z)))
 #define make_float4(x, y, z, w) ((float4)((x), (y), (z), (w)))
@@ -17,6 +20,7 @@
 #define CONSTANT_MEM __constant
 #else
 #define SS_FN inline
+#define SS_INLINE_ALWAYS
 #define GLOBAL_MEM
 #define CONSTANT_MEM
 #endif
