@@ -114,10 +114,14 @@ void run_bench_compare(const BenchCompareCommand& c) {
     std::printf("%-28s %16s %16s %10s %10s %15s\n", "scene", "paths/s (this)", "paths/s (other)", "this/other", "paired", "(range)");
     // both builds' median paths/s of one scene file, printed as a row: {this build's, the other's}
     auto both = [&](const std::string& scene, const std::string& name) {
-        // PoCL compiles a kernel's work-group function at its first launch, into its cache: a short
-        // render of each build first, so that no figure pays for that
-        render_paths_per_second(c.other, c, scene, folder / "other.exr", 0.01);
-        render_paths_per_second(self, c, scene, folder / "this.exr", 0.01);
+        // PoCL compiles a kernel's work-group function at its first launch of each shape (the
+        // global size's class among them), into its cache: a render of each build first, long
+        // enough for its launches to reach their largest size (they double up to some 0.125 s),
+        // so that no figure pays for that. A render of 0.01 s left the larger launches' compiles
+        // in the first repeat (a grid of 64 objects at 0.62x, one repeat 0.05x).
+        const double warm_up = std::min(c.seconds, 0.5);
+        render_paths_per_second(c.other, c, scene, folder / "other.exr", warm_up);
+        render_paths_per_second(self, c, scene, folder / "this.exr", warm_up);
         std::vector<double> mine, theirs, paired;
         for (int r = 0; r < c.repeats; ++r) {
             // alternating which build goes first, so that a drift of the machine's speed within a
