@@ -59,10 +59,12 @@ SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
     s.max_steps = k->max_steps;
     s.max_distance = k->max_distance;
     s.over_relaxation = k->over_relaxation;
-    for (int i = 0; i < 3; ++i) {
-        s.surface_lo[i] = k->surface_lo[i];
-        s.surface_hi[i] = k->surface_hi[i];
-    }
+    s.surface_lo[0] = k->surface_lo[0];
+    s.surface_lo[1] = k->surface_lo[1];
+    s.surface_lo[2] = k->surface_lo[2];
+    s.surface_hi[0] = k->surface_hi[0];
+    s.surface_hi[1] = k->surface_hi[1];
+    s.surface_hi[2] = k->surface_hi[2];
     return s;
 }
 

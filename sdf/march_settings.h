@@ -39,10 +39,8 @@ SS_FN MarchSettings march_settings_default(float lipschitz) {
     s.max_distance = 100.0f;
     s.over_relaxation = 1.0f;
     s.lipschitz = lipschitz;
-    for (int i = 0; i < 3; ++i) {
-        s.surface_lo[i] = -INFINITY;
-        s.surface_hi[i] = INFINITY;
-    }
+    s.surface_lo[0] = s.surface_lo[1] = s.surface_lo[2] = -INFINITY;
+    s.surface_hi[0] = s.surface_hi[1] = s.surface_hi[2] = INFINITY;
     return s;
 }
 
