@@ -115,13 +115,17 @@ void run_bench_compare(const BenchCompareCommand& c) {
     // both builds' median paths/s of one scene file, printed as a row: {this build's, the other's}
     auto both = [&](const std::string& scene, const std::string& name) {
         // PoCL compiles a kernel's work-group function at its first launch of each shape (the
-        // global size's class among them), into its cache: a render of each build first, long
-        // enough for its launches to reach their largest size (they double up to some 0.125 s),
-        // so that no figure pays for that. A render of 0.01 s left the larger launches' compiles
-        // in the first repeat (a grid of 64 objects at 0.62x, one repeat 0.05x).
+        // global size's class among them), into its cache, so that no figure may pay for it: two
+        // renders of each build first. In the first, a cold compile takes the whole time of its
+        // first launch, and the launches stay at one sample; in the second, they double (up to
+        // some 0.125 s each) to their largest shapes, compiling those. One render of 0.01 s left the
+        // larger launches' compiles in the first repeat (a grid of 64 objects at 0.62x, one repeat at
+        // 0.05x); so did one render of 0.5 s after a change of the kernels.
         const double warm_up = std::min(c.seconds, 0.5);
-        render_paths_per_second(c.other, c, scene, folder / "other.exr", warm_up);
-        render_paths_per_second(self, c, scene, folder / "this.exr", warm_up);
+        for (int w = 0; w < 2; ++w) {
+            render_paths_per_second(c.other, c, scene, folder / "other.exr", warm_up);
+            render_paths_per_second(self, c, scene, folder / "this.exr", warm_up);
+        }
         std::vector<double> mine, theirs, paired;
         for (int r = 0; r < c.repeats; ++r) {
             // alternating which build goes first, so that a drift of the machine's speed within a
