@@ -9,6 +9,7 @@
 // waiting for every launch (render/opencl_renderer.hpp, WavefrontLaunchTimes). (4) Work-group size:
 // paths/s per local size against the default 64. Figures, not timed tests: every ratio is measured
 // within the run.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -42,10 +43,22 @@ struct Speed {
     double paths_per_second = 0.0, rays_per_path = 0.0;
 };
 
+// PoCL compiles a kernel's work-group function at its first launch of each shape, into its cache:
+// one launch of each number of samples in flight that a render's launches reach (1, 2, ... as many
+// as the wavefront holds), then the film cleared, so that no figure pays for a compile. A single
+// warm-up sample left the larger launches' compiles in the figure (a stand-in at 0.02x).
+void warm_up_launch_shapes(render::OpenClRenderer& renderer) {
+    for (int n = 1; n <= std::min(renderer.samples_in_flight(), 8); ++n) {
+        renderer.set_samples_per_launch(n);
+        renderer.add_samples(n);
+    }
+    renderer.set_samples_per_launch(1);
+    renderer.reset();
+}
+
 Speed measure_speed(const opencl::Runtime& runtime, render::RenderInput input, double seconds) {
     render::OpenClRenderer renderer(runtime, input);
-    renderer.add_samples(1);  // PoCL compiles the work-group function at the first launch: not part of the figure
-    renderer.reset();
+    warm_up_launch_shapes(renderer);
     render_for(renderer, seconds, [](double) {});
     render::RenderStatistics s = renderer.statistics();
     return Speed{s.paths_per_second(), s.paths ? double(s.rays) / double(s.paths) : 0.0};
@@ -70,8 +83,7 @@ void print_launch_times(const opencl::Runtime& runtime, const render::RenderInpu
         std::printf("  launches: no wavefront on this device (one work-item per path)\n");
         return;
     }
-    renderer.add_samples(1);  // PoCL's first launch of each kernel compiles its work-group function
-    renderer.reset();
+    warm_up_launch_shapes(renderer);
     renderer.time_wavefront_launches(true);
     render_for(renderer, seconds, [](double) {});
     const render::WavefrontLaunchTimes& t = renderer.wavefront_launch_times();

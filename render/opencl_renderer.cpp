@@ -57,6 +57,8 @@ void OpenClRenderer::time_wavefront_launches(bool on) {
     launch_times_ = WavefrontLaunchTimes{};
 }
 
+int OpenClRenderer::samples_in_flight() const { return wavefront() ? wavefront_slots(input_.settings) : 1; }
+
 std::string OpenClRenderer::device_description() const { return runtime_.device().description(); }
 
 void OpenClRenderer::build_kernel() {

@@ -37,6 +37,9 @@ public:
     // The path tracer's wavefront (kernels/path_tracer_wavefront.h), when RenderSettings::packets
     // and the device is a CPU: its marches run eight rays per work-item on the vector lanes.
     bool wavefront() const;
+    // Samples of every pixel the wavefront keeps in flight (RenderSettings::wavefront_paths); 1
+    // without the wavefront.
+    int samples_in_flight() const;
 
     // With `on`, the wavefront's launches are timed from now (the host waits for each: a little
     // slower than an untimed render), into wavefront_launch_times(), which restarts at 0.
