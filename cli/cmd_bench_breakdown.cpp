@@ -45,8 +45,9 @@ struct Speed {
 
 // PoCL compiles a kernel's work-group function at its first launch of each shape, into its cache:
 // one launch of each number of samples in flight that a render's launches reach (1, 2, ... as many
-// as the wavefront holds), then the film cleared, so that no figure pays for a compile. A single
-// warm-up sample left the larger launches' compiles in the figure (a stand-in at 0.02x).
+// as the wavefront holds, at most 8 to keep a tiny image's warm-up short), then the film cleared, so
+// that no figure pays for a compile. A single warm-up sample left the larger launches' compiles in
+// the figure (a stand-in at 0.02x).
 void warm_up_launch_shapes(render::OpenClRenderer& renderer) {
     for (int n = 1; n <= std::min(renderer.samples_in_flight(), 8); ++n) {
         renderer.set_samples_per_launch(n);

@@ -29,8 +29,8 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
     RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4 *env_texels,                                \
         __global const AliasEntry *env_alias, __global const Material *materials, __global const float *measured,                       \
         __global const float4 *emission, __global const Light *lights, __global const float *light_cdf, __global const int *light_of_slot, \
-        __global float4 *accumulation, __global uint *splat, __global uint *ray_counts, __global uint *lost_ray_counts, int iteration,    \
-        int stride, __global PathState *states, __global float *rays, __global float *shadow_rays, __global const RayMarch *ray_marches,  \
+        __global float4 *accumulation, __global uint *splat, __global uint *ray_counts, __global uint *lost_ray_counts, int stride,       \
+        __global PathState *states, __global float *rays, __global float *shadow_rays, __global const RayMarch *ray_marches,              \
         __global const RayMarch *shadow_marches, __global volatile uint *unfinished, int slots, __global float4 *path_radiance,          \
         __global uint *path_rays, __global uint *path_lost_rays
 
@@ -39,7 +39,7 @@ __kernel void render_pt_step(WAVEFRONT_KERNEL_ARGUMENTS) {
     if (path >= slots * camera.width * camera.height) return;
     RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     WavefrontFilm film = {slots, accumulation, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};
-    (void)splat, (void)iteration;
+    (void)splat;
     path_tracer_step(&settings, &camera, &scene, path, states, stride, rays, shadow_rays, ray_marches, shadow_marches, film, unfinished);
 }
 
@@ -48,7 +48,7 @@ __kernel void render_pt_camera(WAVEFRONT_KERNEL_ARGUMENTS) {
     if (path >= slots * camera.width * camera.height) return;
     WavefrontFilm film = {slots, accumulation, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};
     (void)env, (void)env_texels, (void)env_alias, (void)materials, (void)measured, (void)emission, (void)lights, (void)light_cdf;
-    (void)light_of_slot, (void)splat, (void)iteration, (void)ray_marches, (void)shadow_marches;
+    (void)light_of_slot, (void)splat, (void)ray_marches, (void)shadow_marches;
     path_tracer_camera_step(&settings, &camera, path, states, stride, rays, shadow_rays, film, unfinished);
 }
 

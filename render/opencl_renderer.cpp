@@ -229,7 +229,7 @@ void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings
         runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
         const opencl::KernelHandle& step = iteration == 0 ? camera_kernel_ : step_kernel_;
         cl_uint a = bind_render_arguments(step, k);
-        for (const auto& value : {iteration, stride_}) opencl::set_kernel_arg(step, a++, value);
+        opencl::set_kernel_arg(step, a++, stride_);
         for (const opencl::BufferHandle* b : {&states_, &path_rays_, &shadow_rays_, &ray_marches_, &shadow_marches_, &unfinished_})
             opencl::set_kernel_arg(step, a++, *b);
         opencl::set_kernel_arg(step, a++, slots);

@@ -58,7 +58,8 @@ private:
     const opencl::Runtime& runtime_;
     std::optional<opencl::Program> program_;
     opencl::KernelHandle kernel_;
-    // The wavefront's step kernel, packet kernel (kernels/march_packets.cl) and per-path buffers:
+    // The wavefront's camera and step kernels, packet kernel (kernels/march_packets.cl), resolve
+    // kernel and per-path buffers:
     // k.sample_count samples in flight, one path per pixel and sample (the whole image when more
     // than one).
     void launch_wavefront_samples(const kernel::RenderKernelSettings& k, PixelRange pixels);
