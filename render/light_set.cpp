@@ -81,4 +81,10 @@ LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environme
     return set;
 }
 
+int light_type_mask(const LightSet& lights) {
+    int mask = 0;
+    for (const kernel::Light& l : lights.lights) mask |= 1 << l.type;
+    return mask;
+}
+
 }  // namespace lab::render

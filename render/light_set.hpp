@@ -40,4 +40,8 @@ double environment_light_power(const ibl::Environment& environment, double scene
 // environment: the scene's environment as loaded (null: none).
 LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environment* environment, LightSelection selection);
 
+// The kinds of its lights, a bit (1 << LIGHT_*) each: the OpenCL kernel's SCENE_LIGHT_TYPES
+// (kernels/lights/light_selection.h), so that a scene's kernel samples only the kinds it has.
+int light_type_mask(const LightSet& lights);
+
 }  // namespace lab::render

@@ -67,7 +67,11 @@ void OpenClRenderer::build_kernel() {
     std::string options = kBuildOptions + (s.extra_build_options.empty() ? "" : " " + s.extra_build_options);
     // the wavefront's step prefetches environment texels (kernels/path_tracer_wavefront.h); PoCL only
     if (wavefront()) options += " -DWAVEFRONT_PREFETCH";
-    opencl::Program program = runtime_.build(scene::assemble_scene_kernel(kernel_file(s.integrator), compiled_), options);
+    // only the samplers of the scene's kinds of light (the marches see none: not the packets'
+    // option); the lights keep their kinds once built (Renderer::rebuild_lights changes an
+    // environment's rotation and exposure only)
+    build_options_ = options + " -DSCENE_LIGHT_TYPES=" + std::to_string(light_type_mask(lights_));
+    opencl::Program program = runtime_.build(scene::assemble_scene_kernel(kernel_file(s.integrator), compiled_), build_options_);
     opencl::check_material_layout(runtime_, program);
     opencl::KernelHandle kernel = program.kernel(kernel_name(s.integrator));
     size_t kernel_max = 0;

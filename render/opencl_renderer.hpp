@@ -46,6 +46,10 @@ public:
     void time_wavefront_launches(bool on);
     const WavefrontLaunchTimes& wavefront_launch_times() const { return launch_times_; }
 
+    // The options the integrator's program was last built with: among them the scene's kinds of
+    // light (-DSCENE_LIGHT_TYPES, kernels/lights/light_selection.h).
+    const std::string& build_options() const { return build_options_; }
+
 private:
     void build_kernel() override;
     void upload_scene() override;
@@ -57,6 +61,7 @@ private:
 
     const opencl::Runtime& runtime_;
     std::optional<opencl::Program> program_;
+    std::string build_options_;
     opencl::KernelHandle kernel_;
     // The wavefront's camera and step kernels, packet kernel (kernels/march_packets.cl), resolve
     // kernel and per-path buffers:

@@ -408,6 +408,10 @@ TEST_CASE("lights: the light set's power formulas, order, slots and selection", 
     const lab::render::LightSet no_env = lab::render::build_light_set(scene, nullptr, lab::render::LightSelection::power);
     CHECK(no_env.lights.size() == 4);
     CHECK(no_env.light_of_slot == std::vector<int>{-1, 0, 1});
+    // the kinds a scene's kernel is built for (-DSCENE_LIGHT_TYPES), a bit (1 << LIGHT_*) each
+    CHECK(lab::render::light_type_mask(set) == ((1 << LIGHT_ENVIRONMENT) | (1 << LIGHT_SPHERE) | (1 << LIGHT_POINT)));
+    CHECK(lab::render::light_type_mask(no_env) == ((1 << LIGHT_SPHERE) | (1 << LIGHT_POINT)));
+    CHECK(lab::render::light_type_mask(lab::render::LightSet{}) == 0);
     float pmf = 1.0f;
     CHECK(kernel::select_light(nullptr, 0, 0.5f, &pmf) == -1);
     CHECK(pmf == 0.0f);

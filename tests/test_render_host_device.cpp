@@ -89,3 +89,22 @@ TEST_CASE("The integrators' host builds and their OpenCL builds trace the same p
         CHECK(std::fabs(double(d.stats.rays) - double(h.stats.rays)) <= 0.05 * double(d.stats.rays));
     }
 }
+
+// A scene's kernel samples only its own kinds of light (kernels/lights/light_selection.h); the test
+// above renders all three kinds, so a kernel built without a kind that its scene has fails it.
+TEST_CASE("A scene's OpenCL kernel is built for its own kinds of light", "[render][host-device][opencl]") {
+    lab::opencl::Runtime runtime("");
+    auto built_for = [&](const std::string& env, const std::string& scene) {
+        lab::render::RenderInput input = render_input(std::nullopt, env, 8, lab::render::LightSampling::mis, 1, scene);
+        return lab::render::OpenClRenderer(runtime, input).build_options();
+    };
+    const char* kEnvironmentOnly = R"({
+      "camera": {"type": "pinhole", "position": [0, 0, 4], "look_at": [0, 0, 0]},
+      "materials": {"white": {"albedo": [0.8, 0.8, 0.8], "lobes": {"diffuse": 1}}},
+      "objects": [{"name": "ball", "material": "white", "shape": {"type": "sphere", "radius": 1}}]
+    })";
+    const std::string all = " -DSCENE_LIGHT_TYPES=" + std::to_string((1 << LIGHT_ENVIRONMENT) | (1 << LIGHT_SPHERE) | (1 << LIGHT_POINT));
+    CHECK_THAT(built_for("constant:0.3,0.4,0.5", kScene), Catch::Contains(all));
+    CHECK_THAT(built_for("", kScene), Catch::Contains(" -DSCENE_LIGHT_TYPES=" + std::to_string((1 << LIGHT_SPHERE) | (1 << LIGHT_POINT))));
+    CHECK_THAT(built_for("constant:0.3,0.4,0.5", kEnvironmentOnly), Catch::Contains(" -DSCENE_LIGHT_TYPES=" + std::to_string(1 << LIGHT_ENVIRONMENT)));
+}

@@ -14,6 +14,15 @@
 #include "kernels/lights/point_light.h"
 #include "kernels/lights/sphere_light.h"
 
+/* The kinds of light a kernel can meet, a bit (1 << LIGHT_*) each. The OpenCL renderer builds a
+ * scene's kernel with its own lights' kinds (-DSCENE_LIGHT_TYPES, render/light_set.hpp), so the
+ * samplers of kinds the scene lacks are not compiled: the sphere under an environment map spent
+ * registers and code on sphere and point lights it never has. The host handles every kind. */
+#ifndef SCENE_LIGHT_TYPES
+#define SCENE_LIGHT_TYPES ((1 << LIGHT_ENVIRONMENT) | (1 << LIGHT_SPHERE) | (1 << LIGHT_POINT))
+#endif
+#define SCENE_HAS_LIGHT_TYPE(type) ((SCENE_LIGHT_TYPES >> (type)) & 1)
+
 /* The light for u in [0, 1), and its probability in *pmf; -1 (and *pmf = 0) without lights. */
 SS_FN int select_light(GLOBAL_MEM const float* cdf, int count, float u, float* pmf) {
     if (count <= 0) {
@@ -34,16 +43,17 @@ SS_FN float light_selection_pmf(GLOBAL_MEM const float* cdf, int count, int inde
 
 /* A sample of light l from p (u: two uniform numbers; the point light uses none). */
 SS_FN LightSample sample_light(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float2 u) {
-    if (l->type == LIGHT_SPHERE) return sphere_light_sample(l, p, u);
-    if (l->type == LIGHT_POINT) return point_light_sample(l, p);
-    return environment_light_sample(env, b, u);
+    if (SCENE_HAS_LIGHT_TYPE(LIGHT_SPHERE) && l->type == LIGHT_SPHERE) return sphere_light_sample(l, p, u);
+    if (SCENE_HAS_LIGHT_TYPE(LIGHT_POINT) && l->type == LIGHT_POINT) return point_light_sample(l, p);
+    if (SCENE_HAS_LIGHT_TYPE(LIGHT_ENVIRONMENT)) return environment_light_sample(env, b, u);
+    return light_sample_none();
 }
 
 /* The solid-angle density with which sample_light() from p returns the unit direction wi, for
  * weighting a BSDF sample that found this light (0 for a point light: no direction finds it). */
 SS_FN float light_pdf(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float3 wi) {
-    if (l->type == LIGHT_SPHERE) return sphere_light_pdf(l, p, wi);
-    if (l->type == LIGHT_POINT) return 0.0f;
+    if (SCENE_HAS_LIGHT_TYPE(LIGHT_SPHERE) && l->type == LIGHT_SPHERE) return sphere_light_pdf(l, p, wi);
+    if (l->type == LIGHT_POINT || !SCENE_HAS_LIGHT_TYPE(LIGHT_ENVIRONMENT)) return 0.0f;
     return environment_light_pdf(env, b, wi);
 }
 
