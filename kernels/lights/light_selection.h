@@ -45,7 +45,7 @@ SS_FN float light_selection_pmf(GLOBAL_MEM const float* cdf, int count, int inde
 SS_FN LightSample sample_light(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float2 u) {
     if (SCENE_HAS_LIGHT_TYPE(LIGHT_SPHERE) && l->type == LIGHT_SPHERE) return sphere_light_sample(l, p, u);
     if (SCENE_HAS_LIGHT_TYPE(LIGHT_POINT) && l->type == LIGHT_POINT) return point_light_sample(l, p);
-    if (SCENE_HAS_LIGHT_TYPE(LIGHT_ENVIRONMENT)) return environment_light_sample(env, b, u);
+    if (SCENE_HAS_LIGHT_TYPE(LIGHT_ENVIRONMENT) && l->type == LIGHT_ENVIRONMENT) return environment_light_sample(env, b, u);
     return light_sample_none();
 }
 
@@ -53,8 +53,8 @@ SS_FN LightSample sample_light(const Light* l, const EnvironmentMap* env, Enviro
  * weighting a BSDF sample that found this light (0 for a point light: no direction finds it). */
 SS_FN float light_pdf(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float3 wi) {
     if (SCENE_HAS_LIGHT_TYPE(LIGHT_SPHERE) && l->type == LIGHT_SPHERE) return sphere_light_pdf(l, p, wi);
-    if (l->type == LIGHT_POINT || !SCENE_HAS_LIGHT_TYPE(LIGHT_ENVIRONMENT)) return 0.0f;
-    return environment_light_pdf(env, b, wi);
+    if (SCENE_HAS_LIGHT_TYPE(LIGHT_ENVIRONMENT) && l->type == LIGHT_ENVIRONMENT) return environment_light_pdf(env, b, wi);
+    return 0.0f; /* a point light */
 }
 
 #endif
