@@ -39,6 +39,7 @@ SS_FN MarchSettings march_settings_default(float lipschitz) {
     s.max_distance = 100.0f;
     s.over_relaxation = 1.0f;
     s.lipschitz = lipschitz;
+    /* without a loop, as render_march_settings (kernels/render_settings.h) */
     s.surface_lo[0] = s.surface_lo[1] = s.surface_lo[2] = -INFINITY;
     s.surface_hi[0] = s.surface_hi[1] = s.surface_hi[2] = INFINITY;
     return s;
