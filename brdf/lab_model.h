@@ -187,9 +187,11 @@ SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf
     return c;
 }
 
-SS_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
-    LobeWeights w = lab_lobe_weights(m);
-    Microfacet mf = microfacet_from_material(m);
+/* lab_eval and lab_pdf for the lobe weights, microfacet and lobe choice that their callers computed
+ * already: a sample (lab_sample) evaluates its mixture with the ones it drew from, instead of
+ * computing them twice more (the Hyper-Cauchy microfacet takes four lgamma, the lobe choice a glossy
+ * evaluation of its own). The same operations, so the same bits as lab_eval and lab_pdf. */
+SS_FN float3 lab_eval_lobes(const Material* m, LobeWeights w, Microfacet mf, float3 wo, float3 wi) {
     bool smooth = microfacet_is_smooth(mf);
     float3 f = float3_splat(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
@@ -215,10 +217,7 @@ SS_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
     return f;
 }
 
-SS_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
-    LobeWeights w = lab_lobe_weights(m);
-    Microfacet mf = microfacet_from_material(m);
-    LobeChoice c = lab_lobe_choice(m, w, mf, wo);
+SS_FN float lab_pdf_lobes(const Material* m, Microfacet mf, LobeChoice c, float3 wo, float3 wi) {
     bool smooth = microfacet_is_smooth(mf);
     float pdf = 0.0f;
     if (wo.z > 0.0f && wi.z > 0.0f) {
@@ -244,6 +243,16 @@ SS_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
     }
 #endif
     return pdf;
+}
+
+SS_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
+    return lab_eval_lobes(m, lab_lobe_weights(m), microfacet_from_material(m), wo, wi);
+}
+
+SS_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
+    LobeWeights w = lab_lobe_weights(m);
+    Microfacet mf = microfacet_from_material(m);
+    return lab_pdf_lobes(m, mf, lab_lobe_choice(m, w, mf, wo), wo, wi);
 }
 
 /* Mirror reflection with Schlick's Fresnel, as a delta sample of a lobe of weight `weight` picked with
@@ -316,10 +325,10 @@ SS_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
         return s; /* nothing to sample */
     }
     /* a continuous lobe: value and density of the whole mixture, so the pdf equals lab_pdf() */
-    s.pdf = lab_pdf(m, wo, wi);
+    s.pdf = lab_pdf_lobes(m, mf, c, wo, wi);
     if (!(s.pdf > 0.0f)) return bsdf_sample_failed();
     s.wi = wi;
-    s.f = lab_eval(m, wo, wi);
+    s.f = lab_eval_lobes(m, w, mf, wo, wi);
     s.flags = same_hemisphere(wo, wi) ? BSDF_REFLECTION : BSDF_TRANSMISSION;
     return s;
 }
