@@ -50,6 +50,27 @@ typedef struct CameraSample {
     int visible;       /* 0: behind the camera, outside the film, or degenerate; the rest is then 0 */
 } CameraSample;
 
+/* The pinhole ray's direction through raster (x, y), unnormalised, with unit length along forward, in
+ * components: one ray, or (SDF_LANES) the eight rays of a packet kernel's lanes
+ * (kernels/march_packets.cl), each lane the bits of the one-ray form. */
+SS_FN void camera_film_point_xyz(const Camera* c, SDF_FLOAT x, SDF_FLOAT y, SDF_FLOAT* fx, SDF_FLOAT* fy, SDF_FLOAT* fz) {
+    SDF_FLOAT sx = 2.0f * x / (float)c->width - 1.0f;
+    SDF_FLOAT sy = 1.0f - 2.0f * y / (float)c->height;
+    *fx = c->forward[0] + sx * c->right[0] + sy * c->up[0];
+    *fy = c->forward[1] + sx * c->right[1] + sy * c->up[1];
+    *fz = c->forward[2] + sx * c->right[2] + sy * c->up[2];
+}
+
+/* (x, y, z) scaled to unit length as OpenCL's normalize() scales a vector of ordinary length (PoCL:
+ * times the reciprocal of the square root of x^2 + y^2 + z^2, the same bits), in components. */
+SS_FN void camera_unit_xyz(SDF_FLOAT* x, SDF_FLOAT* y, SDF_FLOAT* z) {
+    SDF_FLOAT inverse_length = 1.0f / sqrt(*x * *x + *y * *y + *z * *z);
+    *x = *x * inverse_length;
+    *y = *y * inverse_length;
+    *z = *z * inverse_length;
+}
+
+#ifndef SDF_LANES /* the rest: one ray at a time */
 SS_FN float camera_lens_area(const Camera* c) { return c->lens_radius > 0.0f ? SS_PI * sqr(c->lens_radius) : 1.0f; }
 
 SS_FN float camera_film_area(const Camera* c) {
@@ -58,9 +79,9 @@ SS_FN float camera_film_area(const Camera* c) {
 
 /* The pinhole ray's direction through raster (x, y), unnormalised, with unit length along forward. */
 SS_FN float3 camera_film_point(const Camera* c, float x, float y) {
-    float sx = 2.0f * x / (float)c->width - 1.0f;
-    float sy = 1.0f - 2.0f * y / (float)c->height;
-    return float3_from_array(c->forward) + sx * float3_from_array(c->right) + sy * float3_from_array(c->up);
+    float fx, fy, fz;
+    camera_film_point_xyz(c, x, y, &fx, &fy, &fz);
+    return make_float3(fx, fy, fz);
 }
 
 /* The point of the lens for two uniform numbers (concentric disk, uniform by area). */
@@ -77,7 +98,9 @@ SS_FN void camera_generate_ray(const Camera* c, float x, float y, float2 u_lens,
     float3 film = camera_film_point(c, x, y);
     if (!(c->lens_radius > 0.0f)) {
         *origin = float3_from_array(c->position);
-        *direction = normalize(film);
+        float x = film.x, y = film.y, z = film.z;
+        camera_unit_xyz(&x, &y, &z); /* as the packets' camera rays (kernels/march_packets.cl) */
+        *direction = make_float3(x, y, z);
         return;
     }
     float3 focus = float3_from_array(c->position) + film * c->focus_distance;
@@ -167,5 +190,20 @@ SS_FN CameraSample camera_sample_wi(const Camera* c, float3 p, float2 u_lens) {
     s.visible = 1;
     return s;
 }
+
+#else /* SDF_LANES */
+/* camera_pixel_ray of a pinhole for eight pixels at once, on a packet kernel's lanes
+ * (kernels/march_packets.cl): each lane draws its path's four numbers from its generator and gets
+ * the bits of camera_pixel_ray's direction; the origin is the camera's position. */
+SS_FN void camera_pinhole_pixel_rays(const Camera* c, SDF_MASK pixel, RngLanes* rng, SDF_FLOAT* dx, SDF_FLOAT* dy, SDF_FLOAT* dz) {
+    SDF_FLOAT x = convert_float8(pixel % c->width), y = convert_float8(pixel / c->width);
+    SDF_FLOAT ux = rng_next_float_lanes(rng);
+    SDF_FLOAT uy = rng_next_float_lanes(rng);
+    rng_next_float_lanes(rng); /* the lens point's two numbers: a pinhole draws them and has no lens */
+    rng_next_float_lanes(rng);
+    camera_film_point_xyz(c, x + ux, y + uy, dx, dy, dz);
+    camera_unit_xyz(dx, dy, dz);
+}
+#endif /* SDF_LANES */
 
 #endif

@@ -6,6 +6,7 @@
 
 #include "scene/generated.h"
 
+#include "kernels/camera.h"
 #include "kernels/ray_march.h"
 #include "kernels/render_settings.h"
 #include "sdf/march_lanes.h"
@@ -19,25 +20,12 @@
 uint lane_bits(int8 mask) { return (uint)SDF_SUM(mask & (int8)(1, 2, 4, 8, 16, 32, 64, 128)); }
 int lowest_lane(uint bits) { return 31 - (int)clz(bits & (0u - bits)); }
 
-/* The rays of `rays` and `shadow_rays` (kernels/ray_march.h; `stride`: a multiple of 8 at least
- * `pixels`), into `marches` and `shadow_marches`, in one launch: work-items 0 .. granules - 1 take
- * the rays, granules .. 2 granules - 1 the shadow rays (granules: `pixels` in granules of
- * MARCH_RAYS_PER_ITEM), and the host launches only the half that has rays when the other has none.
- * A launch costs some fifty microseconds on a CPU, a tenth of a step of a simple scene. Work-item g
- * of its half marches rays MARCH_RAYS_PER_ITEM g ... up to `pixels` on eight lanes: a lane whose march is done
- * stores it and takes the next ray, skipping those that are none (a path that has ended), so the
- * lanes stay busy however long each ray's march and however few rays are left. A lane waits for
- * company until half the lanes are free: starting a ray costs a few dozen scalar operations. */
-__kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, __global const float* path_rays, __global RayMarch* path_marches,
-                         __global const float* shadow_rays, __global RayMarch* shadow_marches) {
-    const int granules = (pixels + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
-    const int item = (int)get_global_id(0);
-    const bool shadow = item >= granules;
-    __global const float* rays = shadow ? shadow_rays : path_rays;
-    __global RayMarch* marches = shadow ? shadow_marches : path_marches;
-    const int first = (shadow ? item - granules : item) * MARCH_RAYS_PER_ITEM;
-    const int end = min(first + MARCH_RAYS_PER_ITEM, pixels);
-    const MarchSettings s = render_march_settings(&settings);
+/* The rays first .. end - 1 of `rays` (kernels/ray_march.h) into `marches`, on eight lanes: a lane
+ * whose march is done stores it and takes the next ray, skipping those that are none (a path that
+ * has ended), so the lanes stay busy however long each ray's march and however few rays are left.
+ * A lane waits for company until half the lanes are free: starting a ray costs a few dozen scalar
+ * operations. */
+SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings s, int first, int end, int stride, __global const float* rays, __global RayMarch* marches) {
     uint evaluations = 0u;
     float field[RAY_FIELDS][8]; /* each lane's ray: origin, direction, max distance */
     int lane_ray[8];            /* the ray each lane marches; -1: none */
@@ -105,4 +93,57 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
         }
         march_lanes_advance(&st, ox, oy, oz, vx, vy, vz, max_distance, s, &evaluations);
     }
+}
+
+/* The rays of `rays` and `shadow_rays` (kernels/ray_march.h; `stride`: a multiple of 8 at least
+ * `pixels`), into `marches` and `shadow_marches`, in one launch: work-items 0 .. granules - 1 take
+ * the rays, granules .. 2 granules - 1 the shadow rays (granules: `pixels` in granules of
+ * MARCH_RAYS_PER_ITEM), and the host launches only the half that has rays when the other has none.
+ * A launch costs some fifty microseconds on a CPU, a tenth of a step of a simple scene. Work-item g
+ * of its half marches rays MARCH_RAYS_PER_ITEM g ... up to `pixels` (march_granule). */
+__kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, __global const float* path_rays, __global RayMarch* path_marches,
+                         __global const float* shadow_rays, __global RayMarch* shadow_marches) {
+    const int granules = (pixels + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
+    const int item = (int)get_global_id(0);
+    const bool shadow = item >= granules;
+    const int first = (shadow ? item - granules : item) * MARCH_RAYS_PER_ITEM;
+    march_granule(render_march_settings(&settings), first, min(first + MARCH_RAYS_PER_ITEM, pixels), stride, shadow ? shadow_rays : path_rays,
+                  shadow ? shadow_marches : path_marches);
+}
+
+/* The wavefront's camera rays of a pinhole camera (kernels/path_tracer_wavefront.h), begun on the
+ * lanes and marched: work-item g takes the `paths` granule g holds, eight at a time, and leaves
+ * each path's camera ray in `rays` and its generator after the ray's four numbers in `camera_rngs`
+ * (four arrays of `stride` words), as path_tracer_camera_step computes them one path at a time, to
+ * the bit; then it marches them (march_granule). One launch instead of a camera step and a march,
+ * and the camera's Philox, divisions and square root eight paths to an instruction: the camera
+ * step, one path per work-item, was a seventh of the sphere's time. */
+__kernel void march_camera_rays(RenderKernelSettings settings, Camera camera, int paths, int stride, __global float* rays,
+                                __global uint* camera_rngs, __global RayMarch* marches) {
+    const int first = (int)get_global_id(0) * MARCH_RAYS_PER_ITEM;
+    if (first >= paths) return;
+    const int end = min(first + MARCH_RAYS_PER_ITEM, paths);
+    const int pixels = camera.width * camera.height;
+    const MarchSettings s = render_march_settings(&settings);
+    /* the stride is a multiple of 8 (kernels/ray_march.h): the lanes of a last packet past `end`
+     * store no ray, as the padding holds */
+    for (int packet = first; packet < end; packet += 8) {
+        const int8 path = packet + (int8)(0, 1, 2, 3, 4, 5, 6, 7);
+        const int8 slot = path / pixels, pixel = path - slot * pixels;
+        RngLanes rng = rng_make_lanes(convert_uint8(pixel), convert_uint8(settings.first_sample + slot), settings.seed_lo, settings.seed_hi);
+        float8 dx, dy, dz;
+        camera_pinhole_pixel_rays(&camera, pixel, &rng, &dx, &dy, &dz);
+        vstore8((float8)camera.position[0], 0, rays + packet);
+        vstore8((float8)camera.position[1], 0, rays + stride + packet);
+        vstore8((float8)camera.position[2], 0, rays + 2 * stride + packet);
+        vstore8(dx, 0, rays + 3 * stride + packet);
+        vstore8(dy, 0, rays + 4 * stride + packet);
+        vstore8(dz, 0, rays + 5 * stride + packet);
+        vstore8(select((float8)s.max_distance, (float8)NO_RAY, path >= end), 0, rays + 6 * stride + packet);
+        vstore8(rng.s0, 0, camera_rngs + packet);
+        vstore8(rng.s1, 0, camera_rngs + stride + packet);
+        vstore8(rng.s2, 0, camera_rngs + 2 * stride + packet);
+        vstore8(rng.s3, 0, camera_rngs + 3 * stride + packet);
+    }
+    march_granule(s, first, end, stride, rays, marches);
 }

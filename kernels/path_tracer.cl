@@ -32,24 +32,30 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
         __global float4 *accumulation, __global uint *splat, __global uint *ray_counts, __global uint *lost_ray_counts, int stride,       \
         __global PathState *states, __global float *rays, __global float *shadow_rays, __global const RayMarch *ray_marches,              \
         __global const RayMarch *shadow_marches, __global volatile uint *unfinished, int slots, __global float4 *path_radiance,          \
-        __global uint *path_rays, __global uint *path_lost_rays
+        __global uint *path_rays, __global uint *path_lost_rays, __global uint *camera_rngs
 
-__kernel void render_pt_step(WAVEFRONT_KERNEL_ARGUMENTS) {
-    int path = (int)get_global_id(0);
-    if (path >= slots * camera.width * camera.height) return;
-    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
-    WavefrontFilm film = {slots, accumulation, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};
-    (void)splat;
-    path_tracer_step(&settings, &camera, &scene, path, states, stride, rays, shadow_rays, ray_marches, shadow_marches, film, unfinished);
-}
+/* A step of every path, path_tracer_step; the first (iteration 1) begins the paths. */
+#define WAVEFRONT_STEP_KERNEL(name, first)                                                                                                 \
+    __kernel void name(WAVEFRONT_KERNEL_ARGUMENTS) {                                                                                       \
+        int path = (int)get_global_id(0);                                                                                                  \
+        if (path >= slots * camera.width * camera.height) return;                                                                          \
+        RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias); \
+        WavefrontFilm film = {slots, accumulation, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};                 \
+        (void)splat;                                                                                                                       \
+        path_tracer_step(&settings, &camera, &scene, path, states, stride, rays, shadow_rays, ray_marches, shadow_marches, camera_rngs,     \
+                         film, unfinished, first);                                                                                         \
+    }
+WAVEFRONT_STEP_KERNEL(render_pt_first_step, true)
+WAVEFRONT_STEP_KERNEL(render_pt_step, false)
 
+/* The camera rays of a camera that the packets do not begin themselves (a thin lens). */
 __kernel void render_pt_camera(WAVEFRONT_KERNEL_ARGUMENTS) {
     int path = (int)get_global_id(0);
     if (path >= slots * camera.width * camera.height) return;
-    WavefrontFilm film = {slots, accumulation, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};
     (void)env, (void)env_texels, (void)env_alias, (void)materials, (void)measured, (void)emission, (void)lights, (void)light_cdf;
-    (void)light_of_slot, (void)splat, (void)ray_marches, (void)shadow_marches;
-    path_tracer_camera_step(&settings, &camera, path, states, stride, rays, shadow_rays, film, unfinished);
+    (void)light_of_slot, (void)accumulation, (void)splat, (void)ray_counts, (void)lost_ray_counts, (void)states, (void)shadow_rays;
+    (void)ray_marches, (void)shadow_marches, (void)unfinished, (void)path_radiance, (void)path_rays, (void)path_lost_rays;
+    path_tracer_camera_step(&settings, &camera, path, stride, rays, camera_rngs);
 }
 
 /* After a launch of several samples in flight: adds each pixel's paths to the film in sample order

@@ -3,13 +3,15 @@
  * march eight rays at a time on the vector lanes. A launch of one or more samples (WavefrontFilm,
  * below: one path per pixel and sample) runs, for every path:
  *
- *   path_tracer_camera_step (iteration 0: the camera ray);  then  march_rays (the paths' rays);
- *   march_rays (their shadow rays);  path_tracer_step (iteration 1, 2, ...);  ...
+ *   iteration 0, the camera ray: march_camera_rays (kernels/march_packets.cl: a pinhole's rays
+ *   drawn on the packets' lanes, then marched), or path_tracer_camera_step and march_rays (a thin
+ *   lens);  then  path_tracer_step (iteration 1, 2, ...);  march_rays (its rays and shadow rays);  ...
  *
- * until a step leaves no ray to march. Iteration 0 begins the path with its camera ray; a later
- * step resolves the path's pending shadow ray with its march, then takes the march of its ray and
- * scatters (path_scatter), leaving its next ray and shadow ray in the ray buffers
- * (kernels/ray_march.h) and its state in `states`. That is trace_path's order of operations, so a
+ * until a step leaves no ray to march. Iteration 0 leaves each path's camera ray in the ray buffer
+ * and its generator (after the ray's four numbers) in camera_rngs; the first step begins the path
+ * with them, a later one resolves the path's pending shadow ray with its march; then each takes
+ * the march of its ray and scatters (path_scatter), leaving its next ray and shadow ray in the ray
+ * buffers (kernels/ray_march.h) and its state in `states`. That is trace_path's order of operations, so a
  * wavefront sample gives the bits of the same sample traced in one work-item (the host's). A path
  * with nothing left to march adds its radiance to the film, as path_tracer_pixel does. Every
  * pixel's path is at the same step, so the rays of a packet (neighbouring pixels) stay alike.
@@ -33,20 +35,36 @@ SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int path) {
  * texel is asked for twice as far ahead, so that it is in the cache when the texel's turn comes. */
 #define WAVEFRONT_PREFETCH_AHEAD 4
 
-/* Whether path `path` scatters at this step and draws its light sample from the
- * environment, with the two numbers that sample will use in *u: the step peeks at them through a
- * copy of the path's generator (path_scatter's u_light: xy the sample, w the choice of light). A
- * path that ends at an emitter draws nothing: a prefetch for it is wasted, not wrong. */
-SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states, int path,
-                                   float2* u) {
-    if (states[path].depth >= k->max_depth || k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0) return false;
-    Rng rng = states[path].rng;
+/* Whether a path at depth `depth` whose generator is `rng` scatters at this step and draws its light
+ * sample from the environment, with the two numbers that sample will use in *u: the step peeks at
+ * them through a copy of the path's generator (path_scatter's u_light: xy the sample, w the choice
+ * of light). A path that ends at an emitter draws nothing: a prefetch for it is wasted, not wrong. */
+SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderScene* scene, int depth, Rng rng, float2* u) {
+    if (depth >= k->max_depth || k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0) return false;
     float4 numbers = rng_next4(&rng);
     float pmf;
     int index = select_light(scene->light_cdf, k->light_count, numbers.w, &pmf);
     if (!(pmf > 0.0f) || scene->lights[index].type != LIGHT_ENVIRONMENT) return false;
     *u = make_float2(numbers.x, numbers.y);
     return true;
+}
+
+/* The generator a camera ray left for its path's first step (camera_rngs: four arrays of `stride`
+ * words, kernels/ray_march.h), and its store by the scalar camera step. */
+SS_FN Rng load_camera_rng(GLOBAL_MEM const uint* camera_rngs, int stride, int path) {
+    Rng r;
+    r.s0 = camera_rngs[path];
+    r.s1 = camera_rngs[stride + path];
+    r.s2 = camera_rngs[2 * stride + path];
+    r.s3 = camera_rngs[3 * stride + path];
+    return r;
+}
+
+SS_FN void store_camera_rng(GLOBAL_MEM uint* camera_rngs, int stride, int path, Rng r) {
+    camera_rngs[path] = r.s0;
+    camera_rngs[stride + path] = r.s1;
+    camera_rngs[2 * stride + path] = r.s2;
+    camera_rngs[3 * stride + path] = r.s3;
 }
 
 /* Asks the cache for what path `path` reads from the environment at this step: a map
@@ -63,25 +81,28 @@ SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderSc
  * work-group that another thread is stepping: whatever state it reads, every index stays inside its
  * buffer (the numbers are in [0, 1), a direction's texel is clamped), and only a prefetch uses it. */
 SS_FN SS_INLINE_ALWAYS void prefetch_step_environment(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
-                                     GLOBAL_MEM const RayMarch* ray_marches, int path, int paths, bool texel) {
+                                     GLOBAL_MEM const uint* camera_rngs, int stride, GLOBAL_MEM const RayMarch* ray_marches, int path,
+                                     int paths, bool texel, bool first) {
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
-    if (path >= paths || !states[path].active) return;
+    if (path >= paths || (!first && !states[path].active)) return;
     EnvironmentBuffers b = scene->env_buffers;
     if (ray_marches[path].status != MARCH_HIT) {
-        if (!texel || states[path].seen_directly) return;
+        /* a camera ray (first step) sees the backdrop through the filtered lookup: left out */
+        if (!texel || first || states[path].seen_directly) return;
         float3 d = make_float3(states[path].direction[0], states[path].direction[1], states[path].direction[2]);
         float a, c;
         __builtin_prefetch(&b.texels[environment_texel(&scene->env, d, &a, &c)]);
         return;
     }
     float2 u;
-    if (!peek_environment_sample(k, scene, states, path, &u)) return;
+    if (!peek_environment_sample(k, scene, first ? 0 : states[path].depth, first ? load_camera_rng(camera_rngs, stride, path) : states[path].rng, &u))
+        return;
     if (texel)
         __builtin_prefetch(&b.texels[environment_sample_texel(&scene->env, b.alias, u.x, u.y)]);
     else
         __builtin_prefetch(&b.alias[environment_sample_column_entry(&scene->env, b.alias, u.x, u.y)]);
 #else
-    (void)k, (void)scene, (void)states, (void)ray_marches, (void)path, (void)paths, (void)texel;
+    (void)k, (void)scene, (void)states, (void)camera_rngs, (void)stride, (void)ray_marches, (void)path, (void)paths, (void)texel, (void)first;
 #endif
 }
 
@@ -155,42 +176,52 @@ SS_FN void path_tracer_leave(MarchSettings s, int path, const PathState* p, GLOB
     states[path] = *p;
 }
 
-/* The camera step (render_pt_camera, iteration 0): path `path` (WavefrontFilm: sample
- * first_sample + slot of pixel path - slot * pixels) begins, its camera ray left for the packets.
- * A kernel of its own: inside the step kernel, whose work-group function holds the scatter's
- * registers and stack, the same work took a third longer (docs/render.md, stop 29). */
-SS_FN void path_tracer_camera_step(const RenderKernelSettings* k, const Camera* camera, int path, GLOBAL_MEM PathState* states, int stride,
-                                   GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays, WavefrontFilm film,
-                                   GLOBAL_MEM volatile uint* unfinished) {
+/* The camera step (render_pt_camera, iteration 0) of a camera the packets do not begin
+ * (march_camera_rays, kernels/march_packets.cl, begins a pinhole's rays on the vector lanes): path
+ * `path` (WavefrontFilm: sample first_sample + slot of pixel path - slot * pixels) draws its camera
+ * ray, left for the packets, and the generator its first step begins the path with. */
+SS_FN void path_tracer_camera_step(const RenderKernelSettings* k, const Camera* camera, int path, int stride, GLOBAL_MEM float* rays,
+                                   GLOBAL_MEM uint* camera_rngs) {
     const int pixels = camera->width * camera->height;
     const int slot = path / pixels, pixel = path - slot * pixels;
     Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + slot), k->seed_lo, k->seed_hi);
     float3 origin, direction;
     camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-    PathState p = path_begin(origin, direction, rng); /* its camera ray is marched before the next step */
-    if (film.slots > 1) film.path_rays[path] = film.path_lost_rays[path] = 0u; /* the path's counters, begun at 0 */
-    path_tracer_leave(render_march_settings(k), path, &p, states, stride, rays, shadow_rays, film, unfinished);
+    store_ray(rays, stride, path, origin, direction, render_march_settings(k).max_distance);
+    store_camera_rng(camera_rngs, stride, path, rng);
 }
 
-/* A later step of path `path` (render_pt_step, iterations 1, 2, ...): resolves its pending shadow
- * ray with its march, then takes the march of its ray and scatters (path_scatter). */
-SS_FN void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int path, GLOBAL_MEM PathState* states,
-                            int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays, GLOBAL_MEM const RayMarch* ray_marches,
-                            GLOBAL_MEM const RayMarch* shadow_marches, WavefrontFilm film, GLOBAL_MEM volatile uint* unfinished) {
+/* A step of path `path` (render_pt_first_step at iteration 1, render_pt_step after it): the first
+ * begins the path with its camera ray (in the ray buffer) and the generator that ray left; a later
+ * one resolves its pending shadow ray with its march. Then it takes the march of its ray and
+ * scatters (path_scatter). */
+SS_FN SS_INLINE_ALWAYS void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int path,
+                                             GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays,
+                                             GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches,
+                                             GLOBAL_MEM const uint* camera_rngs, WavefrontFilm film, GLOBAL_MEM volatile uint* unfinished,
+                                             bool first) {
     const int paths = film.slots * camera->width * camera->height;
     /* the path's counters: the pixel's own with one sample in flight (the path is the pixel), else
      * the path's */
     GLOBAL_MEM uint* ray_count = film.slots > 1 ? &film.path_rays[path] : &film.ray_counts[path];
     GLOBAL_MEM uint* lost_ray_count = film.slots > 1 ? &film.path_lost_rays[path] : &film.lost_ray_counts[path];
     prefetch_step_state(states, path + 4 * WAVEFRONT_PREFETCH_AHEAD, paths);
-    prefetch_step_environment(k, scene, states, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, paths, false);
-    prefetch_step_environment(k, scene, states, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, paths, true);
-    if (!states[path].active && !states[path].shadow.pending) return; /* finished at an earlier step */
+    prefetch_step_environment(k, scene, states, camera_rngs, stride, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, paths, false, first);
+    prefetch_step_environment(k, scene, states, camera_rngs, stride, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, paths, true, first);
+    if (!first && !states[path].active && !states[path].shadow.pending) return; /* finished at an earlier step */
     MarchSettings s = render_march_settings(k);
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
-    PathState p = states[path];
+    PathState p;
+    if (first) {
+        float3 origin = make_float3(rays[path], rays[stride + path], rays[2 * stride + path]);
+        float3 direction = make_float3(rays[3 * stride + path], rays[4 * stride + path], rays[5 * stride + path]);
+        p = path_begin(origin, direction, load_camera_rng(camera_rngs, stride, path));
+        if (film.slots > 1) *ray_count = *lost_ray_count = 0u; /* the path's counters, begun at 0 */
+    } else {
+        p = states[path];
+    }
     if (p.shadow.pending) {
         MarchResult r = load_march(shadow_marches, path);
         count_march(r, &counters);

@@ -3,7 +3,9 @@
  *  - rays: seven arrays of `stride` floats (origin x, y, z, direction x, y, z, max distance), so that
  *    a packet kernel loads eight pixels' component at once; a max distance < 0 marks no ray;
  *  - marches: what each ray's march found (sdf/march_lanes.h's MarchLanes, one lane); nothing is
- *    written for no ray. */
+ *    written for no ray;
+ *  - camera_rngs: four arrays of `stride` words, a path's generator (kernels/rng.h, Rng s0 .. s3)
+ *    after its camera ray drew its four numbers, left by the camera rays for the first step. */
 #ifndef KERNELS_RAY_MARCH_H
 #define KERNELS_RAY_MARCH_H
 

@@ -35,31 +35,43 @@ SS_FN uint philox_mul_hi(uint a, uint b) {
 #endif
 }
 
-SS_FN Philox4 philox4x32_round(Philox4 c, uint k0, uint k1) {
-    uint hi0 = philox_mul_hi(PHILOX_M0, c.v[0]), lo0 = PHILOX_M0 * c.v[0];
-    uint hi1 = philox_mul_hi(PHILOX_M1, c.v[2]), lo1 = PHILOX_M1 * c.v[2];
-    Philox4 out;
-    out.v[0] = hi1 ^ c.v[1] ^ k0;
-    out.v[1] = lo1;
-    out.v[2] = hi0 ^ c.v[3] ^ k1;
-    out.v[3] = lo0;
-    return out;
-}
+/* One round on the words v0 .. v3 under the key (k0, k1), in place: TYPE uint, or SDF_UINT for
+ * the lanes of a packet kernel (below), MUL_HI the high word of a 32x32-bit product of that type.
+ * One definition for both forms, so a lane computes what the one-lane generator computes. */
+#define PHILOX4X32_ROUND(TYPE, MUL_HI, v0, v1, v2, v3, k0, k1) \
+    {                                                          \
+        TYPE hi0 = MUL_HI(PHILOX_M0, v0), lo0 = PHILOX_M0 * v0; \
+        TYPE hi1 = MUL_HI(PHILOX_M1, v2), lo1 = PHILOX_M1 * v2; \
+        v0 = hi1 ^ v1 ^ (k0);                                  \
+        v1 = lo1;                                              \
+        v2 = hi0 ^ v3 ^ (k1);                                  \
+        v3 = lo0;                                              \
+    }
 
 /* Ten rounds, the key bumped by the Weyl constants between rounds. Unrolled in kernels: the
  * camera step of a far sphere (every camera ray a miss) ran 1.08x faster (median of eight renders). */
-SS_FN Philox4 philox4x32_10(Philox4 counter, uint k0, uint k1) {
-#ifdef __OPENCL_C_VERSION__
-#pragma unroll
-#endif
-    for (int round = 0; round < 10; ++round) {
-        if (round > 0) {
-            k0 += PHILOX_W0;
-            k1 += PHILOX_W1;
-        }
-        counter = philox4x32_round(counter, k0, k1);
+#define PHILOX4X32_10(TYPE, MUL_HI, v0, v1, v2, v3, key0, key1)     \
+    {                                                               \
+        uint k0_ = (key0), k1_ = (key1);                            \
+        SS_PRAGMA_UNROLL                                            \
+        for (int round_ = 0; round_ < 10; ++round_) {               \
+            if (round_ > 0) {                                       \
+                k0_ += PHILOX_W0;                                   \
+                k1_ += PHILOX_W1;                                   \
+            }                                                       \
+            PHILOX4X32_ROUND(TYPE, MUL_HI, v0, v1, v2, v3, k0_, k1_) \
+        }                                                           \
     }
-    return counter;
+
+SS_FN Philox4 philox4x32_10(Philox4 counter, uint k0, uint k1) {
+    uint v0 = counter.v[0], v1 = counter.v[1], v2 = counter.v[2], v3 = counter.v[3];
+    PHILOX4X32_10(uint, philox_mul_hi, v0, v1, v2, v3, k0, k1)
+    Philox4 out;
+    out.v[0] = v0;
+    out.v[1] = v1;
+    out.v[2] = v2;
+    out.v[3] = v3;
+    return out;
 }
 
 /* The top 24 bits fill a float's mantissa exactly: uniform in [0, 1), never 1. */
@@ -70,18 +82,25 @@ typedef struct Rng {
     uint s0, s1, s2, s3;
 } Rng;
 
-SS_FN uint rng_rotl(uint x, int k) { return (x << k) | (x >> (32 - k)); }
+/* One xoshiro128** step of the words s0 .. s3 (TYPE uint, or SDF_UINT lanes), in place; `result`
+ * gets the step's 32 bits. One definition for the generator and its lanes, as PHILOX4X32_ROUND. */
+#define XOSHIRO128SS_STEP(TYPE, s0, s1, s2, s3, result)                 \
+    {                                                                   \
+        TYPE x5_ = (s1) * 5u;                                           \
+        result = ((x5_ << 7) | (x5_ >> 25)) * 9u;                       \
+        TYPE t_ = (s1) << 9;                                            \
+        s2 ^= s0;                                                       \
+        s3 ^= s1;                                                       \
+        s1 ^= s2;                                                       \
+        s0 ^= s3;                                                       \
+        s2 ^= t_;                                                       \
+        s3 = (s3 << 11) | (s3 >> 21);                                   \
+    }
 
 /* One xoshiro128** step: the next 32 bits. */
 SS_FN uint rng_next_uint(Rng* r) {
-    uint result = rng_rotl(r->s1 * 5u, 7) * 9u;
-    uint t = r->s1 << 9;
-    r->s2 ^= r->s0;
-    r->s3 ^= r->s1;
-    r->s1 ^= r->s2;
-    r->s0 ^= r->s3;
-    r->s2 ^= t;
-    r->s3 = rng_rotl(r->s3, 11);
+    uint result;
+    XOSHIRO128SS_STEP(uint, r->s0, r->s1, r->s2, r->s3, result)
     return result;
 }
 
@@ -111,5 +130,34 @@ SS_FN float4 rng_next4(Rng* r) {
     float d = uint_to_unit_float(rng_next_uint(r));
     return make_float4(a, b, c, d);
 }
+
+#ifdef SDF_LANES
+/* The generators of eight paths at once, on the vector lanes of a packet kernel (the wavefront's
+ * camera rays, kernels/march_packets.cl): each lane the words of rng_make and rng_next_uint for its
+ * path, to the bit. */
+typedef struct RngLanes {
+    SDF_UINT s0, s1, s2, s3;
+} RngLanes;
+
+SS_FN SDF_UINT philox_mul_hi_lanes(uint a, SDF_UINT b) { return convert_uint8((convert_ulong8(b) * (ulong)a) >> 32); }
+
+SS_FN RngLanes rng_make_lanes(SDF_UINT pixel, SDF_UINT sample, uint seed_lo, uint seed_hi) {
+    SDF_UINT v0 = pixel, v1 = sample, v2 = (SDF_UINT)0u, v3 = (SDF_UINT)0u;
+    PHILOX4X32_10(SDF_UINT, philox_mul_hi_lanes, v0, v1, v2, v3, seed_lo, seed_hi)
+    RngLanes r;
+    r.s0 = select(v0, (SDF_UINT)1u, (v0 | v1 | v2 | v3) == 0u); /* rng_make's fixed point */
+    r.s1 = v1;
+    r.s2 = v2;
+    r.s3 = v3;
+    return r;
+}
+
+/* Each lane's next number in [0, 1), as uint_to_unit_float(rng_next_uint()). */
+SS_FN SDF_FLOAT rng_next_float_lanes(RngLanes* r) {
+    SDF_UINT x;
+    XOSHIRO128SS_STEP(SDF_UINT, r->s0, r->s1, r->s2, r->s3, x)
+    return convert_float8(x >> 8) * (1.0f / 16777216.0f);
+}
+#endif
 
 #endif

@@ -85,6 +85,7 @@ void OpenClRenderer::build_kernel() {
     program_.emplace(std::move(program));
     kernel_ = std::move(kernel);
     if (wavefront()) {
+        first_step_kernel_ = program_->kernel("render_pt_first_step");
         step_kernel_ = program_->kernel("render_pt_step");
         camera_kernel_ = program_->kernel("render_pt_camera");
         resolve_kernel_ = program_->kernel("render_pt_resolve");
@@ -95,6 +96,7 @@ void OpenClRenderer::build_kernel() {
         if (!packet_program_ || packets.text != packet_source_ || packet_options != packet_options_) {
             packet_program_.emplace(runtime_.build(packets, packet_options));
             march_rays_ = packet_program_->kernel("march_rays");
+            march_camera_rays_ = packet_program_->kernel("march_camera_rays");
             packet_source_ = std::move(packets.text);
             packet_options_ = std::move(packet_options);
         }
@@ -150,6 +152,7 @@ void OpenClRenderer::clear_film() {
         runtime_.write(shadow_rays_, no_rays.data(), no_rays.size() * sizeof(float));
         ray_marches_ = runtime_.buffer(n * sizeof(kernel::RayMarch), CL_MEM_READ_WRITE);
         shadow_marches_ = runtime_.buffer(n * sizeof(kernel::RayMarch), CL_MEM_READ_WRITE);
+        camera_rngs_ = runtime_.buffer(n * 4 * sizeof(cl_uint), CL_MEM_READ_WRITE);
         unfinished_ = runtime_.buffer(2 * sizeof(cl_uint), CL_MEM_READ_WRITE);
         path_radiance_ = runtime_.buffer(n * 4 * sizeof(float), CL_MEM_READ_WRITE);
         path_ray_counts_ = runtime_.buffer(n * sizeof(cl_uint), CL_MEM_READ_WRITE);
@@ -226,24 +229,54 @@ void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings
         kind.seconds += std::chrono::duration<double>(Clock::now() - start).count();
         kind.launches += 1;
     };
-    for (int iteration = 0;; ++iteration) {
-        const Clock::time_point step_start = Clock::now();
-        // the camera ray, max_depth scattering events, and the last shadow ray one step later
-        if (iteration > k.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
-        runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
-        const opencl::KernelHandle& step = iteration == 0 ? camera_kernel_ : step_kernel_;
+    // the step kernels' arguments (kernels/path_tracer.cl, WAVEFRONT_KERNEL_ARGUMENTS)
+    auto bind_step = [&](const opencl::KernelHandle& step) {
         cl_uint a = bind_render_arguments(step, k);
         opencl::set_kernel_arg(step, a++, stride_);
         for (const opencl::BufferHandle* b : {&states_, &path_rays_, &shadow_rays_, &ray_marches_, &shadow_marches_, &unfinished_})
             opencl::set_kernel_arg(step, a++, *b);
         opencl::set_kernel_arg(step, a++, slots);
-        for (const opencl::BufferHandle* b : {&path_radiance_, &path_ray_counts_, &path_lost_counts_})
+        for (const opencl::BufferHandle* b : {&path_radiance_, &path_ray_counts_, &path_lost_counts_, &camera_rngs_})
             opencl::set_kernel_arg(step, a++, *b);
+    };
+    // Iteration 0, the camera rays: a pinhole's are begun on the packets' lanes and marched in one
+    // launch (march_camera_rays); a thin lens's by the camera step, one path per work-item, then
+    // marched. Every path has one, so the host need not ask.
+    const Clock::time_point camera_start = Clock::now();
+    if (camera_.lens_radius > 0.0f) {
+        bind_step(camera_kernel_);
+        launch_range(camera_kernel_, paths, local_size_, size_t(path_count));
+        if (time_launches_) {
+            runtime_.finish();
+            count(launch_times_.camera_steps, camera_start);
+        }
+        const Clock::time_point march_start = Clock::now();
+        opencl::set_kernel_args(march_rays_, k, path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
+        launch_range(march_rays_, packets, packet_local, packet_total);
+        if (time_launches_) {
+            runtime_.finish();
+            count(launch_times_.camera_marches, march_start);
+        }
+    } else {
+        opencl::set_kernel_args(march_camera_rays_, k, camera_, path_count, stride_, path_rays_, camera_rngs_, ray_marches_);
+        launch_range(march_camera_rays_, packets, packet_local, size_t(granules));
+        if (time_launches_) {
+            runtime_.finish();
+            count(launch_times_.camera_marches, camera_start);
+        }
+    }
+    for (int iteration = 1;; ++iteration) {
+        const Clock::time_point step_start = Clock::now();
+        // max_depth scattering events, and the last shadow ray one step later
+        if (iteration > k.max_depth + 2) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
+        runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
+        const opencl::KernelHandle& step = iteration == 1 ? first_step_kernel_ : step_kernel_;
+        bind_step(step);
         launch_range(step, paths, local_size_, size_t(path_count));
         cl_uint unfinished[2] = {0, 0};
         runtime_.read(unfinished_, unfinished, sizeof(unfinished));  // blocking: the step is done
         const bool last = unfinished[0] == 0 && unfinished[1] == 0;
-        if (time_launches_) count(iteration == 0 ? launch_times_.camera_steps : last ? launch_times_.last_steps : launch_times_.scatter_steps, step_start);
+        if (time_launches_) count(last ? launch_times_.last_steps : launch_times_.scatter_steps, step_start);
         if (last) break;
         const Clock::time_point march_start = Clock::now();
         opencl::set_kernel_args(march_rays_, k, path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
@@ -255,7 +288,7 @@ void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings
         }
         if (time_launches_) {
             runtime_.finish();
-            count(iteration == 0 ? launch_times_.camera_marches : launch_times_.marches, march_start);
+            count(launch_times_.marches, march_start);
         }
     }
     if (slots > 1) {

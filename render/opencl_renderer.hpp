@@ -15,9 +15,9 @@ struct WavefrontLaunchTimes {
         double seconds = 0.0;
         int launches = 0;
     };
-    Kind camera_steps;    // iteration 0: the paths begun, their camera rays left in the buffers
-    Kind camera_marches;  // the camera rays' packets
-    Kind scatter_steps;   // a later step that leaves rays to march (surfaces scattered, light samples drawn)
+    Kind camera_steps;    // a thin lens's camera rays, one path per work-item, left in the buffers
+    Kind camera_marches;  // the camera rays' packets (a pinhole's rays begun in them)
+    Kind scatter_steps;   // a step that leaves rays to march (the paths begun, surfaces scattered, light samples drawn)
     Kind marches;         // the packets of the rays and shadow rays those steps leave
     Kind last_steps;      // the step that leaves nothing to march (the last shadow rays resolved, escapes looked up)
     Kind resolves;        // several samples in flight: their paths added to the film
@@ -72,8 +72,9 @@ private:
     void launch_range(const opencl::KernelHandle& kernel, PixelRange range, size_t local, size_t total) const;
     std::optional<opencl::Program> packet_program_;
     std::string packet_source_, packet_options_;  // what packet_program_ was built from
-    opencl::KernelHandle step_kernel_, camera_kernel_, resolve_kernel_, march_rays_;
+    opencl::KernelHandle first_step_kernel_, step_kernel_, camera_kernel_, resolve_kernel_, march_rays_, march_camera_rays_;
     opencl::BufferHandle states_, path_rays_, shadow_rays_, ray_marches_, shadow_marches_, unfinished_;
+    opencl::BufferHandle camera_rngs_;  // per path: the generator its camera ray left for its first step
     opencl::BufferHandle path_radiance_, path_ray_counts_, path_lost_counts_;  // per path, several samples in flight
     bool time_launches_ = false;
     WavefrontLaunchTimes launch_times_;

@@ -18,27 +18,32 @@
 /* Address spaces of buffer pointers; the host has one flat address space. */
 #define GLOBAL_MEM __global
 #define CONSTANT_MEM __constant
+/* a loop to unroll, inside a macro (kernels/rng.h) */
+#define SS_PRAGMA_UNROLL _Pragma("unroll")
 #else
 #define SS_FN inline
 #define SS_INLINE_ALWAYS
 #define GLOBAL_MEM
 #define CONSTANT_MEM
+#define SS_PRAGMA_UNROLL
 #endif
 
 /* The distance functions' component forms (sdf/, fX_xyz) compute in SDF_FLOAT: one float, or with
  * SDF_LANES = 8 (a packet kernel, kernels/march_packets.cl) a float8 of eight rays at once, so that
  * the march runs on the CPU's vector lanes whatever PoCL's work-item vectoriser makes of the code.
  * A condition on such values is an SDF_MASK (int 0 / non-0, or int8 0 / -1 per lane), used through
- * select() and SDF_ANY(); SDF_SUM() adds the lanes. Written once, these functions read the same for
- * both. */
+ * select() and SDF_ANY(); SDF_SUM() adds the lanes; SDF_UINT holds the lanes' 32-bit words (random
+ * numbers, kernels/rng.h). Written once, these functions read the same for both. */
 #ifndef SDF_LANES
 #define SDF_FLOAT float
 #define SDF_MASK int
+#define SDF_UINT uint
 #define SDF_ANY(mask) ((mask) != 0)
 #define SDF_SUM(x) (x)
 #elif SDF_LANES == 8
 #define SDF_FLOAT float8
 #define SDF_MASK int8
+#define SDF_UINT uint8
 #define SDF_ANY(mask) any(mask)
 #define SDF_SUM(x) ((((x).s0 + (x).s1) + ((x).s2 + (x).s3)) + (((x).s4 + (x).s5) + ((x).s6 + (x).s7)))
 #else

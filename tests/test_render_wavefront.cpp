@@ -3,9 +3,13 @@
 // the film in sample order afterwards (render_pt_resolve). Whatever the number in flight, and with
 // the image split into parts (one sample in flight there), the film must hold the bits of the
 // work-item kernel, which traces each pixel's samples one after the other in one work-item, and the
-// same ray counts. Checked once by hand: a resolve that adds the slots last to first fails the film
-// of every case with more than one sample in flight (6 of the 30 checks), and paths that all draw
-// the launch's first sample fail 17.
+// same ray counts. A pinhole's camera rays are begun on the packets' lanes (march_camera_rays), a
+// thin lens's by the camera step, one path per work-item: the scenes have both. Checked once by
+// hand: a resolve that adds the slots last to first fails the film of every case with more than one
+// sample in flight (6 of the 30 checks), and paths that all draw the launch's first sample fail 17;
+// lanes that draw their ray's numbers in the order y, x fail the film of all 10 pinhole cases, and
+// a thin-lens camera step that stores its generator before the ray's four numbers fails the 5 of
+// the thin lens.
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -57,10 +61,15 @@ TEST_CASE("Wavefront: any number of samples in flight gives the work-item kernel
         lab::render::RenderInput input;
     };
     Scene scenes[] = {{"test model under courtyard", render_input(std::nullopt, "envmaps/courtyard.exr", 20, lab::render::LightSampling::mis, 5)},
-                      {"Cornell box", lab::render::RenderInput{}}};
+                      {"Cornell box", lab::render::RenderInput{}},
+                      {"thin lens (depth of field)", lab::render::RenderInput{}}};
     scenes[1].input.scene = lab::scene::load_scene("scenes/cornell_box.json");
     scenes[1].input.settings.width = 24;
     scenes[1].input.settings.height = 18;
+    scenes[2].input.scene = lab::scene::load_scene("scenes/depth_of_field.json");
+    scenes[2].input.settings.width = 20;
+    scenes[2].input.settings.height = 14;
+    REQUIRE(scenes[2].input.scene.camera.aperture_radius > 0.0f);
     for (Scene& s : scenes) {
         const int pixels = s.input.settings.width * s.input.settings.height;
         const InFlightFilm reference = render_in_flight(runtime, s.input, false, 0, 7, 7, 0);
@@ -84,41 +93,53 @@ TEST_CASE("Wavefront: any number of samples in flight gives the work-item kernel
 }
 
 // `bench breakdown` times the wavefront's launches by kind (render::WavefrontLaunchTimes). Whatever
-// the scene, a launch of samples runs one camera step, one march of its camera rays and one last
-// step (the one that leaves nothing to march), every scatter step is followed by one march of what
-// it left, and several samples in flight end with one resolve; timing must not change a bit of the
-// film. Checked once by hand: a last step counted as a scatter step fails 2 of these checks, and a
-// resolve left uncounted fails 1.
+// the scene, a launch of samples runs one march of its camera rays (begun in it for a pinhole, after
+// a camera step for a thin lens) and one last step (the one that leaves nothing to march), every
+// scatter step is followed by one march of what it left, and several samples in flight end with one
+// resolve; timing must not change a bit of the film. Checked once by hand: a last step counted as a
+// scatter step fails 2 of these checks per camera, a resolve left uncounted 1, and a pinhole
+// rendered through the camera step 1.
 TEST_CASE("Wavefront: timed launches are counted by kind and keep the film's bits", "[render][wavefront][opencl]") {
     lab::opencl::Runtime runtime("");
     if (runtime.device().type != "cpu") {
         WARN("the wavefront runs on CPU devices only");
         return;
     }
-    lab::render::RenderInput input = render_input(std::nullopt, "envmaps/courtyard.exr", 16, lab::render::LightSampling::mis, 5);
-    const int spp = 7, per_launch = 3, batches = 3;  // launches of 3, 3 and 1 samples
-    const InFlightFilm untimed = render_in_flight(runtime, input, true, 0, spp, per_launch, 0);
+    lab::render::RenderInput thin_lens;
+    thin_lens.scene = lab::scene::load_scene("scenes/depth_of_field.json");
+    thin_lens.settings.width = 20;
+    thin_lens.settings.height = 14;
+    struct Camera {
+        const char* what;
+        lab::render::RenderInput input;
+        int camera_steps_per_launch;
+    } cameras[] = {{"pinhole (test model)", render_input(std::nullopt, "envmaps/courtyard.exr", 16, lab::render::LightSampling::mis, 5), 0},
+                   {"thin lens (depth of field)", thin_lens, 1}};
+    for (const Camera& c : cameras) {
+        const int spp = 7, per_launch = 3, batches = 3;  // launches of 3, 3 and 1 samples
+        const InFlightFilm untimed = render_in_flight(runtime, c.input, true, 0, spp, per_launch, 0);
 
-    lab::render::OpenClRenderer renderer(runtime, input);
-    REQUIRE(renderer.wavefront());
-    renderer.set_samples_per_launch(per_launch);
-    renderer.time_wavefront_launches(true);
-    renderer.add_samples(spp);
-    const lab::render::WavefrontLaunchTimes t = renderer.wavefront_launch_times();
-    INFO("camera steps " << t.camera_steps.launches << ", camera marches " << t.camera_marches.launches << ", scatter steps "
-                         << t.scatter_steps.launches << ", marches " << t.marches.launches << ", last steps " << t.last_steps.launches
-                         << ", resolves " << t.resolves.launches);
-    CHECK(t.camera_steps.launches == batches);
-    CHECK(t.camera_marches.launches == batches);
-    CHECK(t.last_steps.launches == batches);
-    CHECK(t.scatter_steps.launches >= batches);  // the test model scatters at least once per launch
-    CHECK(t.scatter_steps.launches == t.marches.launches);
-    CHECK(t.resolves.launches == batches - 1);  // the last launch holds one sample: nothing to resolve
-    CHECK(t.camera_steps.seconds > 0.0);
-    CHECK(t.scatter_steps.seconds > 0.0);
-    CHECK(same_film_bits(renderer.film().accumulation, untimed.film.accumulation));
+        lab::render::OpenClRenderer renderer(runtime, c.input);
+        REQUIRE(renderer.wavefront());
+        renderer.set_samples_per_launch(per_launch);
+        renderer.time_wavefront_launches(true);
+        renderer.add_samples(spp);
+        const lab::render::WavefrontLaunchTimes t = renderer.wavefront_launch_times();
+        INFO(c.what << ": camera steps " << t.camera_steps.launches << ", camera marches " << t.camera_marches.launches
+                    << ", scatter steps " << t.scatter_steps.launches << ", marches " << t.marches.launches << ", last steps "
+                    << t.last_steps.launches << ", resolves " << t.resolves.launches);
+        CHECK(t.camera_steps.launches == c.camera_steps_per_launch * batches);
+        CHECK(t.camera_marches.launches == batches);
+        CHECK(t.last_steps.launches == batches);
+        CHECK(t.scatter_steps.launches >= batches);  // both scenes scatter at least once per launch
+        CHECK(t.scatter_steps.launches == t.marches.launches);
+        CHECK(t.resolves.launches == batches - 1);  // the last launch holds one sample: nothing to resolve
+        CHECK(t.camera_marches.seconds > 0.0);
+        CHECK(t.scatter_steps.seconds > 0.0);
+        CHECK(same_film_bits(renderer.film().accumulation, untimed.film.accumulation));
 
-    renderer.time_wavefront_launches(true);  // starts again at 0
-    CHECK(renderer.wavefront_launch_times().camera_steps.launches == 0);
-    CHECK(renderer.wavefront_launch_times().total() == 0.0);
+        renderer.time_wavefront_launches(true);  // starts again at 0
+        CHECK(renderer.wavefront_launch_times().camera_marches.launches == 0);
+        CHECK(renderer.wavefront_launch_times().total() == 0.0);
+    }
 }
