@@ -215,8 +215,8 @@ SS_FN SS_INLINE_ALWAYS void path_tracer_step(const RenderKernelSettings* k, cons
     counters.lost_rays = 0u;
     PathState p;
     if (first) {
-        float3 origin = make_float3(rays[path], rays[stride + path], rays[2 * stride + path]);
-        float3 direction = make_float3(rays[3 * stride + path], rays[4 * stride + path], rays[5 * stride + path]);
+        float3 origin, direction;
+        load_ray(rays, stride, path, &origin, &direction);
         p = path_begin(origin, direction, load_camera_rng(camera_rngs, stride, path));
         if (film.slots > 1) *ray_count = *lost_ray_count = 0u; /* the path's counters, begun at 0 */
     } else {

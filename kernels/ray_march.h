@@ -33,6 +33,12 @@ SS_FN void store_ray(GLOBAL_MEM float* rays, int stride, int pixel, float3 origi
     rays[6 * stride + pixel] = max_distance;
 }
 
+/* The origin and direction store_ray left for pixel `pixel`. */
+SS_FN void load_ray(GLOBAL_MEM const float* rays, int stride, int pixel, float3* origin, float3* direction) {
+    *origin = make_float3(rays[pixel], rays[stride + pixel], rays[2 * stride + pixel]);
+    *direction = make_float3(rays[3 * stride + pixel], rays[4 * stride + pixel], rays[5 * stride + pixel]);
+}
+
 /* No ray for pixel `pixel`: its max distance alone, which is all that a packet kernel reads of a
  * ray before it knows that there is one. */
 SS_FN void store_no_ray(GLOBAL_MEM float* rays, int stride, int pixel) { rays[6 * stride + pixel] = NO_RAY; }

@@ -268,7 +268,7 @@ void OpenClRenderer::launch_wavefront_samples(const kernel::RenderKernelSettings
     for (int iteration = 1;; ++iteration) {
         const Clock::time_point step_start = Clock::now();
         // max_depth scattering events, and the last shadow ray one step later
-        if (iteration > k.max_depth + 2) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
+        if (iteration > k.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
         runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
         const opencl::KernelHandle& step = iteration == 1 ? first_step_kernel_ : step_kernel_;
         bind_step(step);
