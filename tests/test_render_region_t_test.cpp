@@ -49,16 +49,6 @@ std::vector<lab::film::ImageRgb> scaled(std::vector<lab::film::ImageRgb> images,
     return images;
 }
 
-// The largest of the smallest relative biases each region could show: about four standard errors
-// of the difference of its means, relative to the second image's mean.
-double detectable_bias(const lab::validation::RegionComparison& c) {
-    double detectable = 0.0;
-    for (const lab::validation::RegionTest& r : c.regions)
-        detectable = std::fmax(detectable, 4.0 * std::fabs(r.result.mean_a - r.result.mean_b) / std::fmax(std::fabs(r.result.t), 1e-9) /
-                                               std::fmax(r.result.mean_b, 1e-9));
-    return detectable;
-}
-
 }  // namespace
 
 TEST_CASE("Region t-test: light sampling and MIS agree on the Cornell box, and a 10 % bias is seen", "[render][welch][opencl]") {
@@ -70,7 +60,7 @@ TEST_CASE("Region t-test: light sampling and MIS agree on the Cornell box, and a
     renders_of_two(runtime, input, lab::render::LightSampling::lights, lab::render::LightSampling::mis, 8, 32, 100, &lights, &mis);
     lab::validation::RegionComparison same = lab::validation::compare_by_region(lights, mis, 2, 2, 0.01);
     const lab::validation::RegionTest* w = same.worst();
-    const double detectable = detectable_bias(same);
+    const double detectable = lab::validation::detectable_difference(same);
     std::printf("region t-test, Cornell box, lights vs mis: %d of %zu rejected at %.2g; worst p %.3g (t %.2f, dof %.1f); "
                 "detectable bias up to %.1f %%\n",
                 same.rejected, same.regions.size(), same.level, w->result.p_value, w->result.t, w->result.dof, 100.0 * detectable);
@@ -119,7 +109,7 @@ TEST_CASE("Region t-test: the environment's light samples give the image BSDF sa
     std::vector<lab::film::ImageRgb> lights, bsdf;
     renders_of_two(runtime, input, lab::render::LightSampling::lights, lab::render::LightSampling::bsdf, 12, 128, 500, &lights, &bsdf);
     lab::validation::RegionComparison same = lab::validation::compare_by_region(lights, bsdf, 2, 2, 0.01);
-    const double detectable = detectable_bias(same);
+    const double detectable = lab::validation::detectable_difference(same);
     std::printf("region t-test, sphere under courtyard, lights vs bsdf: %d of %zu rejected; worst p %.3g; detectable bias up to %.1f %%\n",
                 same.rejected, same.regions.size(), same.worst()->result.p_value, 100.0 * detectable);
     CHECK(same.rejected == 0);

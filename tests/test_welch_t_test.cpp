@@ -96,3 +96,69 @@ TEST_CASE("region t-test: regions tile the image, and a brighter region-channel 
     CHECK_THROWS(lab::validation::compare_by_region({a[0]}, b, 3, 2, 0.01));
     CHECK_THROWS(lab::validation::compare_by_region(a, b, 8, 2, 0.01));
 }
+
+TEST_CASE("Student's t critical values invert its tail, and a region's stated power holds on noise images", "[validation][welch]") {
+    for (double dof : {1.0, 2.0, 7.5, 30.0, 1e6})
+        for (double level : {0.5, 0.05, 3.7e-4}) CHECK(student_t_two_sided(lab::validation::student_t_critical(level, dof), dof) == Approx(level).epsilon(1e-8));
+    CHECK(lab::validation::student_t_critical(0.05, 1e7) == Approx(1.959963985).epsilon(1e-6));
+    CHECK(lab::validation::student_t_critical(0.5, 1.0) == Approx(1.0).epsilon(1e-9));  // Cauchy: P(|T| >= 1) = 1/2
+
+    // One region of one pixel: 16 renders each with mean 1 and noise 0.1 against the same with the
+    // pixel shifted by the detectable difference the red channel's comparison states (averaged over
+    // draws); the red channel's test must reject in about 9 of 10 trials (binomial noise on 400
+    // trials: 360 +- 6).
+    lab::validation::UniformRandom rng(17);
+    const int trials = 400, renders = 16;
+    auto images = [&](double mean) {
+        std::vector<lab::film::ImageRgb> out;
+        for (int k = 0; k < renders; ++k) {
+            lab::film::ImageRgb image(1, 1);
+            for (float& v : image.rgb) v = float(mean + 0.1 * normal(rng));
+            out.push_back(image);
+        }
+        return out;
+    };
+    int detections = 0;
+    double stated = 0.0;
+    for (int k = 0; k < trials; ++k) {
+        std::vector<lab::film::ImageRgb> reference = images(1.0);
+        lab::validation::RegionComparison same = lab::validation::compare_by_region(images(1.0), reference, 1, 1, 0.01);
+        // the power the test states from this draw's noise; its expectation is what a trial checks
+        stated += lab::validation::detectable_difference(same.regions[0], same.level) / trials;
+    }
+    for (int k = 0; k < trials; ++k) {
+        lab::validation::RegionComparison shifted = lab::validation::compare_by_region(images(1.0 + stated), images(1.0), 1, 1, 0.01);
+        detections += shifted.regions[0].result.p_value < shifted.level;
+    }
+    INFO("stated detectable difference " << stated << ", detected in " << detections << " of " << trials);
+    CHECK(detections >= int(0.85 * trials));
+    CHECK(detections <= int(0.95 * trials));
+}
+
+TEST_CASE("The paired t-test rejects equal means at its level and sees through the noise a pair shares", "[validation][welch]") {
+    lab::validation::UniformRandom rng(23);
+    const int trials = 2000, n = 8;
+    const double alpha = 0.05;
+    int false_rejections = 0, paired_detections = 0, welch_detections = 0;
+    for (int k = 0; k < trials; ++k) {
+        // each pair shares noise of deviation 1 (the same random numbers) and has its own of 0.1
+        std::vector<double> a(n), b(n), c(n);
+        for (int i = 0; i < n; ++i) {
+            double shared = normal(rng);
+            a[i] = 1.0 + shared + 0.1 * normal(rng);
+            b[i] = 1.0 + shared + 0.1 * normal(rng);
+            c[i] = 1.2 + shared + 0.1 * normal(rng);  // 0.2 higher: 4 standard errors of the mean paired difference
+        }
+        false_rejections += lab::validation::paired_t_test(a, b).p_value < alpha;
+        paired_detections += lab::validation::paired_t_test(c, b).p_value < alpha;
+        welch_detections += welch_t_test(c, b).p_value < alpha;  // lost in the shared noise
+    }
+    // Binomial(2000, 0.05): 100 +- 9.7; the paired test is exact for normal differences
+    INFO("false rejections " << false_rejections << ", detections: paired " << paired_detections << ", Welch " << welch_detections);
+    CHECK(std::abs(false_rejections - 100) <= 39);
+    CHECK(paired_detections > trials * 0.8);
+    CHECK(welch_detections < trials * 0.2);
+    CHECK(lab::validation::paired_t_test({1, 2, 3}, {0, 1, 2}).p_value == 0.0);  // every difference 1: no noise
+    CHECK(lab::validation::paired_t_test({1, 2, 3}, {1, 2, 3}).p_value == 1.0);
+    CHECK_THROWS(lab::validation::paired_t_test({1, 2, 3}, {1, 2}));
+}

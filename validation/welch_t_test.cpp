@@ -70,6 +70,21 @@ double student_t_two_sided(double t, double dof) {
     return regularized_beta(0.5 * dof, 0.5, dof / (dof + t * t));
 }
 
+double student_t_critical(double level, double dof) {
+    if (!(level > 0.0 && level < 1.0)) throw std::invalid_argument("student_t_critical: level must be in (0, 1)");
+    // the tail falls from 1 at t = 0: double an upper bound, then bisect
+    double lo = 0.0, hi = 1.0;
+    while (student_t_two_sided(hi, dof) > level) {
+        lo = hi;
+        hi *= 2.0;
+    }
+    while (hi - lo > 1e-10 * hi) {
+        double mid = 0.5 * (lo + hi);
+        (student_t_two_sided(mid, dof) > level ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
 WelchResult welch_t_test(const std::vector<double>& a, const std::vector<double>& b) {
     if (a.size() < 2 || b.size() < 2) throw std::invalid_argument("welch_t_test: needs at least two values in each set");
     WelchResult r;
@@ -77,14 +92,35 @@ WelchResult welch_t_test(const std::vector<double>& a, const std::vector<double>
     r.mean_b = mean_of(b);
     double va = variance_of(a, r.mean_a) / double(a.size()), vb = variance_of(b, r.mean_b) / double(b.size());
     double se2 = va + vb;
+    r.standard_error = std::sqrt(se2);
     if (se2 == 0.0) {
         r.p_value = r.mean_a == r.mean_b ? 1.0 : 0.0;
         r.t = r.mean_a == r.mean_b ? 0.0 : INFINITY;
         r.dof = double(a.size() + b.size() - 2);
         return r;
     }
-    r.t = (r.mean_a - r.mean_b) / std::sqrt(se2);
+    r.t = (r.mean_a - r.mean_b) / r.standard_error;
     r.dof = se2 * se2 / (va * va / double(a.size() - 1) + vb * vb / double(b.size() - 1));
+    r.p_value = student_t_two_sided(r.t, r.dof);
+    return r;
+}
+
+WelchResult paired_t_test(const std::vector<double>& a, const std::vector<double>& b) {
+    if (a.size() != b.size() || a.size() < 2) throw std::invalid_argument("paired_t_test: needs as many values in each set, at least two");
+    std::vector<double> d(a.size());
+    for (size_t i = 0; i < a.size(); ++i) d[i] = a[i] - b[i];
+    WelchResult r;
+    r.mean_a = mean_of(a);
+    r.mean_b = mean_of(b);
+    double mean_d = mean_of(d);
+    r.standard_error = std::sqrt(variance_of(d, mean_d) / double(d.size()));
+    r.dof = double(d.size() - 1);
+    if (r.standard_error == 0.0) {
+        r.p_value = mean_d == 0.0 ? 1.0 : 0.0;
+        r.t = mean_d == 0.0 ? 0.0 : INFINITY;
+        return r;
+    }
+    r.t = mean_d / r.standard_error;
     r.p_value = student_t_two_sided(r.t, r.dof);
     return r;
 }
