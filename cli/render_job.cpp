@@ -10,6 +10,7 @@
 #include "render/host_renderer.hpp"
 #include "render/interrupt.hpp"
 #include "render/opencl_renderer.hpp"
+#include "render/scene_environment.hpp"
 #include "scene/load_scene.hpp"
 #include "scene/test_model.hpp"
 
@@ -63,18 +64,7 @@ std::optional<ibl::Environment> load_job_environment(const RenderJobOptions& o, 
         *name = o.env;
         return ibl::load_environment(o.env, env_options);
     }
-    if (scene.environment) {  // the scene's own: its rotation and exposure, then the options' on top
-        const scene::EnvironmentSpec& spec = *scene.environment;
-        env_options.rotation_degrees += spec.rotation_degrees;
-        env_options.exposure_stops += spec.exposure;
-        env_options.origin = scene.file + ": environment";
-        if (!spec.file.empty()) {
-            *name = spec.file;
-            return ibl::load_environment(spec.file, env_options);
-        }
-        *name = "constant:" + std::to_string(spec.constant.x) + "," + std::to_string(spec.constant.y) + "," + std::to_string(spec.constant.z);
-        return ibl::Environment::constant(spec.constant, *name, env_options);
-    }
+    if (scene.environment) return render::load_scene_environment(scene, env_options, name);  // its rotation and exposure, the options' on top
     if (o.default_env.empty()) {
         *name = "none";
         return std::nullopt;

@@ -1,0 +1,19 @@
+#include "render/scene_environment.hpp"
+
+namespace lab::render {
+
+std::optional<ibl::Environment> load_scene_environment(const scene::Scene& scene, ibl::EnvironmentOptions options, std::string* name) {
+    if (!scene.environment) return std::nullopt;
+    const scene::EnvironmentSpec& spec = *scene.environment;
+    options.rotation_degrees += spec.rotation_degrees;
+    options.exposure_stops += spec.exposure;
+    options.origin = scene.file + ": environment";
+    std::string source = spec.file.empty() ? "constant:" + std::to_string(spec.constant.x) + "," + std::to_string(spec.constant.y) + "," +
+                                                 std::to_string(spec.constant.z)
+                                           : spec.file;
+    if (name) *name = source;
+    if (!spec.file.empty()) return ibl::load_environment(spec.file, options);
+    return ibl::Environment::constant(spec.constant, source, options);
+}
+
+}  // namespace lab::render
