@@ -24,8 +24,7 @@ lab::render::RenderInput bdpt_input(const Case& c, lab::render::Integrator integ
 }  // namespace
 
 TEST_CASE("Closed forms: BDPT on the host gives the exact pixel values", "[render][closed-form][bdpt][host]") {
-    std::vector<Case> all = cases();
-    for (const Case& c : {all[0], all[1]}) {
+    for (const Case& c : cases()) {
         lab::render::HostRenderer renderer(bdpt_input(c, lab::render::Integrator::bdpt, 12));
         check_case(c, LightSelection::power, renderer, 512);
     }
@@ -33,6 +32,9 @@ TEST_CASE("Closed forms: BDPT on the host gives the exact pixel values", "[rende
 
 // The light tracer's estimate is far noisier per path (every path splats wherever it lands): it
 // needs 16 times BDPT's paths for the same standard error, which the compiled kernel gives faster.
+// The first two cases: under an environment it has no strategy for a camera ray that escapes, and
+// in the black sphere's scene, whose camera sees a small part of the wall, its standard error at
+// this budget is 0.9 % (it would need 13 times the paths).
 TEST_CASE("Closed forms: the light tracer on the OpenCL device gives the exact pixel values", "[render][closed-form][bdpt][opencl]") {
     lab::opencl::Runtime runtime("");
     std::vector<Case> all = cases();
