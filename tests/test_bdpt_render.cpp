@@ -1,7 +1,7 @@
 // BDPT and the light tracer as renderers: the t = 1 connection's edge cases (splats at the film's
-// border, light vertices behind the camera, points outside a thin lens's view), the same seed giving
-// the same image, and BDPT against the path tracer on the Cornell box by Welch's t-test per region
-// (Jung et al., JCGT 2020), which needs no converged reference.
+// border, light vertices behind the camera, points outside a thin lens's view) and the same seed
+// giving the same image. Their agreement with the path tracer on every bundled scene is
+// tests/test_integrator_agreement.cpp.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -15,7 +15,6 @@
 #include "render/host_renderer.hpp"
 #include "scene/load_scene.hpp"
 #include "tests/render_inputs.hpp"
-#include "validation/region_t_test.hpp"
 #include "validation/uniform_random.hpp"
 
 namespace {
@@ -112,43 +111,4 @@ TEST_CASE("BDPT: the same seed gives the same image", "[render][bdpt][seed]") {
     REQUIRE(images[0].size() == images[1].size());
     CHECK(std::memcmp(images[0].data(), images[1].data(), images[0].size() * sizeof(float)) == 0);
     CHECK(std::memcmp(images[0].data(), images[2].data(), images[0].size() * sizeof(float)) != 0);  // a seed changes it
-}
-
-// Per region and channel of the image, the mean over its pixels of each of N independent batches
-// (sample ranges) is one observation; Welch's t-test (validation/region_t_test.hpp) compares BDPT's N
-// observations with the path tracer's at a family-wise level of 1 % (Sidak over 9 regions x 3
-// channels). The two estimate the same expectation, so a region that differs by more than its noise
-// allows fails.
-TEST_CASE("BDPT and the path tracer agree on the Cornell box, region by region (Welch's t-test)", "[render][bdpt][welch][sweep]") {
-    using lab::render::Integrator;
-    const int size = 24, batches = 8, spp = 8;
-    std::vector<lab::film::ImageRgb> batch_images[2];  // [integrator][batch]
-    int which = 0;
-    for (Integrator integrator : {Integrator::bdpt, Integrator::pt}) {
-        lab::render::RenderInput input = scene_input("scenes/cornell_box.json", integrator, size, 5);
-        input.settings.max_depth = 6;     // the path tracer's scattering events = bdpt's 8 vertices - 2
-        lab::render::HostRenderer renderer(input);
-        renderer.set_samples_per_launch(spp);
-        lab::film::ImageRgb previous(size, size);
-        for (int b = 0; b < batches; ++b) {
-            renderer.add_samples(spp);
-            lab::film::ImageRgb cumulative = renderer.image(), batch(size, size);
-            // the batch's own mean: the cumulative means differenced
-            for (size_t i = 0; i < batch.rgb.size(); ++i)
-                batch.rgb[i] = float(double(cumulative.rgb[i]) * (b + 1) - double(previous.rgb[i]) * b);
-            batch_images[which].push_back(batch);
-            previous = cumulative;
-        }
-        ++which;
-    }
-    lab::validation::RegionComparison c = lab::validation::compare_by_region(batch_images[0], batch_images[1], 3, 3, 0.01);
-    for (const lab::validation::RegionTest& r : c.regions) {
-        double se = std::fabs(r.result.t) > 0.0 ? std::fabs(r.result.mean_a - r.result.mean_b) / std::fabs(r.result.t) : 0.0;
-        INFO("region (" << r.x0 << ", " << r.y0 << ") channel " << r.channel << ": bdpt " << r.result.mean_a << ", pt " << r.result.mean_b
-                        << ", t = " << r.result.t << ", dof " << r.result.dof << ", p " << r.result.p_value << " (level " << c.level << ")");
-        CHECK(r.result.p_value >= c.level);
-        // the test can see a 30 % difference in any region (8 spp batches on 24 x 24 pixels; the path
-        // tracer's caustics through the glass make its dark regions noisy): about four standard errors
-        CHECK(4.0 * se < 0.3 * std::fabs(r.result.mean_b));
-    }
 }
