@@ -126,7 +126,6 @@ void run_bench_render(const BenchRenderCommand& c) {
     }
     for (const std::string& file : c.integrators) {
         RenderJob job = scene_job(c.job, file);
-        job.input.settings.max_depth = job.input.settings.max_vertices - 2;  // pt over bdpt's path space
         std::string name = fs::path(file).stem().string();
         std::vector<EqualTimeRun> runs;
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::pt}) {

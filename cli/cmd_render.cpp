@@ -23,7 +23,6 @@ void register_render(CLI::App& app) {
                     "Integrator: pt (path tracing with next-event estimation and MIS), bdpt (bidirectional, every strategy) or lt "
                     "(light tracing)")
         ->capture_default_str();
-    cmd->add_option("--max-vertices", job->max_vertices, "bdpt, lt: vertices per path, s + t, in [2, 16]")->capture_default_str();
     cmd->add_option("--mis", job->mis_heuristic, "bdpt, lt: MIS heuristic, balance or power")->capture_default_str();
     cmd->add_option("--light-sampling", job->light_sampling,
                     "How paths find lights: bsdf (BSDF sampling alone), lights (next-event estimation alone) or mis")

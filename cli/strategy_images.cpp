@@ -30,7 +30,7 @@ void write_strategy_images(const RenderJob& job, const std::string& device, int 
     std::error_code error;
     fs::create_directories(dir, error);
     if (error || !fs::is_directory(dir)) throw InputError("--strategies", dir, "cannot create the folder");
-    const int n = settings.max_vertices, w = settings.width, h = settings.height;
+    const int n = render::bdpt_max_vertices(settings), w = settings.width, h = settings.height;
     // rows: path lengths 2 .. n vertices; columns: s = 0 .. n - 1, twice (unweighted, weighted)
     film::ImageRgb sheet(2 * n * w, (n - 1) * h);
     std::optional<opencl::Runtime> runtime;

@@ -73,6 +73,7 @@ struct Fixture {
                                   env.texels().data(), env.alias().data());
         k.light_count = 3;
         k.scene_radius = 5.0f;
+        k.max_distance = 100.0f;
         lab::scene::Camera c;
         c.type = lab::scene::CameraType::pinhole;
         c.position = float3(0.2f, 1.0f, 5.0f);
