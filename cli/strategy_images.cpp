@@ -75,10 +75,7 @@ void write_strategy_images(const RenderJob& job, const std::string& device, int 
                 renderer->set_samples_per_launch(spp);
                 renderer->add_samples(spp);
                 film::ImageRgb image = renderer->image();
-                film::ImageMetadata metadata = job_metadata(one, *renderer, renderer->statistics());
-                metadata.set("strategy_s", s);
-                metadata.set("strategy_t", t);
-                metadata.set("mis_weighted", unweighted ? 0 : 1);
+                film::ImageMetadata metadata = job_metadata(one, *renderer, renderer->statistics());  // with the strategy
                 std::string name = "s" + std::to_string(s) + "_t" + std::to_string(t) + (unweighted ? "_unweighted" : "_weighted") + ".exr";
                 film::write_exr((fs::path(dir) / name).string(), image, metadata);
                 place(&sheet, image, (unweighted ? 0 : n * w) + s * w, (length - 2) * h);
