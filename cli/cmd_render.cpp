@@ -36,6 +36,7 @@ void register_render(CLI::App& app) {
     cmd->callback([job, run, strategies] {
         if (!strategies->empty() && render::parse_integrator(job->integrator) == render::Integrator::pt)
             throw InputError("--strategies", "", "needs --integrator bdpt or lt (the path tracer has no (s, t) strategies)");
+        if (!strategies->empty()) check_strategy_folder(*strategies);
         run_render_job(*job, *run);
         if (!strategies->empty()) write_strategy_images(prepare_render_job(*job), job->device, run->spp, *strategies, run->quiet);
     });

@@ -1,6 +1,7 @@
-/* The settings every integrator kernel takes (kernels/path_tracer.cl, and the host build of the same
- * integrators, render/host_path_tracer): plain 4-byte scalars only, so the struct has one layout on
- * both sides and travels as a kernel argument by value. */
+/* The settings every integrator kernel takes (kernels/path_tracer.cl, kernels/bdpt.cl,
+ * kernels/march_packets.cl, and the host build of the same integrators, render/host_renderer.cpp):
+ * plain 4-byte scalars only, so the struct has one layout on both sides and travels as a kernel
+ * argument by value. */
 #ifndef KERNELS_RENDER_SETTINGS_H
 #define KERNELS_RENDER_SETTINGS_H
 #include "single_source/vocabulary.h"

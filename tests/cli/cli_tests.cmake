@@ -286,6 +286,16 @@ cli_bad_input(NAME render.unknown_mis ABSENT ${PNG} EXPECT "${E}--mis: unknown v
               ARGS ${RENDER} --integrator bdpt --mis max)
 cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt or lt"
               ARGS ${RENDER} --strategies ${CLI_SCRATCH}/strategies_pt)
+# the --strategies folder is checked before the render (nothing is written), and a folder the check
+# made is removed when another input error stops the command
+set(RENDER_BDPT render scenes/cornell_box.json --integrator bdpt --size 8x8 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.strategies_folder_is_a_file ABSENT ${PNG} EXPECT "${E}README\\.md: --strategies: is a file, not a folder$"
+              ARGS ${RENDER_BDPT} --strategies README.md)
+cli_bad_input(NAME render.strategies_folder_under_a_file ABSENT ${PNG}
+              EXPECT "${E}README\\.md/strategies: --strategies: cannot create the folder \\(.+\\)$"
+              ARGS ${RENDER_BDPT} --strategies README.md/strategies)
+cli_bad_input(NAME render.strategies_folder_left_out ABSENT ${CLI_SCRATCH}/strategies_unmade EXPECT "${E}--spp: must be in"
+              ARGS render scenes/cornell_box.json --integrator bdpt --size 8x8 --spp 0 -o ${PNG} --strategies ${CLI_SCRATCH}/strategies_unmade/sub)
 cli_bad_input(NAME render.unknown_light_sampling ABSENT ${PNG} EXPECT "${E}--light-sampling: unknown value \"all\" "
               ARGS ${RENDER} --light-sampling all)
 cli_bad_input(NAME render.unknown_light_selection ABSENT ${PNG} EXPECT "${E}--light-selection: unknown value \"random\" "

@@ -1,8 +1,8 @@
 # cmake -P driver: `render --integrator bdpt --strategies DIR` writes one weighted and one
-# unweighted EXR per strategy (s, t) of paths up to --max-vertices, and a contact sheet. EXE, SOURCE, WORK.
+# unweighted EXR per strategy (s, t) of paths up to --max-depth + 2 vertices, and a contact sheet. EXE, SOURCE, WORK.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-execute_process(COMMAND ${EXE} render ${SOURCE}/scenes/cornell_box.json --integrator bdpt --max-vertices 4 --size 8x8 --spp 1 --quiet
+execute_process(COMMAND ${EXE} render ${SOURCE}/scenes/cornell_box.json --integrator bdpt --max-depth 2 --size 8x8 --spp 1 --quiet
                         --strategies ${WORK}/strategies -o ${WORK}/render.exr
                 RESULT_VARIABLE status ERROR_VARIABLE err OUTPUT_QUIET)
 set(problems)
