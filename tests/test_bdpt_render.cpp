@@ -16,6 +16,7 @@
 #include "scene/load_scene.hpp"
 #include "tests/render_inputs.hpp"
 #include "validation/region_t_test.hpp"
+#include "film/image_stats.hpp"
 #include "validation/uniform_random.hpp"
 
 namespace {
@@ -151,4 +152,26 @@ TEST_CASE("BDPT and the path tracer agree on the Cornell box, region by region (
         // tracer's caustics through the glass make its dark regions noisy): about four standard errors
         CHECK(4.0 * se < 0.3 * std::fabs(r.result.mean_b));
     }
+}
+
+// As the path tracer's (tests/test_preview_nonfinite.cpp): a sky of radiance 3e38, the largest a
+// loader accepts, overflows BDPT's light samples and the environment's light subpaths to infinity
+// on the sphere, while the sky seen through the lens ((0, 2), weight 1) is the sky itself. Every
+// sample with a non-finite contribution or weight is counted, and at one sample per pixel exactly
+// those pixels have no finite sample and show as NaN, instead of passing for black or dark.
+TEST_CASE("BDPT: non-finite contributions are counted and left out of the image", "[render][bdpt][nonfinite]") {
+    const char* sphere = R"({
+      "camera": {"type": "pinhole", "position": [0, 0, 3.2], "look_at": [0, 0, 0], "fov_degrees": 40},
+      "materials": {"sample": {"albedo": [1, 1, 1], "lobes": {"diffuse": 1}}},
+      "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}}]
+    })";
+    lab::render::RenderInput input = render_input(std::nullopt, "constant:3e38,3e38,3e38", 16, lab::render::LightSampling::mis, 0, sphere);
+    input.settings.integrator = lab::render::Integrator::bdpt;
+    input.settings.max_depth = 4;
+    lab::render::HostRenderer renderer(input, 1);
+    RenderResult r = render_samples(renderer, 1);
+    INFO(r.stats.nonfinite_samples << " non-finite samples of " << r.stats.paths);
+    CHECK(r.stats.nonfinite_samples > 0);
+    CHECK(r.stats.nonfinite_samples < r.stats.paths);
+    CHECK(lab::film::image_stats(r.image).non_finite_pixels == r.stats.nonfinite_samples);
 }
