@@ -98,17 +98,20 @@ void run_bench_render(const BenchRenderCommand& c) {
         render::MarchWork work = render::count_march_work(runtime, job.input, 1);
         render::HostRenderer host(job.input);
         render::RenderStatistics h = measure(host, c.throughput_seconds);
-        double bidirectional[2];
+        double bidirectional[2] = {0.0, 0.0};
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt}) {
+            if (integrator == render::Integrator::lt && job.input.environment) continue;  // lt refuses an environment
             render::RenderInput input = job.input;
             input.settings.integrator = integrator;
             std::unique_ptr<render::Renderer> r = on_device(input);
             bidirectional[integrator == render::Integrator::lt] = measure(*r, c.throughput_seconds).paths_per_second();
         }
-        std::printf("%-28s %12.3g %12.3g %10.2f %10.1f %10.2f %14.3g %11.2fx %12.3g %12.3g\n", fs::path(file).filename().string().c_str(),
+        char lt[32] = "-";  // not under an environment
+        if (bidirectional[1] > 0.0) std::snprintf(lt, sizeof(lt), "%.3g", bidirectional[1]);
+        std::printf("%-28s %12.3g %12.3g %10.2f %10.1f %10.2f %14.3g %11.2fx %12.3g %12s\n", fs::path(file).filename().string().c_str(),
                     d.paths_per_second(), d.rays_per_second(), double(d.rays) / double(d.paths), work.steps_per_ray,
                     work.evaluations_per_step, h.paths_per_second(),
-                    d.paths_per_second() / h.paths_per_second(), bidirectional[0], bidirectional[1]);
+                    d.paths_per_second() / h.paths_per_second(), bidirectional[0], lt);
         std::fflush(stdout);
     }
 
@@ -126,10 +129,10 @@ void run_bench_render(const BenchRenderCommand& c) {
     }
     for (const std::string& file : c.integrators) {
         RenderJob job = scene_job(c.job, file);
-        job.input.settings.max_depth = job.input.settings.max_vertices - 2;  // pt over bdpt's path space
         std::string name = fs::path(file).stem().string();
         std::vector<EqualTimeRun> runs;
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::pt}) {
+            if (integrator == render::Integrator::lt && job.input.environment) continue;  // lt refuses an environment
             EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
             run.input.settings.integrator = integrator;
             runs.push_back(std::move(run));

@@ -23,7 +23,6 @@ void register_render(CLI::App& app) {
                     "Integrator: pt (path tracing with next-event estimation and MIS), bdpt (bidirectional, every strategy) or lt "
                     "(light tracing)")
         ->capture_default_str();
-    cmd->add_option("--max-vertices", job->max_vertices, "bdpt, lt: vertices per path, s + t, in [2, 16]")->capture_default_str();
     cmd->add_option("--mis", job->mis_heuristic, "bdpt, lt: MIS heuristic, balance or power")->capture_default_str();
     cmd->add_option("--light-sampling", job->light_sampling,
                     "How paths find lights: bsdf (BSDF sampling alone), lights (next-event estimation alone) or mis")
@@ -37,6 +36,7 @@ void register_render(CLI::App& app) {
     cmd->callback([job, run, strategies] {
         if (!strategies->empty() && render::parse_integrator(job->integrator) == render::Integrator::pt)
             throw InputError("--strategies", "", "needs --integrator bdpt or lt (the path tracer has no (s, t) strategies)");
+        if (!strategies->empty()) check_strategy_folder(*strategies);
         run_render_job(*job, *run);
         if (!strategies->empty()) write_strategy_images(prepare_render_job(*job), job->device, run->spp, *strategies, run->quiet);
     });

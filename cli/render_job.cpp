@@ -27,7 +27,7 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
     cmd.add_option("--object-bounds", o->object_bounds,
                    "Box tests that skip objects far from the point being marched: on or off (same image; off to compare speed)")
         ->capture_default_str();
-    cmd.add_option("--max-depth", o->max_depth, "Scattering events per path")->capture_default_str();
+    cmd.add_option("--max-depth", o->max_depth, "Scattering events per path, for every integrator (bdpt and lt: paths of at most max-depth + 2 vertices, at most 62 events)")->capture_default_str();
     cmd.add_option("--max-steps", o->max_steps, "Sphere-tracing steps per ray before it counts as lost")->capture_default_str();
     cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain; a scene that is not a distance bound uses 1)")->capture_default_str();
     cmd.add_option("--seed", o->seed, "Seed of the random numbers (same seed, same image)")->capture_default_str();
@@ -82,7 +82,6 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     settings.light_sampling = render::parse_light_sampling(o.light_sampling, o.light_sampling_option);
     settings.normals = render::parse_normal_method(o.normals);
     settings.max_depth = o.max_depth;
-    settings.max_vertices = o.max_vertices;
     settings.mis_heuristic = render::parse_mis_heuristic(o.mis_heuristic);
     settings.max_steps = o.max_steps;
     settings.over_relaxation = o.over_relaxation;

@@ -34,7 +34,6 @@ struct RenderJobOptions {
     std::string normals = "tetrahedral";
     std::string object_bounds = "on";
     int max_depth = 16;
-    int max_vertices = 8;                   // bdpt, lt
     std::string mis_heuristic = "balance";  // bdpt, lt
     int max_steps = 1024;
     float over_relaxation = render::RenderSettings{}.over_relaxation;

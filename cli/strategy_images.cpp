@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <optional>
 
+#include <unistd.h>
+
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "kernels/host.hpp"
@@ -21,16 +23,42 @@ void place(film::ImageRgb* sheet, const film::ImageRgb& tile, int x0, int y0) {
             for (int c = 0; c < 3; ++c) sheet->rgb[sheet->index(x0 + x, y0 + y) + c] = tile.rgb[tile.index(x, y) + c];
 }
 
+// Makes the folder `dir` and those above it where they do not exist; throws naming it unless it is then a folder.
+void make_folder(const std::string& dir) {
+    std::error_code error;
+    if (fs::exists(dir, error) && !fs::is_directory(dir, error)) throw InputError(dir, "--strategies", "is a file, not a folder");
+    fs::create_directories(dir, error);
+    if (error || !fs::is_directory(dir, error))
+        throw InputError(dir, "--strategies", "cannot create the folder" + (error ? " (" + error.message() + ")" : std::string()));
+}
+
 }  // namespace
+
+void check_strategy_folder(const std::string& dir) {
+    const fs::path folder(dir);
+    fs::path outermost_new;  // the outermost folder that create_directories makes here
+    for (fs::path p = folder; !p.empty(); p = p.parent_path()) {
+        std::error_code ignored;
+        if (fs::exists(p, ignored)) break;
+        outermost_new = p;
+        if (p == p.parent_path()) break;
+    }
+    make_folder(dir);
+    const fs::path probe = folder / (".dtoadq-write-check-" + std::to_string(::getpid()));
+    std::FILE* f = std::fopen(probe.string().c_str(), "wb");
+    const bool writable = f != nullptr && std::fclose(f) == 0;
+    std::error_code ignored;
+    fs::remove(probe, ignored);
+    if (!outermost_new.empty()) fs::remove_all(outermost_new, ignored);
+    if (!writable) throw InputError(dir, "--strategies", "cannot write into the folder");
+}
 
 void write_strategy_images(const RenderJob& job, const std::string& device, int spp, const std::string& dir, bool quiet) {
     const render::RenderSettings& settings = job.input.settings;
     if (settings.integrator == render::Integrator::pt)
         throw InputError("--strategies", "", "needs --integrator bdpt or lt (the path tracer has no (s, t) strategies)");
-    std::error_code error;
-    fs::create_directories(dir, error);
-    if (error || !fs::is_directory(dir)) throw InputError("--strategies", dir, "cannot create the folder");
-    const int n = settings.max_vertices, w = settings.width, h = settings.height;
+    make_folder(dir);  // again: the folder may have gone during the render
+    const int n = render::bdpt_max_vertices(settings), w = settings.width, h = settings.height;
     // rows: path lengths 2 .. n vertices; columns: s = 0 .. n - 1, twice (unweighted, weighted)
     film::ImageRgb sheet(2 * n * w, (n - 1) * h);
     std::optional<opencl::Runtime> runtime;
@@ -47,10 +75,7 @@ void write_strategy_images(const RenderJob& job, const std::string& device, int 
                 renderer->set_samples_per_launch(spp);
                 renderer->add_samples(spp);
                 film::ImageRgb image = renderer->image();
-                film::ImageMetadata metadata = job_metadata(one, *renderer, renderer->statistics());
-                metadata.set("strategy_s", s);
-                metadata.set("strategy_t", t);
-                metadata.set("mis_weighted", unweighted ? 0 : 1);
+                film::ImageMetadata metadata = job_metadata(one, *renderer, renderer->statistics());  // with the strategy
                 std::string name = "s" + std::to_string(s) + "_t" + std::to_string(t) + (unweighted ? "_unweighted" : "_weighted") + ".exr";
                 film::write_exr((fs::path(dir) / name).string(), image, metadata);
                 place(&sheet, image, (unweighted ? 0 : n * w) + s * w, (length - 2) * h);

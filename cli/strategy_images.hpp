@@ -13,6 +13,12 @@ namespace lab::cli {
 // weight: DIR/s<S>_t<T>_unweighted.exr and DIR/s<S>_t<T>_weighted.exr, and DIR/contact_sheet.png,
 // one row per path length (s + t vertices), one column per s, the unweighted sheet left of the
 // weighted one. Throws lab::InputError for the pt integrator or an unwritable DIR.
+// Throws lab::InputError naming `dir` and --strategies unless it is a folder, or can be made one,
+// that a file can be written into. The render command calls it before the render, which the
+// strategy images follow, so that a bad folder stops the command before any sample. Leaves
+// nothing behind: a folder it made for the check, and its probe file, are removed again.
+void check_strategy_folder(const std::string& dir);
+
 void write_strategy_images(const RenderJob& job, const std::string& device, int spp, const std::string& dir, bool quiet);
 
 }  // namespace lab::cli

@@ -116,8 +116,9 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
 }
 
 /* Adds settings.sample_count samples to one pixel (pixel k is (k % width, k / width)), its t = 1
- * connections to the splat buffer. A non-finite contribution is counted in accumulation.w (one per
- * sample that had any) and left out. */
+ * connections to the splat buffer. A sample with a non-finite contribution or MIS weight is counted
+ * in accumulation.w and its own pixel's sum left out, as the path tracer's are (the film divides
+ * by the finite samples; the statistics report the count). */
 SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel,
                       GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* splat, GLOBAL_MEM uint* ray_counts,
                       GLOBAL_MEM uint* lost_ray_counts) {
@@ -149,12 +150,13 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
                 float2 raster = make_float2(-1.0f, -1.0f);
                 float weight;
                 float3 c = bdpt_connect(k, s_march, camera, scene, light, cam, s, t, &rng, &raster, &weight, &counters);
-                if (!(max_component(c) > 0.0f) || !(k->unweighted || weight > 0.0f)) continue;
                 if (!k->unweighted) c = c * weight;
+                /* a NaN or infinite contribution or weight is counted before anything can drop it */
                 if (!finite3(c)) {
                     finite = false;
                     continue;
                 }
+                if (!(max_component(c) > 0.0f)) continue;
                 if (t == 1) film_splat(splat, camera->width, camera->height, raster.x, raster.y, c);
                 else l += c;
             }

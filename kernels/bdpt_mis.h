@@ -13,7 +13,15 @@
 
 #include "kernels/bdpt_vertex.h"
 
+/* A forward density is 0 only after a delta lobe (the walk records it so): 1 keeps the ratios
+ * going, and the delta flags leave the strategies that would need it out of the sum. */
 SS_FN float bdpt_remap0(float pdf) { return pdf != 0.0f ? pdf : 1.0f; }
+
+/* A reverse density the walk recorded as 0 because the vertex after it on its own subpath is a
+ * delta lobe is remapped the same way. Any other 0 is real: no strategy that needs the vertex
+ * sampled from the other side can make the path (the environment's light disk does not reach it),
+ * so the ratio, and every ratio the running product carries it into, stays 0. */
+SS_FN float bdpt_remap_reverse(float pdf, bool next_is_delta) { return pdf != 0.0f || !next_is_delta ? pdf : 1.0f; }
 
 SS_FN bool bdpt_strategy_enabled(int mask, int s, int t) {
     if (t == 1) return (mask & STRATEGY_T1) != 0;
@@ -72,8 +80,9 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* k, const Camera* camera,
     float sum = 0.0f;
     float r = 1.0f;
     for (int i = t - 1; i > 0; --i) { /* strategy (s + t - i, i) */
+        /* the connection's own densities are real ones; the walk's may follow a delta lobe */
         float rev = i == t - 1 ? pt_rev : (i == t - 2 ? pt_minus_rev : cam[i].pdf_rev);
-        r *= bdpt_remap0(rev) / bdpt_remap0(cam[i].pdf_fwd);
+        r *= bdpt_remap_reverse(rev, i < t - 2 && cam[i + 1].delta) / bdpt_remap0(cam[i].pdf_fwd);
         bool delta = i != t - 1 && cam[i].delta;
         float q = s + t - i == 1 ? q_ratio : own;
         if (!delta && !cam[i - 1].delta && bdpt_strategy_enabled(k->strategies, s + t - i, i)) sum += bdpt_heuristic(k->mis_heuristic, r * q);
@@ -82,7 +91,7 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* k, const Camera* camera,
     for (int i = s - 1; i >= 0; --i) { /* strategy (i, s + t - i) */
         const PathVertex* v = i == s - 1 ? qs : &light[i];
         float rev = i == s - 1 ? qs_rev : (i == s - 2 ? qs_minus_rev : v->pdf_rev);
-        r *= bdpt_remap0(rev) / bdpt_remap0(v->pdf_fwd);
+        r *= bdpt_remap_reverse(rev, i < s - 2 && light[i + 1].delta) / bdpt_remap0(v->pdf_fwd);
         bool delta = i != s - 1 && v->delta;
         bool delta_before = i > 0 ? light[i - 1].delta != 0 : vertex_is_delta_light(scene, i == s - 1 ? qs : &light[0]);
         float q = i == 1 ? q_ratio : own;

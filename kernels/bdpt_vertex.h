@@ -17,9 +17,10 @@
 #define VERTEX_SURFACE 2     /* a scattering point; an emissive sphere the camera subpath hits is one too */
 #define VERTEX_ENVIRONMENT 3 /* the environment, at infinity: p holds the unit direction towards it */
 
-/* The largest subpath, in vertices, a kernel has room for (private arrays of fixed size). */
+/* The largest subpath, in vertices, a kernel has room for (private arrays of fixed size): an OpenCL
+ * build defines it as its settings' max_vertices (render/opencl_renderer.cpp). */
 #ifndef BDPT_MAX_VERTICES
-#define BDPT_MAX_VERTICES 16
+#define BDPT_MAX_VERTICES BDPT_VERTEX_LIMIT
 #endif
 
 typedef struct PathVertex {
@@ -105,13 +106,28 @@ SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* k, const RenderS
     return pmf * environment_light_pdf(&scene->env, scene->env_buffers, v->p);
 }
 
+/* The density per unit area across the ray with which an environment light subpath from
+ * direction w (towards the environment) reaches point p: its rays start uniformly on the disk of the
+ * scene's radius R that faces the scene from c + R w (bdpt_light_subpath) and run along -w for at most
+ * the march's max_distance. A point outside that cylinder, above the disk or farther from it than a
+ * ray runs is reached by no light subpath: its density is 0, so the strategies that start there take
+ * no share of its paths' MIS weights. */
+SS_FN float environment_disk_pdf(const RenderKernelSettings* k, float3 w, float3 p) {
+    float3 d = p - float3_from_array(k->scene_center);
+    float along = dot(d, w);
+    float3 across = d - along * w;
+    float r2 = sqr(k->scene_radius);
+    if (dot(across, across) > r2 || along > k->scene_radius || k->scene_radius - along > k->max_distance) return 0.0f;
+    return 1.0f / (SS_PI * r2);
+}
+
 /* The density at `next` of a light subpath leaving light vertex v towards it (pbrt-v4's
  * PdfLight): a sphere emits from both sides, cosine-distributed on each; a point light uniformly;
- * the environment from a disk of the scene's radius, uniform by area. */
+ * the environment from a disk of the scene's radius, uniform by area where its rays reach. */
 SS_FN float vertex_pdf_light(const RenderKernelSettings* k, const RenderScene* scene, const PathVertex* v, const PathVertex* next) {
     Light light = scene->lights[vertex_light_index(scene, v)];
     if (light.type == LIGHT_ENVIRONMENT) {
-        float pdf = 1.0f / (SS_PI * sqr(k->scene_radius));
+        float pdf = environment_disk_pdf(k, v->p, next->p);
         return next->on_surface ? pdf * fabs(dot(next->frame.n, v->p)) : pdf;
     }
     float3 w = vertex_direction(v, next);

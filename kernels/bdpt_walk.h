@@ -159,6 +159,9 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* k, MarchSettings s, con
     path[0] = v;
     float3 beta = le * (cos_out / (pmf * pdf_position * pdf_dir));
     bool inside = scene_distance(origin) < 0.0f;
+    /* a disk point inside a solid (an endless plane crosses the disk) lies in the solid's shadow:
+     * nothing its ray reaches is lit along it */
+    if (v.type == VERTEX_ENVIRONMENT && inside) return 1;
     int count = bdpt_random_walk(k, s, scene, rng, origin, direction, beta, pdf_dir, TRANSPORT_IMPORTANCE, inside, path, 1, max_count,
                                  counters);
     /* from the environment the first hit's density is the disk's, per unit area across the ray */

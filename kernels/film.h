@@ -4,7 +4,7 @@
  *   splat         3 floats (stored as their bits in uints): contributions other work-items add to
  *                 this pixel -- light tracing (t = 1) lands anywhere on the film.
  * The pixel's estimate is accumulation.xyz / (samples - accumulation.w) + splat / samples
- * (render/film_buffers.cpp resolves it), the splat scaled like pbrt-v4's film splats.
+ * (render/film_resolve.cpp resolves it), the splat scaled like pbrt-v4's film splats.
  *
  * OpenCL 1.2 on PoCL 3.1 has no float atomic add, so a splat is a compare-and-swap loop on the
  * float's bits (atomic_cmpxchg; on the host the GCC/Clang __atomic built-in on the same 32-bit

@@ -2,7 +2,7 @@
  * (point, material slot, shading frame, the error scale of the point), offsetting rays off a
  * surface, and shadow rays. Needs the scene (scene_distance, scene_distance_material,
  * scene_analytic_normal) declared before it is included, like sdf/march.h: the generated scene
- * source in a kernel, the host interpreter in render/host_path_tracer.cpp. */
+ * source in a kernel, the host interpreter in render/host_renderer.cpp. */
 #ifndef KERNELS_PATH_H
 #define KERNELS_PATH_H
 

@@ -5,7 +5,7 @@
  * the host's selection distribution (power or uniform; kernels/lights/light_selection.h), and its
  * probability is part of every light density, in NEE and in the MIS weight of BSDF-sampled hits.
  *
- * Single source: kernels/path_tracer.cl runs it on OpenCL, render/host_path_tracer.cpp as C++ on
+ * Single source: kernels/path_tracer.cl runs it on OpenCL, render/host_renderer.cpp as C++ on
  * threads over pixels, with the same random numbers. Needs the scene declared before it, as
  * kernels/path.h does. */
 #ifndef KERNELS_PATH_TRACER_H

@@ -1,6 +1,7 @@
-/* The settings every integrator kernel takes (kernels/path_tracer.cl, and the host build of the same
- * integrators, render/host_path_tracer): plain 4-byte scalars only, so the struct has one layout on
- * both sides and travels as a kernel argument by value. */
+/* The settings every integrator kernel takes (kernels/path_tracer.cl, kernels/bdpt.cl,
+ * kernels/march_packets.cl, and the host build of the same integrators, render/host_renderer.cpp):
+ * plain 4-byte scalars only, so the struct has one layout on both sides and travels as a kernel
+ * argument by value. */
 #ifndef KERNELS_RENDER_SETTINGS_H
 #define KERNELS_RENDER_SETTINGS_H
 #include "single_source/vocabulary.h"
@@ -24,6 +25,10 @@
 #define STRATEGY_T1 8      /* t = 1: a light-subpath vertex joined to the lens, splatted */
 #define STRATEGY_ALL 15
 
+/* The most vertices of a bidirectional path (max_depth + 2): the size of the host build's private
+ * vertex arrays (kernels/bdpt_vertex.h); an OpenCL build sizes them to its own max_vertices. */
+#define BDPT_VERTEX_LIMIT 64
+
 #define MIS_BALANCE 0
 #define MIS_POWER 1
 
@@ -42,7 +47,7 @@ typedef struct RenderKernelSettings {
     int light_count;      /* entries of the light array; the environment, when there is one, is entry 0 */
     int show_background;  /* 0: camera rays (and mirror paths) that escape see black, lighting unchanged */
     /* bidirectional kernels only */
-    int max_vertices;     /* s + t at most: a path of max_vertices - 2 scattering events */
+    int max_vertices;     /* s + t at most: max_depth + 2, the lens, max_depth scattering events and the light */
     int strategies;       /* STRATEGY_* mask */
     int mis_heuristic;    /* MIS_* */
     int strategy_only;    /* >= 0: add only strategy (s, t) = (strategy_only / 32, strategy_only % 32), weighted by the

@@ -67,6 +67,8 @@ void OpenClRenderer::build_kernel() {
     std::string options = kBuildOptions + (s.extra_build_options.empty() ? "" : " " + s.extra_build_options);
     // the wavefront's step prefetches environment texels (kernels/path_tracer_wavefront.h); PoCL only
     if (wavefront()) options += " -DWAVEFRONT_PREFETCH";
+    // BDPT's private vertex arrays hold exactly the paths its max_depth allows (kernels/bdpt_vertex.h)
+    if (s.integrator != Integrator::pt) options += " -DBDPT_MAX_VERTICES=" + std::to_string(bdpt_max_vertices(s));
     // only the samplers of the scene's kinds of light (the marches see none: not the packets'
     // option); the lights keep their kinds once built (Renderer::rebuild_lights changes an
     // environment's rotation and exposure only)

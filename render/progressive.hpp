@@ -40,7 +40,10 @@ ProgressiveOutcome render_progressively(Renderer& renderer, const RenderLimits& 
 [[noreturn]] void fail_after_writing(const ProgressiveOutcome& outcome, int samples_per_pixel, const std::string& written_to);
 
 // What every render's metadata holds: samples and the sample indices, time, device, seed,
-// non-finite samples, lost rays, the settings. Callers add what they know besides (material, scene, environment, tone map).
+// non-finite samples, lost rays, and every setting that changes what the render estimates (for
+// bdpt and lt also the vertex limit, the MIS heuristic and a strategy mask or single strategy:
+// merge and --resume compare them all). Callers add what they know besides (material, scene,
+// environment, tone map).
 film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatistics& stats);
 
 // Whether `path` names an OpenEXR file (.exr, any case), and the PNG that goes beside it.

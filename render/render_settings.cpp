@@ -58,8 +58,9 @@ void check_render_settings(const RenderSettings& settings) {
                                            " is outside 1x1 .. " + std::to_string(kMaxImageSide) + " a side and 2^26 pixels");
     if (settings.max_depth < 0 || settings.max_depth > 1024)
         throw InputError("--max-depth", "", "must be in [0, 1024], got " + std::to_string(settings.max_depth));
-    if (settings.max_vertices < 2 || settings.max_vertices > 16)
-        throw InputError("--max-vertices", "", "must be in [2, 16], got " + std::to_string(settings.max_vertices));
+    if (settings.integrator != Integrator::pt && settings.max_depth > kBdptMaxDepth)
+        throw InputError("--max-depth", "", std::string(integrator_name(settings.integrator)) + " takes at most " +
+                                                std::to_string(kBdptMaxDepth) + " scattering events, got " + std::to_string(settings.max_depth));
     if (settings.local_size < 0 || settings.local_size > 4096)
         throw InputError("local size", "", "must be in [0, 4096], got " + std::to_string(settings.local_size));
     if (settings.max_steps < 1 || settings.max_steps > 1 << 20)

@@ -35,9 +35,8 @@ constexpr int kMaxImageSide = 16384;
 struct RenderSettings {
     int width = 512, height = 512;
     Integrator integrator = Integrator::pt;
-    int max_depth = 16;      // scattering events per path
+    int max_depth = 16;      // scattering events per path, for every integrator (bdpt_max_vertices)
     int roulette_depth = 3;  // Russian roulette from this many events on
-    int max_vertices = 8;    // bdpt, lt: s + t at most (the write-up's s + t <= 8), in [2, 16]
     MisHeuristic mis_heuristic = MisHeuristic::balance;  // bdpt, lt
     int strategies = 0;      // bdpt, lt: a STRATEGY_* mask of kernels/render_settings.h; 0: the integrator's own
     int strategy_s = -1, strategy_t = -1;  // bdpt, lt: >= 0: only the strategy (s, t) (--strategies DIR)
@@ -64,6 +63,14 @@ struct RenderSettings {
     // (at least one); 0: the renderer's default (render/opencl_renderer.cpp). The same bits whatever it is.
     int wavefront_paths = 0;
 };
+
+// The most scattering events a bidirectional path (bdpt, lt) may have: its host build's private
+// vertex arrays hold kBdptMaxDepth + 2 vertices (BDPT_VERTEX_LIMIT, kernels/render_settings.h).
+constexpr int kBdptMaxDepth = 62;
+
+// bdpt, lt: the most vertices of a path, s + t: the lens, max_depth scattering events and the light,
+// so that every integrator estimates the same image at the same max_depth.
+inline int bdpt_max_vertices(const RenderSettings& settings) { return settings.max_depth + 2; }
 
 // Throws lab::InputError naming the option for a size, depth, step count or over-relaxation out of
 // range. Renderers call it too; callers call it first to fail before any loading.

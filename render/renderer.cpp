@@ -7,6 +7,7 @@
 
 #include "brdf/brdf.hpp"
 #include "brdf/host/features.hpp"
+#include "common/input_error.hpp"
 #include "render/camera_setup.hpp"
 #include "render/film_resolve.hpp"
 
@@ -72,6 +73,25 @@ Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     }
     emission_ = emission_table(compiled_);
     rebuild_lights();
+    check_integrator_lights();
+}
+
+// What a bidirectional integrator cannot render is refused before anything is built or rendered,
+// instead of coming out black.
+void Renderer::check_integrator_lights() const {
+    const Integrator integrator = input_.settings.integrator;
+    if (integrator == Integrator::pt) return;
+    const std::string name = integrator_name(integrator);
+    if (lights_.lights.empty())
+        throw InputError(compiled_.file, "--integrator",
+                         name + " starts its light subpaths on the lights, and the scene has none (no emissive sphere, point light or "
+                                "environment): add one, or give --env");
+    // The lens is never hit from infinity, and light subpaths from the environment start on a disk
+    // of finite radius, which an endless surface outruns (docs/bdpt.md): t = 1 alone misses both.
+    if (integrator == Integrator::lt && input_.environment)
+        throw InputError(compiled_.file, "--integrator",
+                         "lt cannot render an environment light (light tracing never reaches the lens from infinity, nor an endless "
+                         "surface beyond the environment's light disk): use --integrator bdpt or pt");
 }
 
 void Renderer::initialize() {
@@ -108,7 +128,7 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     k.lipschitz = std::max(compiled_.lipschitz, 1.0f);
     k.light_count = int(lights_.lights.size());
     k.show_background = s.show_background ? 1 : 0;
-    k.max_vertices = s.max_vertices;
+    k.max_vertices = bdpt_max_vertices(s);
     k.strategies = s.strategies != 0 ? s.strategies : s.integrator == Integrator::lt ? STRATEGY_T1 : STRATEGY_ALL;
     k.mis_heuristic = s.mis_heuristic == MisHeuristic::power ? MIS_POWER : MIS_BALANCE;
     k.strategy_only = s.strategy_s >= 0 ? s.strategy_s * 32 + s.strategy_t : -1;

@@ -481,20 +481,32 @@ std::string generate_material_source(const Scene& scene, const std::vector<brdf:
 }
 
 // The box of what is bounded: the camera, the lights, and each object's box about the origin
-// (scene/lipschitz.hpp's extent) along its finite axes; then the sphere around that box.
+// (scene/lipschitz.hpp's extent) along its finite axes; then the sphere around that box. A scene
+// with an endless part (a plane, an endless repetition) also holds the cube around the camera out to
+// the distance of what it looks at: the environment's light subpaths start on a disk of this
+// sphere's radius (kernels/bdpt_walk.h), so this is the part of an endless surface they cover;
+// beyond it the camera's strategies carry the light alone (docs/bdpt.md).
 void scene_bounds(const Scene& scene, Vec3* center, float* radius) {
     glm::dvec3 lo(scene.camera.position), hi(scene.camera.position);
     auto grow = [&](glm::dvec3 a, glm::dvec3 b) {
         lo = glm::min(lo, a);
         hi = glm::max(hi, b);
     };
+    bool endless = false;
     for (const Object& object : scene.objects) {
         const Vec3 e = analyse_shape(object.shape).extent;
         for (int axis = 0; axis < 3; ++axis)
             if (std::isfinite(e[axis])) {
                 lo[axis] = std::min(lo[axis], -double(e[axis]));
                 hi[axis] = std::max(hi[axis], double(e[axis]));
+            } else {
+                endless = true;
             }
+    }
+    if (endless) {
+        const glm::dvec3 camera(scene.camera.position);
+        const double view = glm::length(glm::dvec3(scene.camera.look_at) - camera);
+        grow(camera - view, camera + view);
     }
     for (const EmitterSphere& e : scene.emitters) grow(glm::dvec3(e.center) - double(e.radius), glm::dvec3(e.center) + double(e.radius));
     for (const PointLight& p : scene.point_lights) grow(glm::dvec3(p.position), glm::dvec3(p.position));

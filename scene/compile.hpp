@@ -44,8 +44,10 @@ struct CompiledScene {
     std::vector<EmitterSphere> emitters;         // emissive spheres; emitters[k].material is its slot
     std::vector<PointLight> point_lights;        // lights only: not in the source
     // A sphere that holds the camera, the lights and every bounded part of the objects (the axes
-    // along which an object is unbounded, a plane or an endless repetition, are left out): the
-    // scene's size for the environment's power (docs/lights.md).
+    // along which an object is unbounded, a plane or an endless repetition, are left out) and, in a
+    // scene with such an endless part, the cube around the camera out to its look-at distance: the
+    // scene's size for the environment's power (docs/lights.md) and the disk its light subpaths
+    // start on (docs/bdpt.md).
     Vec3 bounds_center{0.0f};
     float bounds_radius = 0.0f;
     // A box that holds every surface, the objects' boxes (scene/lipschitz.hpp) and the emitters,

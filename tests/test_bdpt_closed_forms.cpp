@@ -17,7 +17,7 @@ namespace {
 lab::render::RenderInput bdpt_input(const Case& c, lab::render::Integrator integrator, int size) {
     lab::render::RenderInput input = case_input(c, LightSelection::power, size);
     input.settings.integrator = integrator;
-    input.settings.max_vertices = 16;
+    input.settings.max_depth = 14;
     return input;
 }
 
@@ -58,7 +58,7 @@ TEST_CASE("BDPT: each strategy alone converges to the same image", "[render][bdp
         for (int s = 0; s < k; ++s) {
             bool splats = k - s == 1;  // light tracing's paths spread over the film: 16 times the paths for its error
             lab::render::RenderInput input = bdpt_input(c, lab::render::Integrator::bdpt, splats ? 16 : 8);
-            input.settings.max_vertices = k;
+            input.settings.max_depth = k - 2;
             input.settings.strategy_s = s;
             input.settings.strategy_t = k - s;
             input.settings.strategy_unweighted = true;

@@ -1,7 +1,7 @@
 // BDPT and the light tracer as renderers: the t = 1 connection's edge cases (splats at the film's
-// border, light vertices behind the camera, points outside a thin lens's view) and the same seed
-// giving the same image. Their agreement with the path tracer on every bundled scene is
-// tests/test_integrator_agreement.cpp.
+// border, light vertices behind the camera, points outside a thin lens's view), the same seed
+// giving the same image, and non-finite contributions counted. Their agreement with the path tracer
+// on every bundled scene is tests/test_integrator_agreement.cpp.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,6 +10,7 @@
 #include <sstream>
 #include <vector>
 
+#include "film/image_stats.hpp"
 #include "kernels/host.hpp"
 #include "render/camera_setup.hpp"
 #include "render/host_renderer.hpp"
@@ -111,4 +112,26 @@ TEST_CASE("BDPT: the same seed gives the same image", "[render][bdpt][seed]") {
     REQUIRE(images[0].size() == images[1].size());
     CHECK(std::memcmp(images[0].data(), images[1].data(), images[0].size() * sizeof(float)) == 0);
     CHECK(std::memcmp(images[0].data(), images[2].data(), images[0].size() * sizeof(float)) != 0);  // a seed changes it
+}
+
+// As the path tracer's (tests/test_preview_nonfinite.cpp): a sky of radiance 3e38, the largest a
+// loader accepts, overflows BDPT's light samples and the environment's light subpaths to infinity
+// on the sphere, while the sky seen through the lens ((0, 2), weight 1) is the sky itself. Every
+// sample with a non-finite contribution or weight is counted, and at one sample per pixel exactly
+// those pixels have no finite sample and show as NaN, instead of passing for black or dark.
+TEST_CASE("BDPT: non-finite contributions are counted and left out of the image", "[render][bdpt][nonfinite]") {
+    const char* sphere = R"({
+      "camera": {"type": "pinhole", "position": [0, 0, 3.2], "look_at": [0, 0, 0], "fov_degrees": 40},
+      "materials": {"sample": {"albedo": [1, 1, 1], "lobes": {"diffuse": 1}}},
+      "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}}]
+    })";
+    lab::render::RenderInput input = render_input(std::nullopt, "constant:3e38,3e38,3e38", 16, lab::render::LightSampling::mis, 0, sphere);
+    input.settings.integrator = lab::render::Integrator::bdpt;
+    input.settings.max_depth = 4;
+    lab::render::HostRenderer renderer(input, 1);
+    RenderResult r = render_samples(renderer, 1);
+    INFO(r.stats.nonfinite_samples << " non-finite samples of " << r.stats.paths);
+    CHECK(r.stats.nonfinite_samples > 0);
+    CHECK(r.stats.nonfinite_samples < r.stats.paths);
+    CHECK(lab::film::image_stats(r.image).non_finite_pixels == r.stats.nonfinite_samples);
 }

@@ -67,7 +67,6 @@ lab::render::RenderInput case_input(const Case& c) {
     input.environment = c.env.empty() ? lab::render::load_scene_environment(input.scene) : lab::ibl::load_environment(c.env);
     input.settings.width = input.settings.height = kSize;
     input.settings.max_depth = c.max_depth;
-    input.settings.max_vertices = c.max_depth + 2;
     input.settings.light_sampling = c.sampling;
     return input;
 }

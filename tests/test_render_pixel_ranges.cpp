@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/read_text_file.hpp"
 #include "opencl/runtime.hpp"
 #include "render/film_resolve.hpp"
 #include "render/host_renderer.hpp"
@@ -19,8 +20,12 @@ namespace {
 using lab::render::Integrator;
 using lab::render::LightSampling;
 
+// The test model under a constant environment; for the light tracer, which refuses an environment,
+// the Cornell box with its sphere light.
 lab::render::RenderInput model(Integrator integrator, int size) {
-    lab::render::RenderInput input = render_input(std::nullopt, "constant:1,1,1", size, LightSampling::mis, 11);
+    lab::render::RenderInput input = integrator == Integrator::lt
+                                         ? render_input(std::nullopt, "", size, LightSampling::mis, 11, lab::read_text_file("scenes/cornell_box.json", 1 << 20, "scene"))
+                                         : render_input(std::nullopt, "constant:1,1,1", size, LightSampling::mis, 11);
     input.settings.integrator = integrator;
     return input;
 }

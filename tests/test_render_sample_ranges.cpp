@@ -1,15 +1,29 @@
 // Renders that outgrow one machine (render/sample_ranges.hpp, render/film_file.hpp): parts over
 // disjoint sample ranges merge into the render one run would have made, and a resumed render
-// continues it bit for bit. The tolerance of a merge is the closed-form bound of float summation:
-// a sum of n non-negative floats added one by one is within (n - 1) u of the exact sum, relative,
-// with u = 2^-24 (Higham, Accuracy and Stability of Numerical Algorithms, section 4.2); the one run
-// and the merge are two such orders, so they differ by at most 2 (n - 1) u of the sum.
+// continues it (its own-pixel sums bit for bit). The tolerance of a merge is the closed-form bound
+// of float summation: n non-negative floats summed in any order (one by one, or as sums of parts
+// added together) come within gamma(n - 1) = (n - 1) u / (1 - (n - 1) u) of the exact sum s,
+// relative, with u = 2^-24 (Higham, Accuracy and Stability of Numerical Algorithms, section 4.2);
+// the one run and the merge are two such orders, so they differ by at most 2 gamma(n - 1) s.
+//
+// What n is, counted from the render's settings and never from its output:
+// - film.sum: a pixel's own samples, one term each, added by its work-item in sample order (a
+//   sample's strategies are summed before it is added): n = samples per pixel.
+// - film.splat (bdpt, lt): t = 1 connections, added by float atomics in the order they arrive from
+//   every work-item. A sample makes at most one per light-subpath vertex, max_vertices - 1, and
+//   each may land on any pixel, so a pixel's splat is a sum of at most
+//   width x height x samples x (max_vertices - 1) terms (a loose count, but one that holds for
+//   every pixel whatever the arrival order). Every term is radiance, non-negative. The path tracer
+//   splats nothing: n = 0, and the splats must be equal.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <unistd.h>
 
@@ -20,6 +34,7 @@
 #include "render/host_renderer.hpp"
 #include "render/opencl_renderer.hpp"
 #include "render/progressive.hpp"
+#include "scene/load_scene.hpp"
 #include "tests/render_inputs.hpp"
 
 namespace fs = std::filesystem;
@@ -63,20 +78,62 @@ bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
-// The largest |merged - full| over the summation bound 2 (n - 1) u |full|, over every sum.
-double worst_over_bound(const FilmReadback& merged, const FilmReadback& full, int n) {
+// 2 gamma(n - 1) s, the most by which two summation orders of n non-negative terms can differ,
+// with s the exact sum; `sum` is one order's float result, within gamma(n - 1) of s.
+double summation_bound(double terms, double sum) {
+    if (terms <= 1.0) return 0.0;  // one term or none: no rounding
+    const double nu = (terms - 1.0) * std::ldexp(1.0, -24), gamma = nu / (1.0 - nu);
+    return 2.0 * gamma * std::fabs(sum) / (1.0 - gamma);
+}
+
+// The terms in each pixel's sums of `full` (see the top of the file).
+struct SumTerms {
+    double own = 0.0, splat = 0.0;
+};
+
+SumTerms sum_terms(const lab::render::RenderSettings& s, int samples) {
+    SumTerms terms;
+    terms.own = samples;
+    if (s.integrator != lab::render::Integrator::pt) terms.splat = double(s.width) * s.height * samples * (lab::render::bdpt_max_vertices(s) - 1);
+    return terms;
+}
+
+// The largest |a - b| over the bound `terms` allows, over every value: 0 when equal, above 1 outside
+// the bound. `stride` > 0 skips every stride-th value from `skip` on (the non-finite counts).
+double worst_over_bound(const std::vector<float>& a, const std::vector<float>& b, double terms, size_t stride = 0, size_t skip = 0) {
+    double worst = 0.0;
+    for (size_t i = 0; i < b.size(); ++i) {
+        if (stride > 0 && i % stride == skip) continue;
+        double difference = std::fabs(double(a[i]) - double(b[i]));
+        if (difference == 0.0) continue;
+        double bound = summation_bound(terms, b[i]);
+        worst = std::max(worst, bound > 0.0 ? difference / bound : HUGE_VAL);
+    }
+    return worst;
+}
+
+// The same for two images resolved from films that differ within those bounds: a pixel is
+// sum / finite + splat / samples (render/film_resolve.cpp, in double), rounded once to float in
+// each image, so the images differ by at most the sums' bounds over their divisors plus 2 u of the
+// pixel; 3 u leaves room for the rounding of the double arithmetic (under 2^-50, relative).
+double worst_image_over_bound(const lab::film::ImageRgb& a, const lab::film::ImageRgb& b, const FilmReadback& film, SumTerms terms, int samples) {
     const double u = std::ldexp(1.0, -24);
     double worst = 0.0;
-    for (size_t i = 0; i < full.accumulation.size(); ++i) {
-        if (i % 4 == 3) continue;  // the non-finite counts are integers: compared exactly elsewhere
-        double bound = 2.0 * (n - 1) * u * std::fabs(double(full.accumulation[i])) + 1e-30;
-        worst = std::max(worst, std::fabs(double(merged.accumulation[i]) - double(full.accumulation[i])) / bound);
+    for (size_t p = 0; p < b.pixel_count(); ++p) {
+        double finite = samples - double(film.accumulation[4 * p + 3]);
+        for (size_t c = 0; c < 3; ++c) {
+            double difference = std::fabs(double(a.rgb[3 * p + c]) - double(b.rgb[3 * p + c]));
+            if (difference == 0.0) continue;
+            double bound = summation_bound(terms.own, film.accumulation[4 * p + c]) / finite +
+                           summation_bound(terms.splat, film.splat[3 * p + c]) / samples + 3.0 * u * std::fabs(double(b.rgb[3 * p + c]));
+            worst = std::max(worst, bound > 0.0 ? difference / bound : HUGE_VAL);
+        }
     }
     return worst;
 }
 
 // Renders the full range [0, 8) in one run, and the parts [0, 2) and [2, 8), on fresh renderers
-// made by `make`; checks merge and resume.
+// made by `make`; checks merge and resume: the film's sums and splats and the image.
 template <class MakeRenderer>
 void check_split_and_resume(MakeRenderer make) {
     const int n = 8;
@@ -89,24 +146,39 @@ void check_split_and_resume(MakeRenderer make) {
     second->set_first_sample(2);
     render_samples(*second, 6);
     CHECK(second->sample_ranges().to_string() == "2:8");
+    const SumTerms terms = sum_terms(full->settings(), n);
+    const bool splats = terms.splat > 0.0;
 
     FilmFile merged = lab::render::merge_film_files({part_of(*first, "first.exr"), part_of(*second, "second.exr")});
     CHECK(merged.ranges.to_string() == "0:8");
     FilmReadback f = full->film();
-    INFO("worst |merged - full| over the float-summation bound: " << worst_over_bound(merged.film, f, n));
-    CHECK(worst_over_bound(merged.film, f, n) <= 1.0);
+    lab::film::ImageRgb one = full->image();
+    lab::film::ImageRgb merged_image = lab::render::resolve_film(merged.film, n, merged.width, merged.height);
+    INFO("worst |merged - full| over the float-summation bound: film.sum "
+         << worst_over_bound(merged.film.accumulation, f.accumulation, terms.own, 4, 3) << ", film.splat "
+         << worst_over_bound(merged.film.splat, f.splat, terms.splat) << ", image "
+         << worst_image_over_bound(merged_image, one, f, terms, n));
+    CHECK(worst_over_bound(merged.film.accumulation, f.accumulation, terms.own, 4, 3) <= 1.0);
     for (size_t i = 3; i < f.accumulation.size(); i += 4) CHECK(merged.film.accumulation[i] == f.accumulation[i]);
+    CHECK(worst_over_bound(merged.film.splat, f.splat, terms.splat) <= 1.0);
+    CHECK(worst_image_over_bound(merged_image, one, f, terms, n) <= 1.0);
 
-    // The check has power: averaging the two parts' images (a merge that forgets they hold 2 and 6
-    // samples) is far outside the bound.
-    lab::film::ImageRgb a = first->image(), b = second->image(), one = full->image();
-    double worst_naive = 0.0;
-    for (size_t i = 0; i < one.rgb.size(); ++i)
-        worst_naive = std::max(worst_naive, std::fabs(0.5 * (double(a.rgb[i]) + double(b.rgb[i])) - double(one.rgb[i])) /
-                                                (2.0 * (n - 1) * std::ldexp(1.0, -24) * std::fabs(double(one.rgb[i])) + 1e-30));
-    CHECK(worst_naive > 1e3);
+    // The checks have power: averaging the two parts' images (a merge that forgets they hold 2 and 6
+    // samples) is far outside the bound, and so is a merge that keeps the first part's splats alone.
+    lab::film::ImageRgb a = first->image(), b = second->image(), averaged(one.width, one.height);
+    for (size_t i = 0; i < one.rgb.size(); ++i) averaged.rgb[i] = 0.5f * (a.rgb[i] + b.rgb[i]);
+    CHECK(worst_image_over_bound(averaged, one, f, terms, n) > 10.0);
+    if (splats) {
+        CHECK(std::any_of(f.splat.begin(), f.splat.end(), [](float v) { return v > 0.0f; }));
+        FilmReadback first_splats_only = merged.film;
+        first_splats_only.splat = first->film().splat;
+        CHECK(worst_over_bound(first_splats_only.splat, f.splat, terms.splat) > 10.0);
+        lab::film::ImageRgb without = lab::render::resolve_film(first_splats_only, n, merged.width, merged.height);
+        CHECK(worst_image_over_bound(without, one, f, terms, n) > 10.0);
+    }
 
-    // Resumed from the first part's film: the very same bits as one run.
+    // Resumed from the first part's film: the own-pixel sums are the very same bits as one run; the
+    // splats (and so the image) within the bound when there are any, else the same bits.
     auto resumed = make();
     resumed->restore_film(first->film(), first->sample_ranges());
     CHECK(resumed->statistics().samples_per_pixel == 2);
@@ -114,7 +186,21 @@ void check_split_and_resume(MakeRenderer make) {
     CHECK(resumed->sample_ranges().to_string() == "0:8");
     CHECK(resumed->statistics().samples_per_pixel == n);
     CHECK(same_bits(resumed->film().accumulation, f.accumulation));
-    CHECK(same_bits(resumed->image().rgb, one.rgb));
+    CHECK(worst_over_bound(resumed->film().splat, f.splat, terms.splat) <= 1.0);
+    if (splats) CHECK(worst_image_over_bound(resumed->image(), one, f, terms, n) <= 1.0);
+    else CHECK(same_bits(resumed->image().rgb, one.rgb));
+}
+
+// The Cornell box at 16 x 16 (a sphere light, no environment) for the bidirectional integrators,
+// paths of up to 8 vertices (6 scattering events).
+lab::render::RenderInput bidirectional_input(lab::render::Integrator integrator) {
+    lab::render::RenderInput input;
+    input.scene = lab::scene::load_scene("scenes/cornell_box.json");
+    input.settings.width = input.settings.height = 16;
+    input.settings.integrator = integrator;
+    input.settings.max_depth = 6;
+    input.settings.seed = 11;
+    return input;
 }
 
 fs::path temp_file(const std::string& name) { return fs::temp_directory_path() / ("dtoadq-test-" + std::to_string(::getpid()) + "-" + name); }
@@ -193,4 +279,66 @@ TEST_CASE("Sample ranges on the OpenCL device: merged parts equal one run to flo
           "[render][sample-ranges][opencl]") {
     lab::opencl::Runtime runtime("");
     check_split_and_resume([&] { return std::make_unique<lab::render::OpenClRenderer>(runtime, split_input()); });
+}
+
+TEST_CASE("Sample ranges with BDPT and light tracing on the host build: merged parts equal one run to float rounding, splats included",
+          "[render][sample-ranges][bdpt][host]") {
+    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt}) {
+        INFO(lab::render::integrator_name(integrator));
+        check_split_and_resume([&] { return std::make_unique<lab::render::HostRenderer>(bidirectional_input(integrator), 2); });
+    }
+}
+
+TEST_CASE("Sample ranges with BDPT and light tracing on the OpenCL device: merged parts equal one run to float rounding, splats included",
+          "[render][sample-ranges][bdpt][opencl]") {
+    lab::opencl::Runtime runtime("");
+    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt}) {
+        INFO(lab::render::integrator_name(integrator));
+        check_split_and_resume([&] { return std::make_unique<lab::render::OpenClRenderer>(runtime, bidirectional_input(integrator)); });
+    }
+}
+
+TEST_CASE("Render metadata: BDPT's vertex limit, MIS heuristic and strategies are written, and a part that differs in them is refused",
+          "[render][film-file][bdpt]") {
+    using lab::render::Integrator;
+    auto metadata_of = [](const lab::render::RenderInput& input) {
+        lab::render::HostRenderer renderer(input, 1);
+        return lab::render::render_metadata(renderer, renderer.statistics());
+    };
+    auto text = [](const lab::film::ImageMetadata& m, const std::string& key) {
+        REQUIRE(m.find(key) != nullptr);
+        return lab::film::metadata_text(*m.find(key));
+    };
+    lab::render::RenderInput input = bidirectional_input(Integrator::bdpt);
+    const lab::film::ImageMetadata bdpt = metadata_of(input);
+    CHECK(text(bdpt, "integrator") == "bdpt");
+    CHECK(text(bdpt, "mis_heuristic") == "balance");
+    CHECK(text(bdpt, "max_vertices") == std::to_string(lab::render::bdpt_max_vertices(input.settings)));
+    CHECK(bdpt.find("strategy_s") == nullptr);  // every strategy of the integrator
+    input.settings.mis_heuristic = lab::render::MisHeuristic::power;
+    CHECK(text(metadata_of(input), "mis_heuristic") == "power");
+    input.settings.strategy_s = 2;
+    input.settings.strategy_t = 1;
+    input.settings.strategy_unweighted = true;
+    const lab::film::ImageMetadata one_strategy = metadata_of(input);
+    CHECK(text(one_strategy, "strategy_s") == "2");
+    CHECK(text(one_strategy, "strategy_t") == "1");
+    CHECK(text(one_strategy, "mis_weighted") == "0");
+    CHECK(metadata_of(bidirectional_input(Integrator::pt)).find("mis_heuristic") == nullptr);  // the path tracer has none
+
+    // merge and --resume compare every field but those that differ between parts of one render
+    FilmFile part;
+    part.path = "b.exr";
+    part.width = part.height = 16;
+    for (const auto& [key, value] : std::vector<std::pair<std::string, lab::film::MetadataValue>>{
+             {"integrator", std::string("lt")}, {"mis_heuristic", std::string("power")}, {"max_vertices", 6},
+             {"max_depth", 4}, {"strategies", 3}, {"strategy_s", 2}, {"mis_weighted", 0}}) {
+        INFO(key);
+        part.metadata = bdpt;
+        part.metadata.values[key] = value;
+        CHECK_THROWS_WITH(lab::render::check_same_render("a.exr", bdpt, 16, 16, part), Catch::StartsWith("b.exr: dtoadq:" + key + ": "));
+    }
+    part.metadata = bdpt;
+    part.metadata.set("seconds", 99.0f);  // differs between parts: fine
+    CHECK_NOTHROW(lab::render::check_same_render("a.exr", bdpt, 16, 16, part));
 }

@@ -219,8 +219,13 @@ TEST_CASE("scene compiler: point lights pass through, a reflecting emitter follo
     REQUIRE(c.materials.size() == 2);
     CHECK(c.materials[1].metallic == 1.0f);  // the emitter's slot scatters with the override
     CHECK(c.emission[1] == Vec3(2.0f));
-    // bounds: camera (0, 0, 5), ball [-1, 1]^3 (the plane's unbounded axes are left out; along y its
-    // extent is infinite too), emitter [2.5, 3.5] x [-0.5, 0.5]^2, point (0, 4, 0)
-    CHECK(c.bounds_center == Vec3(1.25f, 1.5f, 2.0f));
-    CHECK(c.bounds_radius == Approx(0.5 * std::sqrt(4.5 * 4.5 + 5.0 * 5.0 + 6.0 * 6.0)).epsilon(1e-6));
+    // bounds: camera (0, 0, 5), ball [-1, 1]^3, emitter [2.5, 3.5] x [-0.5, 0.5]^2, point (0, 4, 0);
+    // the endless plane adds the cube around the camera out to its look-at distance, 5: [-5, 5]^2 x [0, 10]
+    CHECK(c.bounds_center == Vec3(0.0f, 0.0f, 4.5f));
+    CHECK(c.bounds_radius == Approx(0.5 * std::sqrt(10.0 * 10.0 + 10.0 * 10.0 + 11.0 * 11.0)).epsilon(1e-6));
+    // without the plane, the box of what is bounded alone
+    options.disabled_objects.push_back("ground");
+    const CompiledScene bounded = lab::scene::compile_scene(scene, options);
+    CHECK(bounded.bounds_center == Vec3(1.25f, 1.5f, 2.0f));
+    CHECK(bounded.bounds_radius == Approx(0.5 * std::sqrt(4.5 * 4.5 + 5.0 * 5.0 + 6.0 * 6.0)).epsilon(1e-6));
 }

@@ -271,12 +271,31 @@ cli_bad_input(NAME render.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_sc
               ARGS render ${D}/absent_scene.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"vcm\" \\(pt, bdpt, lt\\)$"
               ARGS ${RENDER} --integrator vcm)
-cli_bad_input(NAME render.max_vertices_range ABSENT ${PNG} EXPECT "${E}--max-vertices: must be in \\[2, 16\\], got 17$"
-              ARGS ${RENDER} --integrator bdpt --max-vertices 17)
+cli_bad_input(NAME render.bdpt_max_depth ABSENT ${PNG} EXPECT "${E}--max-depth: bdpt takes at most 62 scattering events, got 63$"
+              ARGS ${RENDER} --integrator bdpt --max-depth 63)
+cli_bad_input(NAME render.bdpt_no_light ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_no_sample\\.json: --integrator: bdpt starts its light subpaths on the lights, and the scene has none .*give --env$"
+              ARGS render ${D}/scene_no_sample.json --integrator bdpt --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.lt_no_light ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_no_sample\\.json: --integrator: lt starts its light subpaths on the lights, and the scene has none "
+              ARGS render ${D}/scene_no_sample.json --integrator lt --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.lt_environment ABSENT ${PNG}
+              EXPECT "${E}scenes/metaballs\\.json: --integrator: lt cannot render an environment light .*: use --integrator bdpt or pt$"
+              ARGS ${RENDER} --integrator lt --env constant:1,1,1)
 cli_bad_input(NAME render.unknown_mis ABSENT ${PNG} EXPECT "${E}--mis: unknown value \"max\" \\(balance, power\\)$"
               ARGS ${RENDER} --integrator bdpt --mis max)
 cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt or lt"
               ARGS ${RENDER} --strategies ${CLI_SCRATCH}/strategies_pt)
+# the --strategies folder is checked before the render (nothing is written), and a folder the check
+# made is removed when another input error stops the command
+set(RENDER_BDPT render scenes/cornell_box.json --integrator bdpt --size 8x8 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.strategies_folder_is_a_file ABSENT ${PNG} EXPECT "${E}README\\.md: --strategies: is a file, not a folder$"
+              ARGS ${RENDER_BDPT} --strategies README.md)
+cli_bad_input(NAME render.strategies_folder_under_a_file ABSENT ${PNG}
+              EXPECT "${E}README\\.md/strategies: --strategies: cannot create the folder \\(.+\\)$"
+              ARGS ${RENDER_BDPT} --strategies README.md/strategies)
+cli_bad_input(NAME render.strategies_folder_left_out ABSENT ${CLI_SCRATCH}/strategies_unmade EXPECT "${E}--spp: must be in"
+              ARGS render scenes/cornell_box.json --integrator bdpt --size 8x8 --spp 0 -o ${PNG} --strategies ${CLI_SCRATCH}/strategies_unmade/sub)
 cli_bad_input(NAME render.unknown_light_sampling ABSENT ${PNG} EXPECT "${E}--light-sampling: unknown value \"all\" "
               ARGS ${RENDER} --light-sampling all)
 cli_bad_input(NAME render.unknown_light_selection ABSENT ${PNG} EXPECT "${E}--light-selection: unknown value \"random\" "

@@ -2,6 +2,9 @@
 # (the sums themselves are checked by tests/test_render_sample_ranges.cpp). EXE, SOURCE, WORK.
 # Renders parts 0:2 and 2:5 of the metaballs scene, merges them, and resumes the first part to 5
 # samples; then every misuse must fail with one line naming the file and the field, and write nothing.
+# Then the same for BDPT on the Cornell box (on the host build, which needs no kernel build): its
+# parts merge and resume, and a part that differs in the integrator, the MIS heuristic or the path
+# length is refused by both.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(problems)
@@ -50,6 +53,36 @@ run_error("resume a PNG" r.exr "${E}part0\\.png: has no film to merge or resume"
 run_error("samples backwards" r.exr "${E}--samples: expected A:B" render ${common} --samples 5:2 -o r.exr)
 run_error("samples and spp" r.exr "${E}--samples: gives the sample count itself" render ${common} --samples 0:2 --spp 4 -o r.exr)
 run_error("merge to a PNG" m.png "${E}m\\.png: merge writes an \\.exr" merge part0.exr part1.exr -o m.png)
+
+# BDPT: its settings are in the file, and what changes its estimate is compared
+set(cornell ${SOURCE}/scenes/cornell_box.json --device host --size 12x12 --quiet)
+set(bdpt ${cornell} --integrator bdpt)
+run_ok("bdpt part 0:2" render ${bdpt} --samples 0:2 -o bdpt0.exr)
+run_ok("bdpt part 2:4" render ${bdpt} --samples 2:4 -o bdpt1.exr)
+run_ok("bdpt merge" merge bdpt0.exr bdpt1.exr -o bdpt.exr --quiet)
+run_ok("bdpt resume 0:2 to 4" render ${bdpt} --resume bdpt0.exr --spp 4 -o bdpt_resumed.exr)
+find_program(OIIOTOOL oiiotool REQUIRED)
+execute_process(COMMAND ${OIIOTOOL} --info -v bdpt.exr WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE info)
+foreach(expected "dtoadq:integrator: \"bdpt\"" "dtoadq:mis_heuristic: \"balance\"" "dtoadq:max_vertices: [0-9]+" "dtoadq:sample_ranges: \"0:4\"")
+  if(NOT info MATCHES "${expected}")
+    list(APPEND problems "the merged BDPT render's header lacks '${expected}'")
+  endif()
+endforeach()
+run_ok("bdpt part, power heuristic" render ${bdpt} --mis power --samples 4:5 -o power.exr)
+run_ok("bdpt part, shorter paths" render ${bdpt} --max-depth 3 --samples 4:5 -o short.exr)
+run_ok("lt part" render ${cornell} --integrator lt --samples 4:5 -o lt.exr)
+run_error("merge another MIS heuristic" m.exr "${E}power\\.exr: dtoadq:mis_heuristic: \"power\", but bdpt0\\.exr has \"balance\""
+          merge bdpt0.exr power.exr -o m.exr)
+run_error("merge another path length" m.exr "${E}short\\.exr: dtoadq:max_depth: \"3\", but bdpt0\\.exr has \"[0-9]+\""
+          merge bdpt0.exr short.exr -o m.exr)
+run_error("merge another integrator" m.exr "${E}lt\\.exr: dtoadq:integrator: \"lt\", but bdpt0\\.exr has \"bdpt\""
+          merge bdpt0.exr lt.exr -o m.exr)
+run_error("resume with another MIS heuristic" r.exr "${E}bdpt0\\.exr: dtoadq:mis_heuristic: \"balance\", but this render has \"power\""
+          render ${bdpt} --mis power --resume bdpt0.exr --spp 4 -o r.exr)
+run_error("resume with another path length" r.exr "${E}bdpt0\\.exr: dtoadq:max_depth: \"[0-9]+\", but this render has \"3\""
+          render ${bdpt} --max-depth 3 --resume bdpt0.exr --spp 4 -o r.exr)
+run_error("resume with the path tracer" r.exr "${E}bdpt0\\.exr: dtoadq:integrator: \"bdpt\", but this render has \"pt\""
+          render ${cornell} --integrator pt --resume bdpt0.exr --spp 4 -o r.exr)
 
 include(${CMAKE_CURRENT_LIST_DIR}/finish_driver.cmake)
 finish_driver("split render in ${WORK}" "parts, merge and resume")

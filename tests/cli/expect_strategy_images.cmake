@@ -1,6 +1,6 @@
 # cmake -P driver: `render --integrator bdpt --strategies DIR` writes one weighted and one
-# unweighted EXR per strategy (s, t) of paths up to --max-vertices, and a contact sheet; the
-# MIS-weighted images sum to the bdpt image of the same seed and samples. EXE, SOURCE, WORK.
+# unweighted EXR per strategy (s, t) of paths up to --max-depth + 2 vertices, and a contact sheet;
+# the MIS-weighted images sum to the bdpt image of the same seed and samples. EXE, SOURCE, WORK.
 #
 # The scene (tests/cli/data/point_light_room.json) has one point light and a pinhole, so the random
 # numbers BDPT's connections draw (which light, which point on it, which lens point) change nothing:
@@ -12,8 +12,9 @@ file(MAKE_DIRECTORY ${WORK})
 set(width 8)
 set(height 8)
 set(spp 2)
-set(max_vertices 4)
-execute_process(COMMAND ${EXE} render ${SOURCE}/tests/cli/data/point_light_room.json --integrator bdpt --max-vertices ${max_vertices}
+set(max_depth 2)
+math(EXPR max_vertices "${max_depth} + 2")
+execute_process(COMMAND ${EXE} render ${SOURCE}/tests/cli/data/point_light_room.json --integrator bdpt --max-depth ${max_depth}
                         --size ${width}x${height} --spp ${spp} --quiet --strategies ${WORK}/strategies -o ${WORK}/render.exr
                 RESULT_VARIABLE status ERROR_VARIABLE err OUTPUT_QUIET)
 set(problems)
