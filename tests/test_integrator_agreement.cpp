@@ -207,7 +207,7 @@ TEST_CASE("Integrator agreement: BDPT and the light tracer against the path trac
 TEST_CASE("Integrator agreement: BDPT against the path tracer under environments", "[render][agreement][sweep]") {
     std::vector<Case> cases = {
         {"bare plane, constant environment", kBarePlane, "constant:1,1,1", 6, 32, 16, 0, 0.02},
-        {"spheres on a plane, courtyard.exr", kSpheresOnPlane, "envmaps/courtyard.exr", 6, 32, 128, 0, 0.025},
+        {"spheres on a plane, courtyard.exr", kSpheresOnPlane, "envmaps/courtyard.exr", 6, 32, 192, 0, 0.02},
         {"shader_ball, courtyard.exr", "scenes/shader_ball.json", "envmaps/courtyard.exr", 6, 32, 32, 0, 0.06},
     };
     for (const Case& c : cases) check_case(c);
