@@ -111,9 +111,9 @@ inline Mean image_mean(const lab::film::ImageRgb& image) {
 
 inline std::vector<Case> cases() {
     double s = 0.2 * 0.2;
-    return {{"inside a reflecting emitter", reflecting_emitter_scene(), 1.0},
-            {"point lights at the centre of a Lambert sphere", point_light_scene(), 1.0},
-            {"black emissive sphere at the centre of a Lambert sphere", black_sphere_scene(), 0.5 * s / (1.0 - 0.5 * (1.0 - s))},
+    return {{"inside a reflecting emitter", reflecting_emitter_scene(), 1.0, ""},
+            {"point lights at the centre of a Lambert sphere", point_light_scene(), 1.0, ""},
+            {"black emissive sphere at the centre of a Lambert sphere", black_sphere_scene(), 0.5 * s / (1.0 - 0.5 * (1.0 - s)), ""},
             {"endless Lambert plane under a constant environment", lambert_plane_scene(), 0.5, "constant:1,1,1"},
             {"white furnace: a Lambert torus of reflectance 1 under a constant environment", white_furnace_scene(), 1.0, "constant:1,1,1"}};
 }

@@ -54,7 +54,7 @@ TEST_CASE("BDPT: each strategy alone converges to the same image", "[render][bdp
       "materials": {)") + kWall + R"(},
       "emitters": [{"center": [0, 0, 0], "radius": 1, "radiance": [0.25, 0.25, 0.25], "material": "wall"}]})";
     for (int k : {3, 4}) {
-        Case c{"emitting Lambert sphere, paths of " + std::to_string(k) + " vertices", scene, 0.25 * std::pow(0.5, k - 2)};
+        Case c{"emitting Lambert sphere, paths of " + std::to_string(k) + " vertices", scene, 0.25 * std::pow(0.5, k - 2), ""};
         for (int s = 0; s < k; ++s) {
             bool splats = k - s == 1;  // light tracing's paths spread over the film: 16 times the paths for its error
             lab::render::RenderInput input = bdpt_input(c, lab::render::Integrator::bdpt, splats ? 16 : 8);

@@ -59,6 +59,7 @@ struct Case {
     int lt_spp;         // the light tracer's samples per batch; 0: not compared (above)
     double power;       // the stated bound on the detectable difference
     lab::render::LightSampling sampling = lab::render::LightSampling::mis;  // the path tracer's (BDPT has its own)
+    bool without_point_lights = false;  // the path tracer cannot sample a point light seen through smooth glass (below)
 };
 
 lab::render::RenderInput case_input(const Case& c) {
@@ -68,6 +69,7 @@ lab::render::RenderInput case_input(const Case& c) {
     input.settings.width = input.settings.height = kSize;
     input.settings.max_depth = c.max_depth;
     input.settings.light_sampling = c.sampling;
+    if (c.without_point_lights) input.scene.point_lights.clear();
     return input;
 }
 
@@ -180,6 +182,12 @@ const std::string kSpheresUnderLight =
 //  - door_ajar: lit only indirectly, through the door (15 %).
 //  - veach_mis: the plates' highlights of the small lights and their glossy caustics on the floor
 //    (20 %).
+//  - material_showcase, without its point light: the path tracer cannot sample the point light's
+//    caustic under the smooth glass ball (light - glass - floor - eye: next-event estimation from
+//    the floor is blocked by the glass, and no BSDF sample hits a point), which BDPT's light
+//    subpaths carry. With the point light, bdpt is 3 % brighter than pt in that quadrant (t 5-6);
+//    lit by the point light alone, 8.5 % (64 x 32, 6 x 64 spp, z 28 in the ball's block); without
+//    it, the two agree everywhere.
 std::vector<Case> own_light_cases() {
     using lab::render::LightSampling;
     return {
@@ -188,7 +196,7 @@ std::vector<Case> own_light_cases() {
         {"depth_of_field", "scenes/depth_of_field.json", "", 6, 32, 64, 0, 0.12},
         {"door_ajar", "scenes/door_ajar.json", "", 6, 32, 48, 96, 0.15},
         {"glossy_large_light", "scenes/glossy_large_light.json", "", 6, 32, 32, 0, 0.10},
-        {"material_showcase", "scenes/material_showcase.json", "", 6, 32, 96, 0, 0.12},
+        {"material_showcase", "scenes/material_showcase.json", "", 6, 32, 96, 0, 0.12, LightSampling::mis, true},
         {"metaballs", "scenes/metaballs.json", "", 6, 32, 32, 64, 0.10},
         {"veach_mis", "scenes/veach_mis.json", "", 6, 32, 64, 0, 0.20},
     };
