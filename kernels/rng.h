@@ -104,13 +104,14 @@ SS_FN uint rng_next_uint(Rng* r) {
     return result;
 }
 
-/* The generator of sample `sample` of pixel `pixel`: Philox of the counter (pixel, sample, 0, 0)
- * under the key (seed_lo, seed_hi). */
-SS_FN Rng rng_make(uint pixel, uint sample, uint seed_lo, uint seed_hi) {
+/* Generator `stream` of sample `sample` of pixel `pixel`: Philox of the counter
+ * (pixel, sample, stream, 0) under the key (seed_lo, seed_hi). Stream 0 is the sample's path;
+ * BDPT gives each connection strategy a stream of its own (kernels/bdpt.h). */
+SS_FN Rng rng_make_stream(uint pixel, uint sample, uint stream, uint seed_lo, uint seed_hi) {
     Philox4 c;
     c.v[0] = pixel;
     c.v[1] = sample;
-    c.v[2] = 0u;
+    c.v[2] = stream;
     c.v[3] = 0u;
     Philox4 x = philox4x32_10(c, seed_lo, seed_hi);
     Rng r;
@@ -121,6 +122,9 @@ SS_FN Rng rng_make(uint pixel, uint sample, uint seed_lo, uint seed_hi) {
     if ((r.s0 | r.s1 | r.s2 | r.s3) == 0u) r.s0 = 1u; /* xoshiro's one fixed point (probability 2^-128) */
     return r;
 }
+
+/* The generator of sample `sample` of pixel `pixel`: stream 0. */
+SS_FN Rng rng_make(uint pixel, uint sample, uint seed_lo, uint seed_hi) { return rng_make_stream(pixel, sample, 0u, seed_lo, seed_hi); }
 
 /* The path's next four numbers, in order. */
 SS_FN float4 rng_next4(Rng* r) {

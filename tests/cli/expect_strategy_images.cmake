@@ -2,11 +2,11 @@
 # unweighted EXR per strategy (s, t) of paths up to --max-depth + 2 vertices, and a contact sheet;
 # the MIS-weighted images sum to the bdpt image of the same seed and samples. EXE, SOURCE, WORK.
 #
-# The scene (tests/cli/data/point_light_room.json) has one point light and a pinhole, so the random
-# numbers BDPT's connections draw (which light, which point on it, which lens point) change nothing:
-# a strategy rendered alone adds, bit for bit, the contributions it adds to the whole image (its
-# subpaths are drawn before any connection, from the same stream). The sums then differ only in
-# their order of float additions, and the tolerance is the bound on that.
+# The scene (scenes/depth_of_field.json: an environment, a sphere light, a thin lens) makes BDPT's
+# connections draw random numbers (which light, which point on it, which lens point). Each strategy
+# draws them from a stream of its own (kernels/bdpt.h), and the subpaths come before any connection,
+# so a strategy rendered alone adds, bit for bit, the contributions it adds to the whole image. The
+# sums then differ only in their order of float additions, and the tolerance is the bound on that.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(width 8)
@@ -14,7 +14,7 @@ set(height 8)
 set(spp 2)
 set(max_depth 2)
 math(EXPR max_vertices "${max_depth} + 2")
-execute_process(COMMAND ${EXE} render ${SOURCE}/tests/cli/data/point_light_room.json --integrator bdpt --max-depth ${max_depth}
+execute_process(COMMAND ${EXE} render ${SOURCE}/scenes/depth_of_field.json --integrator bdpt --max-depth ${max_depth}
                         --size ${width}x${height} --spp ${spp} --quiet --strategies ${WORK}/strategies -o ${WORK}/render.exr
                 RESULT_VARIABLE status ERROR_VARIABLE err OUTPUT_QUIET)
 set(problems)
