@@ -196,7 +196,7 @@ std::vector<Case> own_light_cases() {
         {"depth_of_field", "scenes/depth_of_field.json", "", 6, 32, 64, 0, 0.12},
         {"door_ajar", "scenes/door_ajar.json", "", 6, 32, 48, 96, 0.15},
         {"glossy_large_light", "scenes/glossy_large_light.json", "", 6, 32, 32, 0, 0.10},
-        {"material_showcase", "scenes/material_showcase.json", "", 6, 32, 96, 0, 0.12, LightSampling::mis, true},
+        {"material_showcase", "scenes/material_showcase.json", "", 6, 32, 128, 0, 0.14, LightSampling::mis, true},
         {"metaballs", "scenes/metaballs.json", "", 6, 32, 32, 64, 0.10},
         {"veach_mis", "scenes/veach_mis.json", "", 6, 32, 64, 0, 0.20},
     };
