@@ -151,8 +151,10 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
                 float weight;
                 /* the light sample (s = 1) and the lens sample (t = 1) draw from the strategy's own
                  * stream: a strategy rendered alone (--strategies) draws what it draws in the whole
-                 * render, so the strategy images add up to the render */
-                Rng connection_rng = rng_make_stream((uint)pixel, (uint)(k->first_sample + i), (uint)(1 + s * 32 + t), k->seed_lo, k->seed_hi);
+                 * render, so the strategy images add up to the render; the other strategies draw none */
+                Rng connection_rng = rng;
+                if (s == 1 || t == 1)
+                    connection_rng = rng_make_stream((uint)pixel, (uint)(k->first_sample + i), (uint)(1 + s * 32 + t), k->seed_lo, k->seed_hi);
                 float3 c = bdpt_connect(k, s_march, camera, scene, light, cam, s, t, &connection_rng, &raster, &weight, &counters);
                 if (!k->unweighted) c = c * weight;
                 /* a NaN or infinite contribution or weight is counted before anything can drop it */

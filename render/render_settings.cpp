@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/input_error.hpp"
+#include "kernels/host.hpp"
 
 namespace lab::render {
 
@@ -50,6 +51,8 @@ LightSampling parse_light_sampling(const std::string& text, const std::string& o
 const char* integrator_name(Integrator integrator) { return word_of(integrator, kIntegratorWords); }
 const char* light_sampling_name(LightSampling sampling) { return word_of(sampling, kLightSamplingWords); }
 const char* normal_method_name(NormalMethod method) { return word_of(method, kNormalWords); }
+
+static_assert(kBdptMaxDepth + 2 == BDPT_VERTEX_LIMIT, "bdpt's depth limit is what the host build's vertex arrays hold");
 
 void check_render_settings(const RenderSettings& settings) {
     if (settings.width < 1 || settings.height < 1 || settings.width > kMaxImageSide || settings.height > kMaxImageSide ||
