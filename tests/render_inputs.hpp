@@ -30,6 +30,14 @@ inline lab::render::RenderInput render_input(const std::optional<brdf::Material>
     return input;
 }
 
+// A white Lambert sphere of radius 1 in the middle of the view, no light of its own: what the
+// non-finite checks of the path tracer and BDPT render under a sky that overflows.
+inline const char* const kWhiteSphereScene = R"({
+  "camera": {"type": "pinhole", "position": [0, 0, 3.2], "look_at": [0, 0, 0], "fov_degrees": 40},
+  "materials": {"sample": {"albedo": [1, 1, 1], "lobes": {"diffuse": 1}}},
+  "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}}]
+})";
+
 struct RenderResult {
     lab::film::ImageRgb image;
     lab::render::RenderStatistics stats;

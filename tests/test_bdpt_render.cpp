@@ -120,12 +120,8 @@ TEST_CASE("BDPT: the same seed gives the same image", "[render][bdpt][seed]") {
 // sample with a non-finite contribution or weight is counted, and at one sample per pixel exactly
 // those pixels have no finite sample and show as NaN, instead of passing for black or dark.
 TEST_CASE("BDPT: non-finite contributions are counted and left out of the image", "[render][bdpt][nonfinite]") {
-    const char* sphere = R"({
-      "camera": {"type": "pinhole", "position": [0, 0, 3.2], "look_at": [0, 0, 0], "fov_degrees": 40},
-      "materials": {"sample": {"albedo": [1, 1, 1], "lobes": {"diffuse": 1}}},
-      "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}}]
-    })";
-    lab::render::RenderInput input = render_input(std::nullopt, "constant:3e38,3e38,3e38", 16, lab::render::LightSampling::mis, 0, sphere);
+    lab::render::RenderInput input =
+        render_input(std::nullopt, "constant:3e38,3e38,3e38", 16, lab::render::LightSampling::mis, 0, kWhiteSphereScene);
     input.settings.integrator = lab::render::Integrator::bdpt;
     input.settings.max_depth = 4;
     lab::render::HostRenderer renderer(input, 1);

@@ -15,14 +15,8 @@
 
 namespace {
 
-const char* kSphere = R"({
-  "camera": {"type": "pinhole", "position": [0, 0, 3.2], "look_at": [0, 0, 0], "fov_degrees": 40},
-  "materials": {"sample": {"albedo": [1, 1, 1], "lobes": {"diffuse": 1}}},
-  "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}}]
-})";
-
 lab::render::RenderStatistics render(const lab::opencl::Runtime& runtime, lab::render::LightSampling sampling, lab::film::ImageRgb* image) {
-    lab::render::RenderInput input = render_input(std::nullopt, "constant:3e38,3e38,3e38", 16, sampling, 0, kSphere);
+    lab::render::RenderInput input = render_input(std::nullopt, "constant:3e38,3e38,3e38", 16, sampling, 0, kWhiteSphereScene);
     input.settings.max_depth = 4;
     lab::render::OpenClRenderer renderer(runtime, input);
     RenderResult r = render_samples(renderer, 1);
