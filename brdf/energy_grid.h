@@ -1,5 +1,5 @@
 /* The grid of the energy-compensation tables (brdf/energy_table_*.h, written by
- * validation/generate_energy_tables.cpp): directional albedo E(mu) of the single-scattering
+ * tools/generate_energy_tables from validation/energy_tables.cpp): directional albedo E(mu) of the single-scattering
  * microfacet reflection with F = 1 over mu = cos theta, perceptual roughness and (Hyper-Cauchy) shape,
  * and its cosine-weighted average. Lookups interpolate linearly between the nodes. */
 #ifndef BRDF_ENERGY_GRID_H

@@ -1,4 +1,4 @@
-// White-furnace tests of the preview (kernels/preview.cl on PoCL): the test model without its
+// White-furnace tests of the preview (the path tracer, kernels/path_tracer.cl, on PoCL): the test model without its
 // ground under a constant environment of radiance 1. A white Lambert surface then reflects exactly
 // what it receives, however many bounces a path takes, so every pixel must be 1. Conductors of
 // albedo 1 lose what their microfacet model loses (single scattering); on a convex sphere, where no

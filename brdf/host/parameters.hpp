@@ -1,5 +1,6 @@
 // The table of material parameters: key, range, default, meaning. One table serves the preset
-// loader, the docs, the validation sweeps and (later) the viewer's sliders.
+// loader, the validation sweeps, the fit's parameter space, the viewer's material panel and the
+// range table of docs/materials.md (which the tests check against it).
 #pragma once
 
 #include <array>
