@@ -1,12 +1,12 @@
 // dtoadq bench compare --to OLD_BINARY: paths/s of this build against another build of dtoadq on the
 // same scenes in one run, as a ratio. Each build renders each scene with `render --time` as a
 // child process, the two interleaved and repeated, and the paths/s come from what every render
-// writes into its EXR (dtoadq:spp and dtoadq:seconds, in every build since the render core), so
-// an older build needs no new option to be measured. The median of the repeats is reported, and the
-// median of each repeat's own ratio with its range.
+// writes into its EXR (dtoadq:spp and dtoadq:seconds, which every build with the render core
+// writes), so the other build needs no new option to be measured. The median of the repeats is
+// reported, and the median of each repeat's own ratio with its range.
 // Then the same for `bench objects`' grids of N objects (cli/bench_grid.hpp), written as scene
 // files for both builds: the cost per path of one more object in each build, fitted over N, and
-// their ratio (issue 12's per-object target is below 1/3 against the build before the speed work).
+// their ratio.
 // Figures, not timed tests.
 #include <sys/wait.h>
 #include <unistd.h>

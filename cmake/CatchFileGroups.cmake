@@ -4,7 +4,7 @@
 # of its own (they are the long ones, so they start first and spread over the cores).
 # Why not one ctest test per case (catch_discover_tests): each test process loads OpenImageIO and
 # its 260 shared libraries, 0.27 s of CPU before main (0.54 s under the sanitizers): 445 starts
-# took about 87 s of the test command's time on two cores, 136 take about 26 s. The cases are the
+# would take about 87 s of the test command's time on two cores, 136 take about 26 s. The cases are the
 # same; a failing group's output names its failing case. The list is read off the built
 # executable, as catch_discover_tests does.
 set(_CATCH_FILE_GROUPS_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/catch_file_groups_discover.cmake)

@@ -116,8 +116,8 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
  * each path's camera ray in `rays` and its generator after the ray's four numbers in `camera_rngs`
  * (four arrays of `stride` words), as path_tracer_camera_step computes them one path at a time, to
  * the bit; then it marches them (march_granule). One launch instead of a camera step and a march,
- * and the camera's Philox, divisions and square root eight paths to an instruction: the camera
- * step, one path per work-item, was a seventh of the sphere's time. */
+ * and the camera's Philox, divisions and square root eight paths to an instruction: a camera
+ * step of one path per work-item costs a seventh of the sphere's time. */
 __kernel void march_camera_rays(RenderKernelSettings settings, Camera camera, int paths, int stride, __global float* rays,
                                 __global uint* camera_rngs, __global RayMarch* marches) {
     const int first = (int)get_global_id(0) * MARCH_RAYS_PER_ITEM;

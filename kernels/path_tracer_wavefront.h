@@ -108,8 +108,8 @@ SS_FN SS_INLINE_ALWAYS void prefetch_step_environment(const RenderKernelSettings
 
 /* Asks the cache for the lines of path `path`'s state that prefetch_step_environment reads (its
  * direction, depth, flags and generator: 36 to 100 bytes into the 148), sixteen paths ahead, so
- * that its peek eight paths ahead does not wait for them: that first touch of the state was a
- * quarter of the peek's time in perf, and the hardware's stream prefetcher did not reach so far.
+ * that its peek eight paths ahead does not wait for them: without it, that first touch of the state
+ * is a quarter of the peek's time in perf; the hardware's stream prefetcher does not reach so far.
  * PoCL's CPU wavefront only, as prefetch_step_environment; no bit of the image changes. */
 SS_FN void prefetch_step_state(GLOBAL_MEM const PathState* states, int path, int paths) {
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)

@@ -64,8 +64,8 @@ SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
     s.max_steps = k->max_steps;
     s.max_distance = k->max_distance;
     s.over_relaxation = k->over_relaxation;
-    /* each entry by itself, not in a loop: PoCL kept the settings of such a loop in memory for every
-     * work-item of the wavefront's step (docs/render.md, stop 29) */
+    /* each entry by itself, not in a loop: PoCL keeps the settings of such a loop in memory for every
+     * work-item of the wavefront's step (docs/render.md, "Code PoCL compiles well") */
     s.surface_lo[0] = k->surface_lo[0];
     s.surface_lo[1] = k->surface_lo[1];
     s.surface_lo[2] = k->surface_lo[2];

@@ -6,8 +6,8 @@
  * 2, 3") per path maps (pixel, sample) under the seed's key to 128 random bits; they seed a
  * xoshiro128** generator (Blackman and Vigna 2018, "Scrambled linear pseudorandom number
  * generators") that gives the path's numbers, four per rng_next4. Philox for every draw (ten rounds,
- * four 32x32->64 multiplies each, per four numbers) took 17 to 22 % of the path tracer's time on one
- * sphere under courtyard.exr, this takes 8 to 10 % (docs/render.md, "Random numbers"). A xoshiro128**
+ * four 32x32->64 multiplies each, per four numbers) would take 17 to 22 % of the path tracer's time on
+ * one sphere under courtyard.exr, this takes 8 to 10 % (docs/render.md, "Random numbers"). A xoshiro128**
  * step is a few shifts, xors and two small multiplies, all 32-bit. Philox keeps ten rounds: seven
  * saved 1.5 to 3.5 %, within the noise. Streams of different paths start at independent uniform
  * points of xoshiro's 2^128 - 1 period and a path draws at most a few hundred numbers, so two paths'
@@ -48,8 +48,8 @@ SS_FN uint philox_mul_hi(uint a, uint b) {
         v3 = lo0;                                              \
     }
 
-/* Ten rounds, the key bumped by the Weyl constants between rounds. Unrolled in kernels: the
- * camera step of a far sphere (every camera ray a miss) ran 1.08x faster (median of eight renders). */
+/* Ten rounds, the key bumped by the Weyl constants between rounds. Unrolled in kernels: a far
+ * sphere (every camera ray a miss, the camera step half its time) renders 1.08x faster so. */
 #define PHILOX4X32_10(TYPE, MUL_HI, v0, v1, v2, v3, key0, key1)     \
     {                                                               \
         uint k0_ = (key0), k1_ = (key1);                            \

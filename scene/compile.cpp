@@ -226,8 +226,8 @@ constexpr size_t kGuessMinObjects = 16;
 // Whether an object is worth a box test of its own: it costs more than the test, and its box
 // bounds it along two axes or more (with f >= dist(p, box), which a broken repetition does not
 // keep). A box bounded along one axis is a slab that most rays of a scene cross: the repetition
-// scene's colonnade, an endless row of columns, had a test that skipped nothing (3.00 distance
-// evaluations per step with and without it) and cost 13-17 % of its paths/s (bench objects).
+// scene's colonnade, an endless row of columns, would have a test that skips nothing (3.00 distance
+// evaluations per step with and without it) and costs 13-17 % of its paths/s (bench objects).
 bool worth_bounding(const Object& object, const ShapeAnalysis& a) {
     int bounded = int(std::isfinite(a.box_half.x)) + int(std::isfinite(a.box_half.y)) + int(std::isfinite(a.box_half.z));
     return bounded >= 2 && a.broken.empty() && evaluation_cost(object.shape) >= kBoundedObjectCost;
@@ -309,7 +309,7 @@ private:
     }
 
     // The tree in two passes, both straight-line code with literal boxes (a loop over a stack and a
-    // switch ran 8x slower on PoCL for 11x fewer evaluations). First a guess: down the nearer child
+    // switch runs 8x slower on PoCL for 11x fewer evaluations). First a guess: down the nearer child
     // (by box distance) at every node to one object, evaluated, so that the boxes of the second pass
     // are tested against a small distance. Then every group in tree order, each guarded by its box
     // test, skipping the guessed object (variable g).

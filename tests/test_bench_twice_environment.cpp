@@ -44,10 +44,10 @@ TEST_CASE("Bench: the environment-twice build gives the default build's film bit
 }
 
 // The BSDF stand-in (-DBENCH_STANDIN_BSDF, a grey Lambert reflector) must replace the calls the path
-// tracer makes: until stop 29 it redefined bsdf_eval, bsdf_pdf and bsdf_sample, which the path
-// tracer no longer calls (it calls the *_clamped forms), so its build rendered the default build's
-// very film and `bench breakdown` read noise as the BSDF's share. On the test model, whose
-// materials are not grey Lambert, its film must differ; that old stand-in fails this check.
+// tracer makes (the *_clamped forms): a stand-in that redefined functions the path tracer does not
+// call (bsdf_eval, bsdf_pdf, bsdf_sample) would render the default build's very film, and `bench
+// breakdown` would read noise as the BSDF's share. On the test model, whose materials are not grey
+// Lambert, its film must differ; such a stand-in fails this check.
 TEST_CASE("Bench: the BSDF stand-in build replaces the path tracer's BSDF", "[render][bench][opencl]") {
     const lab::scene::Scene model = lab::scene::load_test_model();
     CHECK(render_bench_build(model, "").film.accumulation != render_bench_build(model, "-DBENCH_STANDIN_BSDF").film.accumulation);

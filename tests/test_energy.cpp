@@ -129,8 +129,8 @@ TEST_CASE("furnace: mixtures (metallic, mirror, coat, transmission)", "[energy][
 TEST_CASE("furnace by quadrature: heavy-tailed Hyper-Cauchy at grazing incidence", "[energy][sweep]") {
     // The bound by quadrature, which no sampler enters: for the heaviest tails at grazing incidence
     // a check that does not rest on the visible-normal sampler (its sampled furnace:
-    // test_energy_compensation.cpp). Written when Hyper-Cauchy normals were sampled from D cos,
-    // whose weights there had infinite variance for shape <= 2.
+    // test_energy_compensation.cpp), whose sampler is not what is checked here: normals sampled
+    // from D cos would give weights of infinite variance there for shape <= 2.
     double largest = 0.0;
     for (float shape : {1.6f, 2.0f, 3.0f})
         for (float theta : {60.0f, 85.0f, 89.9f, 120.0f, 175.0f})

@@ -120,7 +120,7 @@ TEST_CASE("energy tables: entries agree with an independent Monte Carlo estimate
 TEST_CASE("energy tables: the committed tables are what the generator writes", "[energy_compensation]") {
     // a regeneration of sample rows at the generator's own resolution (tools/generate_energy_tables),
     // rounded up to the tables' 16-bit step (brdf/energy_grid.h): never below the estimate, less than a
-    // step above it (2e-7: the tables were once printed as floats to 7 decimals)
+    // step above it (2e-7: a margin for float rounding between this regeneration and the generator's)
     auto check_row = [](const std::function<double(float, float)>& albedo, int n_r, int n_mu, int i, const unsigned short* committed) {
         std::vector<float> row = energy_slice(albedo, n_r, n_mu, 2, i, i);
         for (int j = 0; j < n_mu; ++j) {
@@ -305,8 +305,8 @@ TEST_CASE("Hyper-Cauchy visible normals: the sampled furnace needs no quadrature
 
 TEST_CASE("energy compensation: the compensated presets reflect at most what they receive, up to grazing view",
           "[energy_compensation]") {
-    // gold reached 1.0013 at 89.9 deg and frosted glass 1.0020 from inside at 120 deg while the tables
-    // were not conservative; validate's limit 1 + 1e-3 and its estimator (3 standard errors, then
+    // with tables that are not conservative, gold reaches 1.0013 at 89.9 deg and frosted glass 1.0020
+    // from inside at 120 deg; validate's limit 1 + 1e-3 and its estimator (3 standard errors, then
     // quadrature) decide, as for `dtoadq validate`
     for (const char* path : {"presets/gold.json", "presets/frosted_glass.json"}) {
         brdf::Material m = brdf::load_preset(path).material;
@@ -321,7 +321,7 @@ TEST_CASE("energy compensation: the compensated presets reflect at most what the
 TEST_CASE("energy tables: every table a kernel can hold fits the 64 KB of __constant memory OpenCL guarantees",
           "[energy_compensation]") {
     // a kernel with Hyper-Cauchy and dielectric materials holds all three sets (brdf/features.h); as
-    // floats they were 70056 bytes. The 64 KB are CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE's minimum (OpenCL 1.2).
+    // floats they would be 70056 bytes. The 64 KB are CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE's minimum (OpenCL 1.2).
     size_t bytes = sizeof(brdf::energy_ggx_albedo) + sizeof(brdf::energy_ggx_average) + sizeof(brdf::energy_hyper_cauchy_albedo) +
                    sizeof(brdf::energy_hyper_cauchy_average) + sizeof(brdf::energy_dielectric_albedo) +
                    sizeof(brdf::energy_dielectric_average) + sizeof(brdf::energy_dielectric_fresnel_average);

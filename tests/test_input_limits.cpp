@@ -1,6 +1,6 @@
 // The loaders' limits (scene/scene_limits.hpp, the preset's): a file far beyond any real one stops
-// with one line naming the file and what was too much - the 50,000-level nested scene of issue 10
-// used to overflow the stack - and a scene just inside the limits still loads.
+// with one line naming the file and what was too much - a 50,000-level nested scene would overflow
+// the parser's stack - and a scene just inside the limits still loads.
 #include <catch2/catch.hpp>
 
 #include <cstdio>

@@ -273,8 +273,8 @@ TEST_CASE("OpenCL: PoCL provides a device and selectors pick it", "[opencl]") {
     CHECK(chosen.device != nullptr);
     CHECK(lab::opencl::select_device(devices.front().id()).device == devices.front().device);
     CHECK(lab::opencl::select_device("cpu").type == "cpu");
-    // part of a name, in any case: the chosen device's own name, upper-cased (PoCL's CPU device was
-    // "pthread-..." and is "cpu-..." in newer releases)
+    // part of a name, in any case: the chosen device's own name, upper-cased (PoCL's CPU device is
+    // "pthread-..." in older releases and "cpu-..." in newer ones)
     std::string upper = chosen.device_name;
     for (char& ch : upper) ch = char(std::toupper(static_cast<unsigned char>(ch)));
     CHECK(lab::opencl::select_device(upper).device == chosen.device);

@@ -99,8 +99,8 @@ TEST_CASE("Region t-test: the environment's light samples give the image BSDF sa
     // the environment's alias tables and divides by their density, BSDF sampling never reads them,
     // so a wrong probability anywhere on the map would show as a difference of the two images. (Under
     // a map with a small sun, sunset.exr, BSDF sampling's rare huge values break the t-test's normal
-    // approximation: one region of 12 was rejected there where the light-sampled images of this
-    // build and of the cdf sampler before it agree within their noise at 8192 samples per pixel.)
+    // approximation: one region of 12 is rejected there, although the light-sampled images of the
+    // alias tables and of a cdf sampler agree within their noise at 8192 samples per pixel.)
     lab::opencl::Runtime runtime("");
     lab::render::RenderInput input;
     input.scene = lab::scene::load_scene("tools/bench_scenes/sphere.json");

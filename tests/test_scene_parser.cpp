@@ -84,7 +84,7 @@ TEST_CASE("scene parser: the base scene is valid", "[scene]") {
 
 TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[scene]") {
     // {JSON pointer, the value set there (JSON text), the error}: plain strings, not Json values, since
-    // a table of thousands of Json temporaries took 35 s of CPU to compile under the sanitizers.
+    // a table of thousands of Json temporaries takes 35 s of CPU to compile under the sanitizers.
     struct Mutation {
         const char* pointer;
         const char* value;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Equal-time preview error of every preset, this build against another dtoadq binary (issue 11's
-# "Preview" figure). Per preset and version it renders the preview twice at SPP samples per pixel
+# Equal-time preview error of every preset, this build against another dtoadq binary
+# (docs/materials.md, "Preview with and without energy compensation"). Per preset and version it renders the preview twice at SPP samples per pixel
 # with two seeds, A and B, interleaving the versions so that load changes on a shared machine hit
 # both alike. Each version is measured against itself: with two independent unbiased images,
 # E[(A - B)^2] = 2 sigma^2, so sigma_N = sqrt(mean((A - B)^2) / 2) is the RMSE of an N-sample preview
