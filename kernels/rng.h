@@ -9,7 +9,7 @@
  * four 32x32->64 multiplies each, per four numbers) would take 17 to 22 % of the path tracer's time on
  * one sphere under courtyard.exr, this takes 8 to 10 % (docs/render.md, "Random numbers"). A xoshiro128**
  * step is a few shifts, xors and two small multiplies, all 32-bit. Philox keeps ten rounds: seven
- * saved 1.5 to 3.5 %, within the noise. Streams of different paths start at independent uniform
+ * would save 1.5 to 3.5 %, within the noise. Streams of different paths start at independent uniform
  * points of xoshiro's 2^128 - 1 period and a path draws at most a few hundred numbers, so two paths'
  * sequences overlap with negligible probability. */
 #ifndef KERNELS_RNG_H

@@ -1,7 +1,7 @@
 // A bounding-volume tree over a scene's bounded objects, for the generated distance field: a march
 // step tests a group's box before evaluating anything in it, so the cost of a point grows with the
-// objects near it and the tree's depth, not with every object of the scene (issue: "model no more
-// than a scene needs" also holds per point). The boxes come from scene/lipschitz.hpp, where
+// objects near it and the tree's depth, not with every object of the scene (a kernel holds only
+// what its scene uses, and a point evaluates only what is near it). The boxes come from scene/lipschitz.hpp, where
 // f(p) >= dist(p, box) outside an object's box: a group whose box is farther than the nearest
 // surface found so far cannot change the minimum.
 #pragma once

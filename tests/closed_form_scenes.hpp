@@ -21,7 +21,7 @@
 // The last two have one light, the environment, so both selection modes are the same estimator
 // (BDPT's light subpaths from an environment start on a disk of the scene's bounding sphere, which
 // the endless plane does not have). Every pixel has the same expectation, so the test compares the image mean with the exact value;
-// the issue asks for 1 %, and the test first requires the mean's own standard error (from the spread
+// it must be within 1 %, and the test first requires the mean's own standard error (from the spread
 // of the pixel means, an estimate independent of the expected value) to be small enough that a
 // 1 % error would show.
 #pragma once

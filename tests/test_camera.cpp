@@ -143,7 +143,7 @@ TEST_CASE("camera: W_e and its pdf are normalised over the film's directions", "
         double we = 0.0, pdf = 0.0;
         // pbrt's relation at every direction the film sees: pdf_direction = W_e lens_area cos theta,
         // pdf_position = 1 / lens_area. Checked with the same Approx as a REQUIRE would, counted here and
-        // asserted once after the loop (a REQUIRE per direction cost 4/5 of the test under the sanitizers);
+        // asserted once after the loop (a REQUIRE per direction costs 4/5 of the test under the sanitizers);
         // the first direction that breaks it is reported.
         long broken = 0;
         std::string first_broken;

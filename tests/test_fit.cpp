@@ -57,8 +57,8 @@ Material case_material(const RoundTripCase& c) {
 }  // namespace
 
 // The test's pairs and starts are fewer than the command's defaults (docs/fitting.md) to keep it
-// cheap; the data are noise-free and the model holds the truth, so the tolerances are the issue's
-// own: 5 % in roughness, 2 % in each albedo channel.
+// cheap; the data are noise-free and the model holds the truth, so the tolerances are the fit's
+// stated accuracy (docs/fitting.md): 5 % in roughness, 2 % in each albedo channel.
 // [sweep]: 7 s of CPU in the plain build; the sanitized run covers the same code through the short
 // search of the test below.
 TEST_CASE("fit: MERL files made from known lab materials give their roughness and albedo back", "[fit][sweep]") {

@@ -42,7 +42,7 @@ TEST_CASE("every bundled preset loads and round-trips through JSON", "[presets]"
             if (param.field) CHECK(again.material.*param.field == Approx(p.material.*param.field).margin(1e-6));
         for (int c = 0; c < 3; ++c) CHECK(again.material.albedo[c] == Approx(p.material.albedo[c]));
     }
-    // the issue asks for at least these
+    // the lab ships at least these: conductors, dielectrics, skin, glass and the 2017 model
     for (const char* name : {"gold", "copper", "brushed_aluminium", "glossy_plastic", "rubber", "skin", "glass", "dtoadq2017_typical"})
         CHECK(fs::exists(fs::path("presets") / (std::string(name) + ".json")));
     CHECK(count >= 8);
