@@ -118,9 +118,9 @@ void run_bench_compare(const BenchCompareCommand& c) {
         // global size's class among them), into its cache, so that no figure may pay for it: two
         // renders of each build first. In the first, a cold compile takes the whole time of its
         // first launch, and the launches stay at one sample; in the second, they double (up to
-        // some 0.125 s each) to their largest shapes, compiling those. One render of 0.01 s left the
+        // some 0.125 s each) to their largest shapes, compiling those. One render of 0.01 s leaves the
         // larger launches' compiles in the first repeat (a grid of 64 objects at 0.62x, one repeat at
-        // 0.05x); so did one render of 0.5 s after a change of the kernels.
+        // 0.05x); so does one render of 0.5 s after a change of the kernels.
         const double warm_up = std::min(c.seconds, 0.5);
         for (int w = 0; w < 2; ++w) {
             render_paths_per_second(c.other, c, scene, folder / "other.exr", warm_up);
