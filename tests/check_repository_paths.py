@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """Fails when a repository path named in a doc or in a source comment does not exist.
 
-Scans README.md, docs/*.md (their text and their relative links) and the comments of the source files (C, C++, OpenCL, CMake, Python,
-shell) for tokens that start with a top-level folder of the repository and a slash
-(`render/film_resolve.cpp`, `kernels/lights/`), and checks that each names a file or a folder.
-A token without an extension may name the files of a pair (`render/renderer` for renderer.hpp and
-renderer.cpp); a token with `*` or `<placeholder>` is a pattern that must match at least one path.
-A moved or renamed file then fails here until every doc and comment that names it follows it.
+Scans README.md, docs/*.md (their text and their relative links) and the comments of the source
+files (C, C++, OpenCL, CMake, Python, shell) for tokens that start with a top-level folder of the
+repository and a slash (`render/film_resolve.cpp`, `kernels/lights/`), and checks that each names
+a file or a folder. A token without an extension may name the files of a pair (`render/renderer`
+for renderer.hpp and renderer.cpp); a token with `*`, `<placeholder>` or a NAME in capitals is a
+pattern that must match at least one path. A moved or renamed file then fails here until every doc
+and comment that names it follows it. Before it scans, it checks on a small tree of its own that it
+finds broken references of each kind.
 
 Usage: check_repository_paths.py [REPOSITORY_ROOT]   (default: the folder above this script)
 Prints one line per missing path, FILE:LINE: PATH, and exits 1 if there is any.
@@ -15,9 +17,10 @@ import glob
 import os
 import re
 import sys
+import tempfile
 
-# Top-level folders whose paths are checked: these, and any other folder at the top level now, so a
-# reference to a folder that has since been removed still fails.
+# Top-level folders whose paths are checked: these, and any other folder at the top level, so a
+# reference into a removed folder still fails.
 KNOWN_TOP_LEVEL = {
     "brdf", "cli", "cmake", "common", "docs", "envmaps", "film", "fit", "fuzz", "ibl", "kernels",
     "opencl", "plots", "presets", "render", "scene", "scenes", "sdf", "single_source", "tests",
@@ -39,7 +42,8 @@ NOT_IN_THE_SOURCE_TREE = {
     "kernels/broken.cl": "an in-memory kernel source of tests/test_opencl_agreement.cpp",
 }
 
-# Folders never scanned: build outputs, the fuzzing corpus (inputs, not prose).
+# Folders never scanned besides hidden ones, build*/ and any build tree (a CMakeCache.txt): the
+# fuzzing corpus (inputs, not prose).
 SKIPPED_FOLDERS = ("fuzz/corpus",)
 
 C_LIKE = (".cpp", ".hpp", ".h", ".cl", ".c")
@@ -121,6 +125,7 @@ def scanned_files(root):
         rel = os.path.relpath(folder, root)
         dirs[:] = sorted(d for d in dirs
                          if not d.startswith(".") and not (rel == "." and d.startswith("build"))
+                         and not os.path.exists(os.path.join(folder, d, "CMakeCache.txt"))
                          and os.path.normpath(os.path.join(rel, d)) not in SKIPPED_FOLDERS)
         for name in sorted(files):
             path = os.path.normpath(os.path.join(rel, name))
@@ -130,12 +135,12 @@ def scanned_files(root):
                 yield path, hash_comments
 
 
-def main():
-    root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1
-                           else os.path.join(os.path.dirname(__file__), ".."))
+def missing_paths(root):
+    """([FILE:LINE: PATH for each path that names nothing], how many paths were checked)."""
     top_level = KNOWN_TOP_LEVEL | {d for d in os.listdir(root)
                                    if os.path.isdir(os.path.join(root, d)) and not d.startswith(".")
-                                   and not d.startswith("build")}
+                                   and not d.startswith("build")
+                                   and not os.path.exists(os.path.join(root, d, "CMakeCache.txt"))}
     missing, checked = [], 0
     for path, comments in scanned_files(root):
         with open(os.path.join(root, path), encoding="utf-8", errors="replace") as f:
@@ -160,6 +165,37 @@ def main():
                     linked = os.path.normpath(os.path.join(os.path.dirname(path), target))
                     if not os.path.exists(os.path.join(root, linked)):
                         missing.append(f"{path}:{number}: {target} (link)")
+    return missing, checked
+
+
+def scanner_finds_broken_paths():
+    """The check must be able to fail: a small tree with one good and one broken reference of each
+    kind (doc text, doc link, C++ comment, CMake comment; a path inside a string is no comment)."""
+    with tempfile.TemporaryDirectory() as root:
+        def write(path, text):
+            os.makedirs(os.path.dirname(os.path.join(root, path)), exist_ok=True)
+            with open(os.path.join(root, path), "w") as f:
+                f.write(text)
+        write("README.md", "See `render/film.cpp` and `render/gone.cpp`.\n")
+        write("docs/a.md", "[b](b.md), [c](c.md), render/film\n")
+        write("docs/b.md", "")
+        write("render/film.cpp", 'const char* s = "render/not_a_comment.cpp";\n// render/film.cpp\n/* x\n kernels/gone.h */\n')
+        write("render/CMakeLists.txt", "\x23 render/film.cpp render/gone.cmake\n")  # \x23: "#", so that this line is no comment
+        missing, _ = missing_paths(root)
+        expected = ["README.md:1: render/gone.cpp", "docs/a.md:1: c.md (link)", "render/CMakeLists.txt:1: render/gone.cmake",
+                    "render/film.cpp:4: kernels/gone.h"]
+        if sorted(missing) != sorted(expected):
+            print("the scanner itself is broken: found", missing, "expected", expected)
+            return False
+    return True
+
+
+def main():
+    root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1
+                           else os.path.join(os.path.dirname(__file__), ".."))
+    if not scanner_finds_broken_paths():
+        return 1
+    missing, checked = missing_paths(root)
     for row in missing:
         print(row)
     if missing:
