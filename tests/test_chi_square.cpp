@@ -11,6 +11,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/angles.hpp"
 #include "brdf/host/parameters.hpp"
+#include "tests/chi_square_suite.hpp"
 #include "tests/lobe_material.hpp"
 #include "validation/chi_square.hpp"
 
@@ -119,8 +120,7 @@ void run_group(const std::string& group) {
         for (int d = 0; d < 5; ++d) {
             float theta = s.inside ? 180.0f - kThetas[d] : kThetas[d];
             brdf::float3 wo = brdf::direction_from_degrees(theta, kPhis[d]);
-            ChiSquareOptions options;
-            options.tests = total_tests();
+            ChiSquareOptions options = chi_square_suite_options();
             options.seed = 1000 * i + d + 1;  // independent tests, as Sidak assumes
             ChiSquareResult r = lab::validation::chi_square_bsdf(s.material, wo, options);
             ++runs;
@@ -141,6 +141,7 @@ void run_group(const std::string& group) {
 
 TEST_CASE("chi-square suite covers at least 20 settings x 5 directions", "[chi_square]") {
     CHECK(settings().size() >= 20);
+    CHECK(total_tests() == kChiSquareSuiteTests);  // the Sidak level the power checks use
 }
 
 TEST_CASE("chi-square: diffuse lobes", "[chi_square][sweep]") { run_group("diffuse"); }

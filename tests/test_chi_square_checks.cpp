@@ -8,6 +8,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/angles.hpp"
 #include "brdf/host/parameters.hpp"
+#include "tests/chi_square_suite.hpp"
 #include "tests/lobe_material.hpp"
 #include "validation/chi_square.hpp"
 #include "validation/chi_square_distribution.hpp"
@@ -25,12 +26,8 @@ brdf::Material ggx_metal(float roughness) {
     return m;
 }
 
-// The level the BSDF suite uses (Sidak over its 125 tests): a wrong pdf must fail even there.
-ChiSquareOptions suite_options() {
-    ChiSquareOptions o;
-    o.tests = 125;
-    return o;
-}
+// The suite's sample count and level (Sidak over its tests): a wrong pdf must fail even there.
+ChiSquareOptions suite_options() { return chi_square_suite_options(); }
 
 }  // namespace
 
