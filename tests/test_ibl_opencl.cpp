@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ibl/environment.hpp"
+#include "kernels/host/embedded_sources.hpp"
 #include "opencl/kernel_source.hpp"
 #include "opencl/runtime.hpp"
 #include "validation/uniform_random.hpp"
@@ -68,7 +69,7 @@ TEST_CASE("ibl: the OpenCL build of environment.h agrees with the C++ build", "[
     const std::string entry = "tests/ibl_environment_batch.cl";
     auto lookup = [&](const std::string& path) -> std::string_view {
         if (path == entry) return kKernel;
-        return lab::opencl::embedded_kernel_file(path);
+        return lab::kernels::embedded_kernel_file(path);
     };
     lab::opencl::Runtime runtime;
     const lab::opencl::Program program = runtime.build(lab::opencl::assemble_source(entry, lookup),
