@@ -14,7 +14,7 @@
 #include "opencl/runtime.hpp"
 #include "validation/uniform_random.hpp"
 
-using brdf::float3;
+using single_source::float3;
 
 namespace {
 
@@ -81,7 +81,7 @@ TEST_CASE("ibl: the OpenCL build of environment.h agrees with the C++ build", "[
         runtime.write(b, data, bytes);
         return b;
     };
-    const auto texels = input(env.texels().data(), env.texels().size() * sizeof(brdf::float4));
+    const auto texels = input(env.texels().data(), env.texels().size() * sizeof(single_source::float4));
     const auto alias = input(env.alias().data(), env.alias().size() * sizeof(lab::ibl::AliasEntry));
     const auto dir_buffer = input(directions.data(), directions.size() * sizeof(float));
     const auto u_buffer = input(u.data(), u.size() * sizeof(float));
