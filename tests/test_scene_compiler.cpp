@@ -16,6 +16,7 @@
 #include "scene/compile.hpp"
 #include "scene/interpreter.hpp"
 #include "scene/load_scene.hpp"
+#include "scene/source_literals.hpp"
 #include "test_scene_points.hpp"
 
 using lab::scene::CompiledScene;
