@@ -31,7 +31,7 @@ void run_albedo(const AlbedoOptions& o) {
     plots::require_writable(o.png, "-o");
     if (!o.csv.empty()) plots::require_writable(o.csv, "--csv");
     std::vector<brdf::Preset> presets = with_compensation(load_presets(o.materials), o.compensation);
-    plots::AlbedoCurveOptions options;
+    analysis::AlbedoCurveOptions options;
     options.angles = o.angles;
     options.strata = o.strata;
     options.phi_deg = float(o.phi_in);

@@ -18,7 +18,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "common/input_error.hpp"
-#include "opencl/brdf_batch.hpp"
+#include "kernels/host/brdf_batch.hpp"
 #include "validation/parallel_for.hpp"
 #include "validation/random_inputs.hpp"
 #include "validation/sampling_efficiency.hpp"
@@ -105,7 +105,7 @@ struct OpenClRates {
     double end_to_end[3] = {0, 0, 0};  // including upload and download
 };
 
-OpenClRates opencl_rates(opencl::BrdfBatch& batch, const Workload& w, int repeats) {
+OpenClRates opencl_rates(kernels::BrdfBatch& batch, const Workload& w, int repeats) {
     OpenClRates rates;
     double n = double(w.index.size());
     for (int op = 0; op < 3; ++op) {
@@ -114,7 +114,7 @@ OpenClRates opencl_rates(opencl::BrdfBatch& batch, const Workload& w, int repeat
             if (op == 0) g_sink = g_sink + batch.eval(w.index, w.wo, w.wi)[0].x;
             else if (op == 1) g_sink = g_sink + batch.pdf(w.index, w.wo, w.wi)[0];
             else g_sink = g_sink + batch.sample(w.index, w.wo, w.u)[0].pdf;
-            const opencl::BatchTiming& t = batch.last_timing();
+            const kernels::BatchTiming& t = batch.last_timing();
             best_kernel = std::min(best_kernel, t.kernel);
             best_total = std::min(best_total, t.upload + t.kernel + t.download);
         }
@@ -192,10 +192,10 @@ void run_bench_brdf(const BenchBrdfOptions& o) {
     // A unique -D changes the program's hash, so the first build misses PoCL's kernel cache (and
     // leaves an entry of about 0.3 MB there). The plain build twice: the second is warm for sure.
     std::string nonce = "-D DTOADQ_COLD_BUILD=" + std::to_string(Clock::now().time_since_epoch().count());
-    opencl::BrdfBatch cold(runtime, nonce);
-    opencl::BrdfBatch first(runtime);  // warm if an earlier run cached it
-    opencl::BrdfBatch batch(runtime);  // warm now in any case
-    std::printf("\nOpenCL build of kernels/brdf_batch.cl (%s):\n", opencl::BrdfBatch::kBuildOptions);
+    kernels::BrdfBatch cold(runtime, nonce);
+    kernels::BrdfBatch first(runtime);  // warm if an earlier run cached it
+    kernels::BrdfBatch batch(runtime);  // warm now in any case
+    std::printf("\nOpenCL build of kernels/brdf_batch.cl (%s):\n", kernels::BrdfBatch::kBuildOptions);
     std::printf("  cold  %7.3f s clBuildProgram + %7.3f s first launch of the 3 kernels\n", cold.build_seconds(), cold.first_launch_seconds());
     std::printf("  warm  %7.3f s clBuildProgram + %7.3f s first launch (PoCL kernel cache)\n", batch.build_seconds(),
                 batch.first_launch_seconds());

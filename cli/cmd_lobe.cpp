@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
+#include "analysis/lobe_data.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "common/input_error.hpp"
-#include "plots/lobe_data.hpp"
 #include "plots/lobe_plot.hpp"
 #include "plots/output_file.hpp"
 
@@ -29,7 +29,7 @@ void run_lobe(const LobeOptions& o) {
     if (!std::isfinite(o.theta_in) || o.theta_in < 0.0 || o.theta_in >= 90.0)
         throw InputError("command line", "--theta-in", "must be in [0, 90) degrees");
     if (!std::isfinite(o.phi_in)) throw InputError("command line", "--phi-in", "must be a finite angle in degrees");
-    if (!(o.resolution >= 0.1 && o.resolution <= 30.0) || !plots::is_lobe_grid_step(float(o.resolution)))
+    if (!(o.resolution >= 0.1 && o.resolution <= 30.0) || !analysis::is_lobe_grid_step(float(o.resolution)))
         throw InputError("command line", "--resolution", "must divide 90 and lie in [0.1, 30] degrees");
     if (o.scale != "auto" && o.scale != "linear" && o.scale != "log")
         throw InputError("command line", "--scale", "expected auto, linear or log, got \"" + o.scale + "\"");

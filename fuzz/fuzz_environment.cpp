@@ -46,7 +46,7 @@ double pdf_integral(const lab::ibl::Environment& env) {
                 for (double oa : offsets)
                     for (double ob : offsets) {
                         const double a = -1.0 + cell * (i + oa), b = -1.0 + cell * (j + ob);
-                        const brdf::float3 local = brdf::normalize(::ibl::cubemap_face_point(face, float(a), float(b)));
+                        const single_source::float3 local = single_source::normalize(::ibl::cubemap_face_point(face, float(a), float(b)));
                         const float pdf = env.pdf(::ibl::environment_to_world(&env.map(), local));
                         FUZZ_REQUIRE(std::isfinite(pdf) && pdf > 0.0f, "the pdf is not finite and positive");
                         const double jacobian = std::pow(1.0 + a * a + b * b, 1.5);
@@ -78,7 +78,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         return 0;
     }
     const lab::ibl::Environment& env = *loaded;
-    for (const brdf::float4& t : env.texels())
+    for (const single_source::float4& t : env.texels())
         FUZZ_REQUIRE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && t.x >= 0.0f && t.y >= 0.0f && t.z >= 0.0f,
                      "a texel is negative or not finite");
     // float rounding only: the pdf and the cdf are floats (2^-24 each), summed over 6 n^2 texels
@@ -88,10 +88,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (int k = 0; k < 16; ++k) {
         const float u1 = (k + 0.5f) / 16.0f, u2 = std::fmod(0.618034f * (k + 1), 1.0f);
         float pdf = 0.0f;
-        const brdf::float3 d = env.sample(u1, u2, &pdf);
+        const single_source::float3 d = env.sample(u1, u2, &pdf);
         FUZZ_REQUIRE(std::isfinite(pdf) && pdf > 0.0f, "a sample's pdf is not finite and positive");
-        FUZZ_REQUIRE(std::fabs(brdf::length(d) - 1.0f) < 1e-4f, "a sampled direction is not a unit vector");
-        const brdf::float3 l = env.radiance(d);
+        FUZZ_REQUIRE(std::fabs(single_source::length(d) - 1.0f) < 1e-4f, "a sampled direction is not a unit vector");
+        const single_source::float3 l = env.radiance(d);
         FUZZ_REQUIRE(std::isfinite(l.x) && std::isfinite(l.y) && std::isfinite(l.z), "the radiance of a sampled direction is not finite");
     }
     return 0;

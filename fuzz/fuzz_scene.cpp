@@ -9,9 +9,9 @@
 
 #include "common/input_error.hpp"
 #include "fuzz/fuzz_check.hpp"
+#include "kernels/host/scene_kernel_source.hpp"
 #include "scene/compile.hpp"
 #include "scene/load_scene.hpp"
-#include "scene/scene_source.hpp"
 
 namespace {
 
@@ -22,7 +22,7 @@ struct Compiled {
 
 Compiled compile(const std::string& text) {
     const lab::scene::CompiledScene c = lab::scene::compile_scene(lab::scene::parse_scene(text, "scenes/fuzz.json"));
-    return {c.source, lab::scene::assemble_scene_kernel("kernels/scene_probe.cl", c).text, c.lipschitz};
+    return {c.source, lab::kernels::assemble_scene_kernel("kernels/scene_probe.cl", c).text, c.lipschitz};
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ double texel_solid_angle(int face_size, int i, int j) {
 
 double luminance(double r, double g, double b) { return lab::luminance(r, g, b); }
 
-std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<brdf::float4>& texels, int face_size) {
+std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<single_source::float4>& texels, int face_size) {
     const int n = face_size;
     const int rows = CUBEMAP_FACES * n;
     if (n <= 0 || texels.size() != size_t(rows) * size_t(n))
@@ -60,7 +60,7 @@ std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<brdf::float
         const int j = r % n;
         double sum = 0.0;
         for (int i = 0; i < n; ++i) {
-            const brdf::float4& t = texels[size_t(r) * n + i];
+            const single_source::float4& t = texels[size_t(r) * n + i];
             fallback[i] = solid_angle[size_t(j) * n + i];
             weights[i] = luminance(t.x, t.y, t.z) * fallback[i];
             sum += weights[i];
@@ -92,7 +92,7 @@ std::vector<float> cubemap_texel_probabilities(const std::vector<AliasEntry>& al
     return probability;
 }
 
-void store_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size, std::vector<brdf::float4>* texels) {
+void store_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size, std::vector<single_source::float4>* texels) {
     const std::vector<float> probability = cubemap_texel_probabilities(alias, face_size);
     if (texels->size() != probability.size())
         throw std::invalid_argument("store_texel_probabilities: texels do not match the face size");

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "brdf/brdf.hpp"
+#include "single_source/host_vocabulary.hpp"
 #include "ibl/alias_table.hpp"
 
 namespace lab::ibl {
@@ -42,7 +42,7 @@ double luminance(double r, double g, double b);
 // texels', floored among the rows. A row without light falls back to its texels' solid angles
 // (uniform within the row) and gets the floor's share of the rows' table; an environment without
 // light falls back to solid angles everywhere: uniform over the sphere.
-std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<brdf::float4>& texels, int face_size);
+std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<single_source::float4>& texels, int face_size);
 
 // The probability with which the sampler draws each of the 6N^2 texels through those tables: its
 // row's times the texel's in the row, each exact for the generator's numbers
@@ -51,6 +51,6 @@ std::vector<float> cubemap_texel_probabilities(const std::vector<AliasEntry>& al
 
 // Writes into every texel's w its probability through `alias`, which environment_pdf() reads back
 // (ibl/environment.h). Must run again whenever the texels or their tables change.
-void store_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size, std::vector<brdf::float4>* texels);
+void store_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size, std::vector<single_source::float4>* texels);
 
 }  // namespace lab::ibl

@@ -64,7 +64,7 @@ std::string trim(const std::string& s) {
 }
 
 // "R,G,B" after "constant:".
-brdf::float3 parse_constant(const std::string& text, const std::string& origin) {
+single_source::float3 parse_constant(const std::string& text, const std::string& origin) {
     std::vector<std::string> parts;
     size_t start = 0;
     while (true) {
@@ -90,7 +90,7 @@ brdf::float3 parse_constant(const std::string& text, const std::string& origin) 
         if (value[c] < 0.0f)
             throw InputError(origin, "constant", std::string(names[c]) + " is negative: \"" + p + "\"");
     }
-    return brdf::float3(value[0], value[1], value[2]);
+    return single_source::float3(value[0], value[1], value[2]);
 }
 
 std::string lowercase_extension(const std::string& path) {
@@ -101,11 +101,11 @@ std::string lowercase_extension(const std::string& path) {
 
 }  // namespace
 
-Environment::Environment(std::vector<brdf::float4> texels, int face_size, std::string source,
+Environment::Environment(std::vector<single_source::float4> texels, int face_size, std::string source,
                          const EnvironmentOptions& options)
     : texels_(std::move(texels)), source_(std::move(source)) {
     map_.face_size = face_size;
-    for (const brdf::float4& t : texels_) brightest_ = std::max({brightest_, t.x, t.y, t.z});
+    for (const single_source::float4& t : texels_) brightest_ = std::max({brightest_, t.x, t.y, t.z});
     set_transform(options.rotation_degrees, options.exposure_stops);
     alias_ = build_cubemap_alias_tables(texels_, face_size);
     store_texel_probabilities(alias_, face_size, &texels_);  // environment_pdf() reads them
@@ -118,12 +118,12 @@ Environment Environment::from_image(const LatLongImage& image, std::string sourc
     return Environment(equirect_to_cubemap(image, n), n, std::move(source), options);
 }
 
-Environment Environment::constant(brdf::float3 radiance, std::string source, const EnvironmentOptions& options) {
+Environment Environment::constant(single_source::float3 radiance, std::string source, const EnvironmentOptions& options) {
     validate(options);
-    if (!brdf::finite3(radiance) || radiance.x < 0.0f || radiance.y < 0.0f || radiance.z < 0.0f)
+    if (!single_source::finite3(radiance) || radiance.x < 0.0f || radiance.y < 0.0f || radiance.z < 0.0f)
         throw InputError(options.origin, "constant", "radiance must be finite and non-negative");
     const int n = options.face_size > 0 ? options.face_size : kMinAutomaticFaceSize;
-    std::vector<brdf::float4> texels(size_t(CUBEMAP_FACES) * n * n, brdf::float4(radiance, 1.0f));
+    std::vector<single_source::float4> texels(size_t(CUBEMAP_FACES) * n * n, single_source::float4(radiance, 1.0f));
     return Environment(std::move(texels), n, std::move(source), options);
 }
 
@@ -144,19 +144,19 @@ void Environment::set_transform(float rotation_degrees, float exposure_stops) {
     exposure_stops_ = exposure_stops;
 }
 
-brdf::float3 Environment::radiance(brdf::float3 direction) const {
+single_source::float3 Environment::radiance(single_source::float3 direction) const {
     return ::ibl::environment_radiance(&map_, texels_.data(), direction);
 }
 
-brdf::float3 Environment::radiance_filtered(brdf::float3 direction) const {
+single_source::float3 Environment::radiance_filtered(single_source::float3 direction) const {
     return ::ibl::environment_radiance_filtered(&map_, texels_.data(), direction);
 }
 
-brdf::float3 Environment::sample(float u1, float u2, float* pdf) const {
+single_source::float3 Environment::sample(float u1, float u2, float* pdf) const {
     return ::ibl::environment_sample(&map_, texels_.data(), alias_.data(), u1, u2, pdf);
 }
 
-float Environment::pdf(brdf::float3 direction) const {
+float Environment::pdf(single_source::float3 direction) const {
     return ::ibl::environment_pdf(&map_, texels_.data(), direction);
 }
 

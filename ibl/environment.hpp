@@ -30,12 +30,12 @@ public:
     // A lat-long image (finite, non-negative radiance; see read_latlong_image) on the cube.
     static Environment from_image(const LatLongImage& image, std::string source, const EnvironmentOptions& options);
     // The same radiance from every direction (non-negative, finite).
-    static Environment constant(brdf::float3 radiance, std::string source, const EnvironmentOptions& options);
+    static Environment constant(single_source::float3 radiance, std::string source, const EnvironmentOptions& options);
 
     // What a kernel gets: the struct by value and two __global buffers.
     const ::ibl::EnvironmentMap& map() const { return map_; }
     // 6 N^2: xyz the radiance before intensity, w the texel's probability (ibl/environment.h)
-    const std::vector<brdf::float4>& texels() const { return texels_; }
+    const std::vector<single_source::float4>& texels() const { return texels_; }
     // 6N + 6N^2: the rows' alias table, then each row's (ibl/environment.h)
     const std::vector<AliasEntry>& alias() const { return alias_; }
     int face_size() const { return map_.face_size; }
@@ -53,16 +53,16 @@ public:
     float exposure_stops() const { return exposure_stops_; }
 
     // The single-source functions of ibl/environment.h on this environment (world directions).
-    brdf::float3 radiance(brdf::float3 direction) const;
-    brdf::float3 radiance_filtered(brdf::float3 direction) const;
-    brdf::float3 sample(float u1, float u2, float* pdf) const;
-    float pdf(brdf::float3 direction) const;
+    single_source::float3 radiance(single_source::float3 direction) const;
+    single_source::float3 radiance_filtered(single_source::float3 direction) const;
+    single_source::float3 sample(float u1, float u2, float* pdf) const;
+    float pdf(single_source::float3 direction) const;
 
 private:
-    Environment(std::vector<brdf::float4> texels, int face_size, std::string source, const EnvironmentOptions& options);
+    Environment(std::vector<single_source::float4> texels, int face_size, std::string source, const EnvironmentOptions& options);
 
     ::ibl::EnvironmentMap map_{};
-    std::vector<brdf::float4> texels_;
+    std::vector<single_source::float4> texels_;
     std::vector<AliasEntry> alias_;
     std::string source_;
     float rotation_degrees_ = 0.0f, exposure_stops_ = 0.0f;

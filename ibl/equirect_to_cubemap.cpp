@@ -17,8 +17,8 @@ constexpr double kPi = 3.14159265358979323846;
 // Whether a face's points have x and z that depend on a alone and y on b alone (+x, -x, +z, -z), as
 // ibl/cubemap.h's cubemap_face_point lays them out.
 bool around_y_axis(int face) {
-    const brdf::float3 p = ::ibl::cubemap_face_point(face, 0.5f, 0.25f);
-    const brdf::float3 other_b = ::ibl::cubemap_face_point(face, 0.5f, -0.75f), other_a = ::ibl::cubemap_face_point(face, -0.5f, 0.25f);
+    const single_source::float3 p = ::ibl::cubemap_face_point(face, 0.5f, 0.25f);
+    const single_source::float3 other_b = ::ibl::cubemap_face_point(face, 0.5f, -0.75f), other_a = ::ibl::cubemap_face_point(face, -0.5f, 0.25f);
     return p.x == other_b.x && p.z == other_b.z && p.y == other_a.y;
 }
 
@@ -28,17 +28,17 @@ double latlong_azimuth(double x, double z) { return std::atan2(-x, z) / (2.0 * k
 
 double latlong_elevation(double y, double horizontal) { return 0.5 - std::atan2(y, horizontal) / kPi; }
 
-void latlong_coordinates(brdf::float3 d, double* u, double* v) {
+void latlong_coordinates(single_source::float3 d, double* u, double* v) {
     const double x = d.x, y = d.y, z = d.z;
     *u = latlong_azimuth(x, z);
     *v = latlong_elevation(y, std::sqrt(x * x + z * z));
 }
 
-brdf::float3 latlong_direction(double u, double v) {
+single_source::float3 latlong_direction(double u, double v) {
     const double phi = (u - 0.5) * 2.0 * kPi;     // atan2(-x, z)
     const double elevation = (0.5 - v) * kPi;     // atan2(y, hypot(x, z))
     const double c = std::cos(elevation);
-    return brdf::float3(float(-c * std::sin(phi)), float(std::sin(elevation)), float(c * std::cos(phi)));
+    return single_source::float3(float(-c * std::sin(phi)), float(std::sin(elevation)), float(c * std::cos(phi)));
 }
 
 LatLongTaps latlong_column_taps(int width, double u) {
@@ -56,7 +56,7 @@ LatLongTaps latlong_row_taps(int height, double v) {
     return {y0, std::min(y0 + 1, height - 1), fy - y0f};
 }
 
-brdf::float3 latlong_bilinear(const LatLongImage& image, const LatLongTaps& column, const LatLongTaps& row) {
+single_source::float3 latlong_bilinear(const LatLongImage& image, const LatLongTaps& column, const LatLongTaps& row) {
     const int w = image.width;
     auto pixel = [&](int x, int y, int c) { return double(image.rgb[(size_t(y) * w + x) * 3 + c]); };
     double rgb[3];
@@ -65,10 +65,10 @@ brdf::float3 latlong_bilinear(const LatLongImage& image, const LatLongTaps& colu
         const double bottom = pixel(column.first, row.second, c) + (pixel(column.second, row.second, c) - pixel(column.first, row.second, c)) * column.t;
         rgb[c] = top + (bottom - top) * row.t;
     }
-    return brdf::float3(float(rgb[0]), float(rgb[1]), float(rgb[2]));
+    return single_source::float3(float(rgb[0]), float(rgb[1]), float(rgb[2]));
 }
 
-brdf::float3 latlong_bilinear(const LatLongImage& image, double u, double v) {
+single_source::float3 latlong_bilinear(const LatLongImage& image, double u, double v) {
     return latlong_bilinear(image, latlong_column_taps(image.width, u), latlong_row_taps(image.height, v));
 }
 
@@ -78,14 +78,14 @@ int cubemap_supersampling(int image_width, int face_size) {
     return std::clamp(per_pixel, 4, 64);
 }
 
-std::vector<brdf::float4> equirect_to_cubemap(const LatLongImage& image, int face_size, int threads) {
+std::vector<single_source::float4> equirect_to_cubemap(const LatLongImage& image, int face_size, int threads) {
     const int n = face_size;
     if (n <= 0 || image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != size_t(image.width) * size_t(image.height) * 3)
         throw std::invalid_argument("equirect_to_cubemap: empty image or face size");
     const int s = cubemap_supersampling(image.width, n);
     const int samples = n * s;  // sample positions along a face's axis
-    std::vector<brdf::float4> texels(size_t(CUBEMAP_FACES) * n * n);
+    std::vector<single_source::float4> texels(size_t(CUBEMAP_FACES) * n * n);
 
     // Texel i's stratum si lies at face coordinate axis[i s + si], on both axes of every face.
     std::vector<float> axis(samples);
@@ -109,7 +109,7 @@ std::vector<brdf::float4> equirect_to_cubemap(const LatLongImage& image, int fac
         if (!side_face[face]) continue;
         if (first_side < 0) first_side = face;
         for (int k = 0; k < samples; ++k) {
-            const brdf::float3 p = ::ibl::cubemap_face_point(face, axis[k], 0.0f);
+            const single_source::float3 p = ::ibl::cubemap_face_point(face, axis[k], 0.0f);
             const double x = p.x, z = p.z;
             side[size_t(face) * samples + k] = {latlong_column_taps(image.width, latlong_azimuth(x, z)), std::sqrt(x * x + z * z)};
         }
@@ -146,7 +146,7 @@ std::vector<brdf::float4> equirect_to_cubemap(const LatLongImage& image, int fac
                     for (int si = 0; si < s; ++si) {
                         const int k = i * s + si;
                         const double w = scratch.weight[size_t(sj) * samples + k];
-                        brdf::float3 l;
+                        single_source::float3 l;
                         if (side_face[face]) {
                             const LatLongTaps row =
                                 shares_rows[face] ? scratch.rows[size_t(sj) * samples + k]
@@ -165,7 +165,7 @@ std::vector<brdf::float4> equirect_to_cubemap(const LatLongImage& image, int fac
                     }
                 }
                 texels[(size_t(face) * n + j) * n + i] =
-                    brdf::float4(float(sum[0] / weight_sum), float(sum[1] / weight_sum), float(sum[2] / weight_sum), 1.0f);
+                    single_source::float4(float(sum[0] / weight_sum), float(sum[1] / weight_sum), float(sum[2] / weight_sum), 1.0f);
             }
         }
     };

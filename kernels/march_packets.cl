@@ -1,6 +1,6 @@
 /* Packet kernels: marches on eight vector lanes per work-item (sdf/march_lanes.h with
  * SDF_LANES = 8, which the host defines when it builds this program; the scene's field comes in its
- * packet form, scene/compile.cpp). The path tracer's wavefront (kernels/path_tracer_wavefront.h)
+ * packet form, scene/generated_source.cpp). The path tracer's wavefront (kernels/path_tracer_wavefront.h)
  * takes the results from `marches`. */
 #pragma OPENCL FP_CONTRACT OFF
 

@@ -1,5 +1,5 @@
 /* The Material layout as this compiler sees it, for every kernel that reads a Material buffer:
- * the host compares it with its own before use (opencl/material_layout.hpp). */
+ * the host compares it with its own before use (kernels/host/material_layout.hpp). */
 #ifndef KERNELS_MATERIAL_LAYOUT_H
 #define KERNELS_MATERIAL_LAYOUT_H
 #include "brdf/material.h"

@@ -1,5 +1,5 @@
-// Kernel sources assembled from the files embedded in the binary (kernels/*.cl, brdf/*.h): every
-// `#include "..."` is expanded in place, and each line of the result remembers where it came from,
+// Kernel sources assembled from files a lookup serves (kernels/host/ serves the ones embedded in the
+// binary): every `#include "..."` is expanded in place, and each line of the result remembers where it came from,
 // so a compiler message about generated line N can name the original file and line.
 #pragma once
 
@@ -38,10 +38,6 @@ using SourceLookup = std::function<std::string_view(const std::string& path)>;
 // and all, so a kernel's source holds only the parts of the modules its scene uses.
 // Throws OpenClError naming the file and line of an include that resolves to no file.
 AssembledSource assemble_source(const std::string& entry, const SourceLookup& lookup);
-
-// The same over the files embedded at build time.
-AssembledSource assemble_embedded_source(const std::string& entry);
-std::string_view embedded_kernel_file(const std::string& path);
 
 // One "FILE:LINE:COL: message" diagnostic found in a compiler log, mapped back to its origin.
 struct BuildDiagnostic {

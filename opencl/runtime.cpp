@@ -48,10 +48,6 @@ Program Runtime::build(const AssembledSource& source, const std::string& options
     return Program(std::move(program), source);
 }
 
-Program Runtime::build_embedded(const std::string& entry, const std::string& options) const {
-    return build(assemble_embedded_source(entry), options);
-}
-
 BufferHandle Runtime::buffer(size_t bytes, cl_mem_flags flags) const {
     cl_int err = CL_SUCCESS;
     // OpenCL rejects zero-sized buffers; empty batches still get a valid (unused) one.

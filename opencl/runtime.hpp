@@ -1,5 +1,5 @@
 // One OpenCL device with its context and in-order queue, and what every kernel host needs:
-// building an embedded kernel source with mapped error messages, buffers, 1D launches.
+// building an assembled kernel source with mapped error messages, buffers, 1D launches.
 #pragma once
 
 #include <string>
@@ -38,7 +38,6 @@ public:
     // ~/.cache/pocl/kcache), so an unchanged source and option string build warm.
     // Throws KernelBuildError: first line the first error at its original file:line, then the log.
     Program build(const AssembledSource& source, const std::string& options) const;
-    Program build_embedded(const std::string& entry, const std::string& options) const;
 
     BufferHandle buffer(size_t bytes, cl_mem_flags flags) const;
     void write(const BufferHandle& buffer, const void* data, size_t bytes) const;

@@ -13,13 +13,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write_table(const std::vector<brdf::Preset>& presets, const std::vector<std::vector<AlbedoPoint>>& curves, const std::string& path,
+void write_table(const std::vector<brdf::Preset>& presets, const std::vector<std::vector<analysis::AlbedoPoint>>& curves, const std::string& path,
                  const std::string& field) {
     std::ofstream out = open_output(path, field);
     out << "material,theta,a_r,a_g,a_b,se_r,se_g,se_b\n";
     char row[256];
     for (size_t i = 0; i < presets.size(); ++i) {
-        for (const AlbedoPoint& p : curves[i]) {
+        for (const analysis::AlbedoPoint& p : curves[i]) {
             const validation::AlbedoEstimate& e = p.estimate;
             std::snprintf(row, sizeof row, ",%.7g,%.7g,%.7g,%.7g,%.4g,%.4g,%.4g\n", p.theta_deg, e.value.x, e.value.y, e.value.z,
                           e.std_error.x, e.std_error.y, e.std_error.z);
@@ -32,13 +32,13 @@ void write_table(const std::vector<brdf::Preset>& presets, const std::vector<std
 }  // namespace
 
 void write_albedo_chart(const std::vector<brdf::Preset>& presets, const std::string& png_path, const std::string& csv_path,
-                        const AlbedoCurveOptions& options) {
+                        const analysis::AlbedoCurveOptions& options) {
     if (presets.empty()) throw std::invalid_argument("albedo chart: no materials");
     require_writable(png_path, "");
     if (!csv_path.empty()) require_writable(csv_path, "");
 
-    std::vector<std::vector<AlbedoPoint>> curves;
-    for (const brdf::Preset& p : presets) curves.push_back(albedo_curve(p.material, options));
+    std::vector<std::vector<analysis::AlbedoPoint>> curves;
+    for (const brdf::Preset& p : presets) curves.push_back(analysis::albedo_curve(p.material, options));
     TempFolder folder;
     write_table(presets, curves, (folder.path() / "albedo.csv").string(), "");
     fs::path png = folder.path() / "albedo.png";

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/albedo_curve.hpp"
 #include "brdf/host/preset.hpp"
-#include "plots/albedo_curve.hpp"
 
 namespace lab::plots {
 
@@ -15,6 +15,6 @@ namespace lab::plots {
 // Throws lab::InputError naming a path that cannot be written, std::runtime_error when no Python
 // with matplotlib is found or the script fails.
 void write_albedo_chart(const std::vector<brdf::Preset>& presets, const std::string& png_path, const std::string& csv_path,
-                        const AlbedoCurveOptions& options = {});
+                        const analysis::AlbedoCurveOptions& options = {});
 
 }  // namespace lab::plots

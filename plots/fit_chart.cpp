@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "plots/lobe_data.hpp"
+#include "analysis/lobe_data.hpp"
 #include "plots/output_file.hpp"
 #include "plots/python_runner.hpp"
 
@@ -33,10 +33,10 @@ void write_fit_chart(const brdf::MeasuredTable& table, const brdf::Preset& fitte
         lobes << "theta_in_deg,angle_deg,measured,fitted\n";
         const brdf::Material& m = fitted.material;
         for (float theta_in : data.theta_in_deg) {
-            const std::vector<PlaneSample> measured = plane_slice(
+            const std::vector<analysis::PlaneSample> measured = analysis::plane_slice(
                 [&table](brdf::float3 wi, brdf::float3 wo) { return brdf::merl_eval(table.rgb.data(), wo, wi); }, theta_in, 0.0f,
                 data.plane_step_deg, false);
-            const std::vector<PlaneSample> model = plane_slice(
+            const std::vector<analysis::PlaneSample> model = analysis::plane_slice(
                 [&m](brdf::float3 wi, brdf::float3 wo) { return brdf::bsdf_eval(&m, wi, wo); }, theta_in, 0.0f, data.plane_step_deg, false);
             for (size_t k = 0; k < measured.size(); ++k)
                 lobes << number(theta_in) << "," << number(measured[k].angle_deg) << "," << number(measured[k].value) << ","

@@ -1,5 +1,5 @@
 // The fit's chart: measured against fitted lobes in the plane of incidence at several incident
-// angles (the lobe plot's slice, plots/lobe_data.hpp, with the measured curve from merl_eval), and
+// angles (the lobe plot's slice, analysis/lobe_data.hpp, with the measured curve from merl_eval), and
 // the fit's error over (theta_h, theta_d), drawn by the embedded fit_chart.py.
 #pragma once
 

@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "analysis/lobe_data.hpp"
+#include "analysis/luminance.hpp"
 #include "common/input_error.hpp"
-#include "plots/lobe_data.hpp"
-#include "plots/luminance.hpp"
 #include "plots/output_file.hpp"
 #include "plots/python_runner.hpp"
 
@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Fine enough along the plane for the sharpest glossy lobes; coarse enough for matplotlib's 3D.
-constexpr LobeResolution kPlotResolution{1.0f, 0.1f};
+constexpr analysis::LobeResolution kPlotResolution{1.0f, 0.1f};
 
 void check_incidence(float theta_in_deg, float phi_in_deg) {
     if (!(theta_in_deg >= 0.0f && theta_in_deg < 90.0f) || !std::isfinite(phi_in_deg))
@@ -30,7 +30,7 @@ std::string number(double v) {
     return text;
 }
 
-void write_plot_data(const std::vector<LobeData>& lobes, const fs::path& folder) {
+void write_plot_data(const std::vector<analysis::LobeData>& lobes, const fs::path& folder) {
     std::ofstream materials = open_output((folder / "materials.csv").string(), "");
     std::ofstream plane = open_output((folder / "plane.csv").string(), "");
     std::ofstream surface = open_output((folder / "surface.csv").string(), "");
@@ -40,14 +40,14 @@ void write_plot_data(const std::vector<LobeData>& lobes, const fs::path& folder)
     surface << "material,theta_deg,phi_deg,value\n";
     deltas << "material,theta_deg,phi_deg,plane_angle_deg,in_plane,transmission,w_r,w_g,w_b\n";
     for (size_t i = 0; i < lobes.size(); ++i) {
-        const LobeData& d = lobes[i];
+        const analysis::LobeData& d = lobes[i];
         materials << i << "," << csv_field(d.material) << "," << int(d.transmits) << "\n";
-        for (const PlaneSample& s : d.plane) plane << i << "," << number(s.angle_deg) << "," << number(s.value) << "\n";
-        for (const LobeSample& s : d.grid) {
-            double value = luminance(s.f) * std::fabs(std::cos(double(s.theta_deg) * M_PI / 180.0));
+        for (const analysis::PlaneSample& s : d.plane) plane << i << "," << number(s.angle_deg) << "," << number(s.value) << "\n";
+        for (const analysis::LobeSample& s : d.grid) {
+            double value = analysis::luminance(s.f) * std::fabs(std::cos(double(s.theta_deg) * M_PI / 180.0));
             surface << i << "," << number(s.theta_deg) << "," << number(s.phi_deg) << "," << number(value) << "\n";
         }
-        for (const DeltaLobe& l : d.deltas)
+        for (const analysis::DeltaLobe& l : d.deltas)
             deltas << i << "," << number(l.theta_deg) << "," << number(l.phi_deg) << "," << number(l.plane_angle_deg) << ","
                    << int(l.in_plane) << "," << int(l.transmission) << "," << number(l.weight.x) << "," << number(l.weight.y) << ","
                    << number(l.weight.z) << "\n";
@@ -64,9 +64,9 @@ void write_lobe_csv(const std::vector<brdf::Preset>& presets, float theta_in_deg
     std::ofstream out = open_output(csv_path, "");
     out << "material,theta_o,phi_o,f_r,f_g,f_b,pdf\n";
     for (const brdf::Preset& p : presets) {
-        LobeData d = compute_lobe(p, theta_in_deg, phi_in_deg, LobeResolution{theta_step_deg, kPlotResolution.plane_step_deg});
+        analysis::LobeData d = analysis::compute_lobe(p, theta_in_deg, phi_in_deg, analysis::LobeResolution{theta_step_deg, kPlotResolution.plane_step_deg});
         std::string name = csv_field(d.material);
-        for (const LobeSample& s : d.grid)
+        for (const analysis::LobeSample& s : d.grid)
             out << name << "," << number(s.theta_deg) << "," << number(s.phi_deg) << "," << number(s.f.x) << "," << number(s.f.y) << ","
                 << number(s.f.z) << "," << number(s.pdf) << "\n";
     }
@@ -80,8 +80,8 @@ void write_lobe_plot(const std::vector<brdf::Preset>& presets, float theta_in_de
     require_writable(png_path, "");
     if (!csv_path.empty()) require_writable(csv_path, "");
 
-    std::vector<LobeData> lobes;
-    for (const brdf::Preset& p : presets) lobes.push_back(compute_lobe(p, theta_in_deg, phi_in_deg, kPlotResolution));
+    std::vector<analysis::LobeData> lobes;
+    for (const brdf::Preset& p : presets) lobes.push_back(analysis::compute_lobe(p, theta_in_deg, phi_in_deg, kPlotResolution));
     TempFolder folder;
     write_plot_data(lobes, folder.path());
     fs::path png = folder.path() / "lobe.png";

@@ -3,7 +3,7 @@
 #include <atomic>
 #include <thread>
 
-#include "scene/host_field.hpp"
+#include "scene/field_for_kernel_headers.hpp"
 
 namespace lab::render {
 
@@ -13,7 +13,7 @@ namespace lab::render {
 namespace host_integrator {
 
 using namespace ::kernel;
-using namespace scene::host_field;
+using namespace scene::field_for_kernel_headers;
 
 #include "sdf/march.h"
 #include "sdf/normals.h"
@@ -54,7 +54,7 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange rang
     const bool bidirectional = input_.settings.integrator != Integrator::pt;
     std::atomic<int> next{range.first};
     auto work = [&] {
-        scene::host_field::current_scene = &input_.scene;
+        scene::field_for_kernel_headers::current_scene = &input_.scene;
         // Rows of pixels at a time: few enough atomics, small enough to balance the threads.
         const int chunk = std::max(1, input_.settings.width);
         for (int begin = next.fetch_add(chunk); begin < pixels; begin = next.fetch_add(chunk))

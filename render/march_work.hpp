@@ -1,5 +1,5 @@
 // What a path costs in march work, from the measurement build of the kernel: rays per path, march
-// steps per ray and distance functions evaluated per step (scene/compile.cpp's
+// steps per ray and distance functions evaluated per step (scene/generated_source.cpp's
 // SCENE_COUNT_EVALUATIONS). The counting build traces the very paths of the default build, so the
 // three come from two renders of the same samples. Used by `bench render` and `bench breakdown`.
 #pragma once

@@ -5,9 +5,9 @@
 #include <cstdint>
 
 #include "brdf/host/measured_registry.hpp"
-#include "opencl/material_layout.hpp"
+#include "kernels/host/material_layout.hpp"
+#include "kernels/host/scene_kernel_source.hpp"
 #include "render/host_renderer.hpp"
-#include "scene/scene_source.hpp"
 
 namespace lab::render {
 
@@ -73,8 +73,8 @@ void OpenClRenderer::build_kernel() {
     // option); the lights keep their kinds once built (Renderer::rebuild_lights changes an
     // environment's rotation and exposure only)
     build_options_ = options + " -DSCENE_LIGHT_TYPES=" + std::to_string(light_type_mask(lights_));
-    opencl::Program program = runtime_.build(scene::assemble_scene_kernel(kernel_file(s.integrator), compiled_), build_options_);
-    opencl::check_material_layout(runtime_, program);
+    opencl::Program program = runtime_.build(kernels::assemble_scene_kernel(kernel_file(s.integrator), compiled_), build_options_);
+    kernels::check_material_layout(runtime_, program);
     opencl::KernelHandle kernel = program.kernel(kernel_name(s.integrator));
     size_t kernel_max = 0;
     opencl::check_cl(clGetKernelWorkGroupInfo(kernel.get(), runtime_.device().device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max),
@@ -93,7 +93,7 @@ void OpenClRenderer::build_kernel() {
         resolve_kernel_ = program_->kernel("render_pt_resolve");
         // The marches see only the geometry (scene/generated.h): a change of materials, which
         // rebuilds the step kernel, keeps this program.
-        opencl::AssembledSource packets = scene::assemble_scene_kernel("kernels/march_packets.cl", compiled_);
+        opencl::AssembledSource packets = kernels::assemble_scene_kernel("kernels/march_packets.cl", compiled_);
         std::string packet_options = options + " -DSDF_LANES=8";
         if (!packet_program_ || packets.text != packet_source_ || packet_options != packet_options_) {
             packet_program_.emplace(runtime_.build(packets, packet_options));

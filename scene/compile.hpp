@@ -5,29 +5,15 @@
 #pragma once
 
 #include <limits>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "scene/compile_options.hpp"
 #include "scene/scene.hpp"
 
 namespace lab::scene {
-
-// What a viewer changes without editing the file.
-struct CompileOptions {
-    std::map<std::string, brdf::Material> material_overrides;  // declared material name -> its replacement
-    std::vector<std::string> disabled_objects;                 // object names to leave out
-    // Skip, at each point, an object whose bounding box is no nearer than the nearest surface found
-    // so far (the field is unchanged; docs/scenes.md, "Object bounds"), and end a ray's march once
-    // it has left the box of every surface (the same hits). Off for comparisons.
-    bool object_bounds = true;
-};
-
-// The scene with the options applied. Throws lab::InputError naming the scene file for a name the
-// scene does not declare, or when nothing would be left to render.
-Scene apply_options(const Scene& scene, const CompileOptions& options);
 
 struct CompiledScene {
     std::string file;                            // the scene file, for messages
@@ -63,9 +49,5 @@ struct CompiledScene {
 };
 
 CompiledScene compile_scene(const Scene& scene, const CompileOptions& options = {});
-
-// A float as an OpenCL C literal that reads back as exactly the same float: "%.9g", a decimal
-// point, and the f suffix ("1.0f", "-0.25f", "1.5e-07f").
-std::string float_literal(float value);
 
 }  // namespace lab::scene

@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "single_source/host_vocabulary.hpp"
 
 namespace lab::scene {
 
-using Vec3 = brdf::float3;
+using Vec3 = single_source::float3;
 
 // Primitives (sdf/primitives/); each sits at the origin of its local frame, axis y where it has one.
 struct Sphere { float radius; };

@@ -14,7 +14,7 @@ typedef struct MarchResult {
     int status;  /* MARCH_HIT, MARCH_MISS or MARCH_OUT_OF_STEPS */
     int steps;   /* distance evaluations made */
 #ifdef SCENE_COUNT_EVALUATIONS
-    uint evaluations; /* a measurement build: the objects' distance functions evaluated (scene/compile.cpp) */
+    uint evaluations; /* a measurement build: the objects' distance functions evaluated (scene/generated_source.cpp) */
 #endif
 } MarchResult;
 

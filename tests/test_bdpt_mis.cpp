@@ -24,12 +24,12 @@
 #include "render/camera_setup.hpp"
 #include "render/host_renderer.hpp"
 #include "render/light_set.hpp"
-#include "scene/host_field.hpp"
+#include "scene/field_for_kernel_headers.hpp"
 #include "tests/render_inputs.hpp"
 
 namespace bdpt_mis_test {
 using namespace ::kernel;
-using namespace lab::scene::host_field;
+using namespace lab::scene::field_for_kernel_headers;
 #include "sdf/march.h"
 #include "sdf/normals.h"
 #include "kernels/bdpt.h"

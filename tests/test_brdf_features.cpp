@@ -10,7 +10,8 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/features.hpp"
 #include "brdf/host/preset.hpp"
-#include "opencl/brdf_batch.hpp"
+#include "kernels/host/brdf_batch.hpp"
+#include "kernels/host/embedded_sources.hpp"
 #include "opencl/kernel_source.hpp"
 #include "opencl/runtime.hpp"
 #include "tests/lobe_material.hpp"
@@ -33,7 +34,7 @@ lab::opencl::AssembledSource assembled_with(const std::vector<brdf::Material>& m
     std::string prelude = brdf::feature_defines(materials) + "#include \"brdf/bsdf.h\"\n";
     return lab::opencl::assemble_source("generated/features_test.h", [&](const std::string& path) -> std::string_view {
         if (path == "generated/features_test.h") return prelude;
-        return lab::opencl::embedded_kernel_file(path);
+        return lab::kernels::embedded_kernel_file(path);
     });
 }
 
@@ -93,7 +94,7 @@ TEST_CASE("switched-off features never reach the kernel source", "[features]") {
     CHECK_FALSE(contains_file(table, "brdf/lab_model.h"));
 
     // Without switches everything is there, and the #if lines are left to the compiler.
-    lab::opencl::AssembledSource full = lab::opencl::assemble_embedded_source("kernels/brdf_batch.cl");
+    lab::opencl::AssembledSource full = lab::kernels::assemble_embedded_source("kernels/brdf_batch.cl");
     for (const char* present : {"brdf/hyper_cauchy.h", "brdf/henyey_greenstein.h", "brdf/dielectric.h", "brdf/dtoadq2017_model.h", "brdf/measured.h"}) {
         INFO(present);
         CHECK(contains_file(full, present));
@@ -103,7 +104,7 @@ TEST_CASE("switched-off features never reach the kernel source", "[features]") {
 
 TEST_CASE("a kernel built with a preset's features only agrees exactly with the full build", "[features][opencl]") {
     lab::opencl::Runtime runtime("");
-    lab::opencl::BrdfBatch full(runtime);
+    lab::kernels::BrdfBatch full(runtime);
     std::vector<brdf::Preset> presets;
     for (const auto& entry : fs::directory_iterator("presets"))
         if (entry.path().extension() == ".json") presets.push_back(brdf::load_preset(entry.path().string()));
@@ -125,7 +126,7 @@ TEST_CASE("a kernel built with a preset's features only agrees exactly with the 
     }
     for (const brdf::Preset& preset : presets) {
         INFO(preset.name << ": " << brdf::feature_build_options({preset.material}));
-        lab::opencl::BrdfBatch reduced(runtime, brdf::feature_build_options({preset.material}));
+        lab::kernels::BrdfBatch reduced(runtime, brdf::feature_build_options({preset.material}));
         full.set_materials({preset.material});
         reduced.set_materials({preset.material});
         std::vector<float3> f_full = full.eval(index, wo, wi), f_reduced = reduced.eval(index, wo, wi);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "kernels/host.hpp"
+#include "kernels/host/embedded_sources.hpp"
 #include "opencl/runtime.hpp"
 
 namespace {
@@ -54,7 +55,7 @@ void check_sums(const std::vector<unsigned>& bits, const Splats& s) {
 
 void splat_on_device(const lab::opencl::Runtime& runtime, const Splats& s) {
     int count = int(s.xyv.size() / 3);
-    lab::opencl::Program program = runtime.build_embedded("kernels/film_probe.cl", "-cl-std=CL1.2");
+    lab::opencl::Program program = lab::kernels::build_embedded(runtime, "kernels/film_probe.cl", "-cl-std=CL1.2");
     lab::opencl::KernelHandle kernel = program.kernel("film_splat_probe");
     lab::opencl::BufferHandle splats = runtime.buffer(s.xyv.size() * sizeof(float), CL_MEM_READ_ONLY);
     runtime.write(splats, s.xyv.data(), s.xyv.size() * sizeof(float));

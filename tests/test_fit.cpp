@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/lobe_data.hpp"
 #include "brdf/host/merl_file.hpp"
 #include "brdf/host/parameters.hpp"
 #include "brdf/host/preset.hpp"
@@ -21,7 +22,6 @@
 #include "fit/fit_report.hpp"
 #include "fit/fit_space.hpp"
 #include "plots/fit_chart.hpp"
-#include "plots/lobe_data.hpp"
 
 namespace fs = std::filesystem;
 using brdf::float3;
@@ -170,10 +170,10 @@ TEST_CASE("fit chart: the measured slice of a Lambert table is albedo / pi cos, 
     lambert.weight_glossy = lambert.weight_specular = lambert.weight_transmission = 0.0f;
     const brdf::MeasuredTable table = brdf::tabulate_merl([&](float3 wo, float3 wi) { return brdf::bsdf_eval(&lambert, wo, wi); }, "lambert");
     // the chart's measured curve: the lobe plot's slice of merl_eval, in closed form for Lambert
-    const auto slice = lab::plots::plane_slice([&table](float3 wi, float3 wo) { return brdf::merl_eval(table.rgb.data(), wo, wi); },
+    const auto slice = lab::analysis::plane_slice([&table](float3 wi, float3 wo) { return brdf::merl_eval(table.rgb.data(), wo, wi); },
                                                40.0f, 0.0f, 5.0f, false);
     REQUIRE(slice.size() == 37u);
-    for (const lab::plots::PlaneSample& s : slice)
+    for (const lab::analysis::PlaneSample& s : slice)
         CHECK(s.value == Approx(0.5 / M_PI * std::cos(s.angle_deg * M_PI / 180.0)).margin(1e-6));
 
     brdf::Preset fitted;

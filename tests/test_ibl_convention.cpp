@@ -11,7 +11,7 @@
 #include "ibl/ibl.hpp"
 #include "validation/uniform_random.hpp"
 
-using brdf::float3;
+using single_source::float3;
 using lab::ibl::Environment;
 using lab::ibl::EnvironmentOptions;
 using lab::ibl::LatLongImage;

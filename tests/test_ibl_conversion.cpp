@@ -13,7 +13,7 @@
 #include "ibl/environment.hpp"
 #include "validation/uniform_random.hpp"
 
-using brdf::float3;
+using single_source::float3;
 using lab::ibl::Environment;
 using lab::ibl::EnvironmentOptions;
 using lab::ibl::LatLongImage;
@@ -42,7 +42,7 @@ std::vector<double> cubemap_integral(const Environment& env) {
     for (int face = 0; face < 6; ++face)
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
-                const brdf::float4 t = env.texels()[(size_t(face) * n + j) * n + i];
+                const single_source::float4 t = env.texels()[(size_t(face) * n + j) * n + i];
                 const double omega = lab::ibl::texel_solid_angle(n, i, j);
                 sum[0] += omega * t.x;
                 sum[1] += omega * t.y;
@@ -155,7 +155,7 @@ TEST_CASE("ibl: a constant environment is exactly constant", "[ibl]") {
         image.rgb[p + 2] = 1e-3f;
     }
     const Environment converted = Environment::from_image(image, "constant image", face_size(24));
-    for (const brdf::float4& t : converted.texels()) REQUIRE(brdf::float3(t.x, t.y, t.z) == brdf::float3(0.7f, 0.3f, 1e-3f));
+    for (const single_source::float4& t : converted.texels()) REQUIRE(single_source::float3(t.x, t.y, t.z) == single_source::float3(0.7f, 0.3f, 1e-3f));
 }
 
 TEST_CASE("ibl: the conversion shares work between points and threads without changing a bit", "[ibl]") {
@@ -165,7 +165,7 @@ TEST_CASE("ibl: the conversion shares work between points and threads without ch
     // other thread counts. Face size 37: rows split unevenly between threads.
     const LatLongImage image = synthetic_image();
     const int n = 37, s = lab::ibl::cubemap_supersampling(image.width, n);
-    const std::vector<brdf::float4> texels = lab::ibl::equirect_to_cubemap(image, n, 1);
+    const std::vector<single_source::float4> texels = lab::ibl::equirect_to_cubemap(image, n, 1);
     int differ = 0, checked = 0;
     for (int face = 0; face < 6; ++face)
         for (int j = 0; j < n; j += 3)
@@ -183,7 +183,7 @@ TEST_CASE("ibl: the conversion shares work between points and threads without ch
                         sum[2] += weight * l.z;
                         weight_sum += weight;
                     }
-                const brdf::float4 t = texels[(size_t(face) * n + j) * n + i];
+                const single_source::float4 t = texels[(size_t(face) * n + j) * n + i];
                 const bool same = t.x == float(sum[0] / weight_sum) && t.y == float(sum[1] / weight_sum) && t.z == float(sum[2] / weight_sum);
                 INFO("face " << face << " texel (" << i << ", " << j << ")");
                 CHECK(same);
@@ -192,7 +192,7 @@ TEST_CASE("ibl: the conversion shares work between points and threads without ch
             }
     std::printf("[ibl] conversion against the whole computation at every point: %d of %d texels differ\n", differ, checked);
     for (int threads : {2, 3, 8}) {
-        const std::vector<brdf::float4> other = lab::ibl::equirect_to_cubemap(image, n, threads);
+        const std::vector<single_source::float4> other = lab::ibl::equirect_to_cubemap(image, n, threads);
         INFO(threads << " threads");
         CHECK(std::memcmp(other.data(), texels.data(), texels.size() * sizeof(texels[0])) == 0);
     }

@@ -16,7 +16,7 @@
 #include "ibl/environment.hpp"
 
 namespace fs = std::filesystem;
-using brdf::float3;
+using single_source::float3;
 using lab::ibl::EnvironmentOptions;
 
 namespace {

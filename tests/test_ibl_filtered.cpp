@@ -6,7 +6,7 @@
 
 #include "ibl/environment.hpp"
 
-using brdf::float3;
+using single_source::float3;
 
 namespace {
 

@@ -9,11 +9,12 @@
 #include <vector>
 
 #include "ibl/environment.hpp"
+#include "kernels/host/embedded_sources.hpp"
 #include "opencl/kernel_source.hpp"
 #include "opencl/runtime.hpp"
 #include "validation/uniform_random.hpp"
 
-using brdf::float3;
+using single_source::float3;
 
 namespace {
 
@@ -68,7 +69,7 @@ TEST_CASE("ibl: the OpenCL build of environment.h agrees with the C++ build", "[
     const std::string entry = "tests/ibl_environment_batch.cl";
     auto lookup = [&](const std::string& path) -> std::string_view {
         if (path == entry) return kKernel;
-        return lab::opencl::embedded_kernel_file(path);
+        return lab::kernels::embedded_kernel_file(path);
     };
     lab::opencl::Runtime runtime;
     const lab::opencl::Program program = runtime.build(lab::opencl::assemble_source(entry, lookup),
@@ -80,7 +81,7 @@ TEST_CASE("ibl: the OpenCL build of environment.h agrees with the C++ build", "[
         runtime.write(b, data, bytes);
         return b;
     };
-    const auto texels = input(env.texels().data(), env.texels().size() * sizeof(brdf::float4));
+    const auto texels = input(env.texels().data(), env.texels().size() * sizeof(single_source::float4));
     const auto alias = input(env.alias().data(), env.alias().size() * sizeof(lab::ibl::AliasEntry));
     const auto dir_buffer = input(directions.data(), directions.size() * sizeof(float));
     const auto u_buffer = input(u.data(), u.size() * sizeof(float));

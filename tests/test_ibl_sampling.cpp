@@ -14,7 +14,7 @@
 #include "validation/chi_square.hpp"
 #include "validation/uniform_random.hpp"
 
-using brdf::float3;
+using single_source::float3;
 using lab::ibl::Environment;
 using lab::ibl::EnvironmentOptions;
 using lab::ibl::LatLongImage;
@@ -142,12 +142,12 @@ TEST_CASE("ibl: the environment pdf integrates to 1 and follows the texel weight
     const int n = courtyard.face_size();
     double total = 0.0;
     for (int t = 0; t < 6 * n * n; ++t) {
-        const brdf::float4 x = courtyard.texels()[t];
+        const single_source::float4 x = courtyard.texels()[t];
         total += lab::ibl::luminance(x.x, x.y, x.z) * lab::ibl::texel_solid_angle(n, t % n, (t / n) % n);
     }
     double worst = 0.0;
     for (int t = 0; t < 6 * n * n; ++t) {
-        const brdf::float4 x = courtyard.texels()[t];
+        const single_source::float4 x = courtyard.texels()[t];
         const double expected = lab::ibl::luminance(x.x, x.y, x.z) * lab::ibl::texel_solid_angle(n, t % n, (t / n) % n) / total;
         const double p = courtyard.texels()[t].w;  // the probability the alias tables draw the texel with
         // Texels far below the mean may sit on the floor; compare those on an absolute scale.
@@ -186,7 +186,7 @@ TEST_CASE("ibl: environment sampling beats uniform sampling", "[ibl]") {
         double integral = 0.0, uniform_second = 0.0, env_second = 0.0;
         for (int t = 0; t < 6 * n * n; ++t) {
             const int i = t % n, j = (t / n) % n;
-            const brdf::float4 x = env.texels()[t];
+            const single_source::float4 x = env.texels()[t];
             const double y = lab::ibl::luminance(x.x, x.y, x.z), omega = lab::ibl::texel_solid_angle(n, i, j);
             const double p = x.w;
             integral += y * omega;
@@ -259,7 +259,7 @@ TEST_CASE("ibl: one lookup gives the radiance and the density, and the texel a s
     const Environment courtyard = lab::ibl::load_environment("envmaps/courtyard.exr", options_with(-75, 16));
     for (const Environment* env : {&contrast, &courtyard}) {
         const ::ibl::EnvironmentMap& map = env->map();
-        const brdf::float4* texels = env->texels().data();
+        const single_source::float4* texels = env->texels().data();
         validation::UniformRandom random(7);
         long radiance_pdf_differs = 0, sample_differs = 0, texel_differs = 0, entry_differs = 0;
         const long n = 200000;

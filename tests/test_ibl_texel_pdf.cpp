@@ -16,7 +16,7 @@
 #include "tests/float_bits.hpp"
 #include "validation/uniform_random.hpp"
 
-using brdf::float3;
+using single_source::float3;
 using lab::ibl::Environment;
 using lab::ibl::EnvironmentOptions;
 

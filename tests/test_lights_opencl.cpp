@@ -12,6 +12,7 @@
 
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
+#include "kernels/host/embedded_sources.hpp"
 #include "opencl/kernel_source.hpp"
 #include "opencl/runtime.hpp"
 #include "render/camera_setup.hpp"
@@ -129,7 +130,7 @@ TEST_CASE("lights OpenCL: the samplers and the camera agree with the C++ build",
     const std::string entry = "tests/lights_batch.cl";
     auto lookup = [&](const std::string& path) -> std::string_view {
         if (path == entry) return kKernel;
-        return lab::opencl::embedded_kernel_file(path);
+        return lab::kernels::embedded_kernel_file(path);
     };
     lab::opencl::Runtime runtime;
     const lab::opencl::Program program =

@@ -22,7 +22,7 @@
 #include "brdf/host/merl_file.hpp"
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
-#include "opencl/brdf_batch.hpp"
+#include "kernels/host/brdf_batch.hpp"
 #include "opencl/runtime.hpp"
 #include "render/opencl_renderer.hpp"
 #include "tests/lobe_material.hpp"
@@ -187,7 +187,7 @@ TEST_CASE("measured eval, pdf and sample: the OpenCL build agrees with the C++ b
     std::vector<float3> wo(n), wi(n), u(n);
     for (int i = 0; i < n; ++i) wo[i] = direction(), wi[i] = direction(), u[i] = float3(uniform(rng), uniform(rng), uniform(rng));
     lab::opencl::Runtime runtime;
-    lab::opencl::BrdfBatch batch(runtime);
+    lab::kernels::BrdfBatch batch(runtime);
     batch.set_materials({f.measured});
     std::vector<float3> f_cl = batch.eval(index, wo, wi);
     std::vector<float> pdf_cl = batch.pdf(index, wo, wi);

@@ -19,7 +19,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/parameters.hpp"
 #include "brdf/host/preset.hpp"
-#include "opencl/brdf_batch.hpp"
+#include "kernels/host/brdf_batch.hpp"
 #include "opencl/device.hpp"
 #include "opencl/kernel_source.hpp"
 #include "opencl/runtime.hpp"
@@ -335,7 +335,7 @@ TEST_CASE("OpenCL: bsdf_eval, bsdf_pdf and bsdf_sample agree with the C++ build"
     const size_t n = in.index.size();
 
     lab::opencl::Runtime runtime;
-    lab::opencl::BrdfBatch batch(runtime);
+    lab::kernels::BrdfBatch batch(runtime);
     batch.set_materials(in.materials);
     std::vector<float3> f_cl = batch.eval(in.index, in.wo, in.wi);
     std::vector<float> pdf_cl = batch.pdf(in.index, in.wo, in.wi);

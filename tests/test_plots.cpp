@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "analysis/albedo_curve.hpp"
+#include "analysis/lobe_data.hpp"
 #include "brdf/host/parameters.hpp"
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
 #include "plots/albedo_chart.hpp"
-#include "plots/albedo_curve.hpp"
-#include "plots/lobe_data.hpp"
 #include "plots/lobe_plot.hpp"
 #include "plots/python_runner.hpp"
 
@@ -74,14 +74,14 @@ struct ScratchFolder {
 }  // namespace
 
 TEST_CASE("a Lambert lobe is albedo / pi over the whole upper hemisphere", "[plots]") {
-    lab::plots::LobeData d = lab::plots::compute_lobe(lambert(), 30.0f, 0.0f, {2.0f, 0.5f});
+    lab::analysis::LobeData d = lab::analysis::compute_lobe(lambert(), 30.0f, 0.0f, {2.0f, 0.5f});
     CHECK_FALSE(d.transmits);
     CHECK(d.deltas.empty());
     CHECK(d.theta_count == 46);  // 0, 2, ..., 90
     CHECK(d.phi_count == 90);    // 0, 4, ..., 356
     REQUIRE(d.grid.size() == 46u * 90u);
     const double f = 0.8 / kPi;
-    for (const lab::plots::LobeSample& s : d.grid) {
+    for (const lab::analysis::LobeSample& s : d.grid) {
         if (s.theta_deg >= 90.0f) continue;  // the horizon itself is a boundary case of the BSDF
         INFO("theta " << s.theta_deg << " phi " << s.phi_deg);
         REQUIRE(s.f.x == Approx(f).epsilon(1e-5));
@@ -92,22 +92,22 @@ TEST_CASE("a Lambert lobe is albedo / pi over the whole upper hemisphere", "[plo
     REQUIRE(d.plane.size() == 361u);
     CHECK(d.plane.front().angle_deg == -90.0f);
     CHECK(d.plane.back().angle_deg == 90.0f);
-    for (const lab::plots::PlaneSample& s : d.plane)
+    for (const lab::analysis::PlaneSample& s : d.plane)
         if (std::fabs(s.angle_deg) < 90.0f) REQUIRE(s.value == Approx(f * std::cos(s.angle_deg * kPi / 180.0)).margin(1e-6));
 }
 
 TEST_CASE("the plane-of-incidence slice follows the grid's directions", "[plots]") {
     brdf::Preset gold = brdf::load_preset("presets/gold.json");
-    lab::plots::LobeData d = lab::plots::compute_lobe(gold, 30.0f, 0.0f, {1.0f, 0.5f});
+    lab::analysis::LobeData d = lab::analysis::compute_lobe(gold, 30.0f, 0.0f, {1.0f, 0.5f});
     // slice angle +30 is the mirror direction (theta 30, phi 180); -30 is the incident side (phi 0)
     auto grid_value = [&](int theta, int phi) {
-        const lab::plots::LobeSample& s = d.grid[size_t(theta) * size_t(d.phi_count) + size_t(phi / 2)];
+        const lab::analysis::LobeSample& s = d.grid[size_t(theta) * size_t(d.phi_count) + size_t(phi / 2)];
         REQUIRE(s.theta_deg == float(theta));
         REQUIRE(s.phi_deg == float(phi));
         return 0.2126 * s.f.x + 0.7152 * s.f.y + 0.0722 * s.f.z;
     };
     auto slice_value = [&](float angle) {
-        for (const lab::plots::PlaneSample& s : d.plane)
+        for (const lab::analysis::PlaneSample& s : d.plane)
             if (s.angle_deg == angle) return double(s.value);
         FAIL("no slice sample at " << angle);
         return 0.0;
@@ -117,8 +117,8 @@ TEST_CASE("the plane-of-incidence slice follows the grid's directions", "[plots]
     CHECK(slice_value(-30.0f) == Approx(grid_value(30, 0) * c30).epsilon(1e-4));
     CHECK(slice_value(60.0f) == Approx(grid_value(60, 180) * 0.5).epsilon(1e-4));
     // and a glossy conductor peaks near the mirror direction
-    const lab::plots::PlaneSample* peak = &d.plane.front();
-    for (const lab::plots::PlaneSample& s : d.plane)
+    const lab::analysis::PlaneSample* peak = &d.plane.front();
+    for (const lab::analysis::PlaneSample& s : d.plane)
         if (s.value > peak->value) peak = &s;
     CHECK(peak->angle_deg > 25.0f);
     CHECK(peak->angle_deg < 45.0f);
@@ -126,12 +126,12 @@ TEST_CASE("the plane-of-incidence slice follows the grid's directions", "[plots]
 
 TEST_CASE("the grid follows `brdf eval`: the incident direction is the BSDF's first argument", "[plots]") {
     brdf::Preset glass = brdf::load_preset("presets/frosted_glass.json");
-    lab::plots::LobeData d = lab::plots::compute_lobe(glass, 60.0f, 0.0f, {2.0f, 0.5f});
+    lab::analysis::LobeData d = lab::analysis::compute_lobe(glass, 60.0f, 0.0f, {2.0f, 0.5f});
     REQUIRE(d.transmits);
     const double to_rad = kPi / 180.0;
     brdf::float3 wi(float(std::sin(60.0 * to_rad)), 0.0f, float(std::cos(60.0 * to_rad)));
     int checked = 0;
-    for (const lab::plots::LobeSample& s : d.grid) {
+    for (const lab::analysis::LobeSample& s : d.grid) {
         if (s.phi_deg != 180.0f || (s.theta_deg != 20.0f && s.theta_deg != 150.0f)) continue;
         double t = s.theta_deg * to_rad, p = s.phi_deg * to_rad;
         brdf::float3 wo(float(std::sin(t) * std::cos(p)), float(std::sin(t) * std::sin(p)), float(std::cos(t)));
@@ -148,14 +148,14 @@ TEST_CASE("the grid follows `brdf eval`: the incident direction is the BSDF's fi
 TEST_CASE("smooth glass has two delta lobes: Fresnel reflection and Snell refraction", "[plots]") {
     for (float theta_in : {0.0f, 45.0f, 80.0f}) {
         INFO("theta_in " << theta_in);
-        lab::plots::LobeData d = lab::plots::compute_lobe(smooth_glass(), theta_in, 20.0f, {2.0f, 0.5f});
+        lab::analysis::LobeData d = lab::analysis::compute_lobe(smooth_glass(), theta_in, 20.0f, {2.0f, 0.5f});
         CHECK(d.transmits);
         CHECK(d.grid.size() == 91u * 90u);  // the lower hemisphere too
         CHECK(d.plane.size() == 721u);
-        for (const lab::plots::LobeSample& s : d.grid) REQUIRE(s.f.y == 0.0f);  // a delta-only BSDF is zero everywhere
+        for (const lab::analysis::LobeSample& s : d.grid) REQUIRE(s.f.y == 0.0f);  // a delta-only BSDF is zero everywhere
         REQUIRE(d.deltas.size() == 2u);
-        const lab::plots::DeltaLobe& reflection = d.deltas[0].transmission ? d.deltas[1] : d.deltas[0];
-        const lab::plots::DeltaLobe& refraction = d.deltas[0].transmission ? d.deltas[0] : d.deltas[1];
+        const lab::analysis::DeltaLobe& reflection = d.deltas[0].transmission ? d.deltas[1] : d.deltas[0];
+        const lab::analysis::DeltaLobe& refraction = d.deltas[0].transmission ? d.deltas[0] : d.deltas[1];
         REQUIRE(refraction.transmission);
         REQUIRE_FALSE(reflection.transmission);
         double fr = fresnel_reference(std::cos(theta_in * kPi / 180.0), 1.5);
@@ -178,7 +178,7 @@ TEST_CASE("delta lobes sharing a direction add up: a mirror lobe beside Lambert"
     m.weight_diffuse = 0.5f;
     m.weight_specular = 0.5f;
     m.fresnel = 0.04f;
-    std::vector<lab::plots::DeltaLobe> deltas = lab::plots::find_delta_lobes(m, 0.0f, 0.0f);
+    std::vector<lab::analysis::DeltaLobe> deltas = lab::analysis::find_delta_lobes(m, 0.0f, 0.0f);
     REQUIRE(deltas.size() == 1u);
     CHECK_FALSE(deltas[0].transmission);
     CHECK(deltas[0].weight.x == Approx(0.5 * 0.04).margin(2e-4));  // lobe weight x Schlick at normal incidence
@@ -208,7 +208,7 @@ TEST_CASE("the lobe CSV has one row per material and grid direction", "[plots]")
 }
 
 TEST_CASE("a bad lobe resolution or output path is refused before any work", "[plots]") {
-    CHECK_THROWS_AS(lab::plots::compute_lobe(lambert(), 10.0f, 0.0f, {7.0f, 0.5f}), std::invalid_argument);
+    CHECK_THROWS_AS(lab::analysis::compute_lobe(lambert(), 10.0f, 0.0f, {7.0f, 0.5f}), std::invalid_argument);
     try {
         lab::plots::write_lobe_plot({lambert()}, 10.0f, 0.0f, "/nonexistent-folder/lobe.png", "");
         FAIL("no error for an unwritable path");
@@ -230,16 +230,16 @@ TEST_CASE("the Python with matplotlib is the first candidate that imports it", "
 }
 
 TEST_CASE("albedo curves: Lambert is its albedo at every angle, smooth glass is 1", "[plots]") {
-    lab::plots::AlbedoCurveOptions options;
+    lab::analysis::AlbedoCurveOptions options;
     options.angles = 10;
     options.strata = 16;
-    std::vector<lab::plots::AlbedoPoint> curve = lab::plots::albedo_curve(lambert().material, options);
+    std::vector<lab::analysis::AlbedoPoint> curve = lab::analysis::albedo_curve(lambert().material, options);
     REQUIRE(curve.size() == 10u);
     CHECK(curve.front().theta_deg == 0.0f);
     CHECK(curve[1].theta_deg == 10.0f);
     CHECK(curve.back().theta_deg == 90.0f);
-    for (const lab::plots::AlbedoPoint& p : curve) CHECK(p.estimate.value.x == Approx(0.8).epsilon(1e-5));
-    for (const lab::plots::AlbedoPoint& p : lab::plots::albedo_curve(smooth_glass().material, options))
+    for (const lab::analysis::AlbedoPoint& p : curve) CHECK(p.estimate.value.x == Approx(0.8).epsilon(1e-5));
+    for (const lab::analysis::AlbedoPoint& p : lab::analysis::albedo_curve(smooth_glass().material, options))
         if (p.theta_deg < 90.0f) CHECK(p.estimate.value.y == Approx(1.0).epsilon(1e-5));
 }
 
@@ -253,7 +253,7 @@ TEST_CASE("lobe plots and albedo charts are written as PNG with their CSV", "[pl
     CHECK(fs::file_size(scratch / "lobe.png") > 50000u);
     CHECK(lines_of(scratch / "lobe.csv").size() == 1u + 19u * 36u + 2u * 37u * 36u);
 
-    lab::plots::AlbedoCurveOptions albedo_options;
+    lab::analysis::AlbedoCurveOptions albedo_options;
     albedo_options.angles = 7;
     albedo_options.strata = 8;
     lab::plots::write_albedo_chart(presets, (scratch / "albedo.png").string(), (scratch / "albedo.csv").string(), albedo_options);

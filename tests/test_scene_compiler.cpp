@@ -12,10 +12,11 @@
 #include "brdf/host/parameters.hpp"
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
+#include "kernels/host/scene_kernel_source.hpp"
 #include "scene/compile.hpp"
 #include "scene/interpreter.hpp"
 #include "scene/load_scene.hpp"
-#include "scene/scene_source.hpp"
+#include "scene/source_literals.hpp"
 #include "test_scene_points.hpp"
 
 using lab::scene::CompiledScene;
@@ -49,7 +50,7 @@ std::string error_of(const Scene& scene, const lab::scene::CompileOptions& optio
 
 TEST_CASE("scene compiler: a sphere-only scene's kernel holds no other sdf code", "[scene]") {
     CompiledScene c = lab::scene::compile_scene(lab::scene::parse_scene(kSphereOnly, "sphere.json"));
-    lab::opencl::AssembledSource source = lab::scene::assemble_scene_kernel("kernels/scene_probe.cl", c);
+    lab::opencl::AssembledSource source = lab::kernels::assemble_scene_kernel("kernels/scene_probe.cl", c);
     CHECK(origin_files(source) == std::set<std::string>{"kernels/scene_probe.cl", "scene/generated.h", "single_source/vocabulary.h", "sdf/primitives/sphere.h"});
     CHECK(source.text.find("fSphere_xyz(px, py, pz, 1.0f)") != std::string::npos);
     for (const char* absent : {"fTorus", "fBox", "fRoundBox", "fCylinder", "fCapsule", "fCone", "fPlane", "pMod3", "pModInterval3", "fOpUnion",
@@ -75,7 +76,7 @@ TEST_CASE("scene compiler: a sphere-only scene's kernel holds no other sdf code"
     // The render kernels see those switches: a white Lambert scene's has no microfacet code.
     for (const char* kernel : {"kernels/path_tracer.cl", "kernels/bdpt.cl"}) {
         INFO(kernel);
-        std::string text = lab::scene::assemble_scene_kernel(kernel, c).text;
+        std::string text = lab::kernels::assemble_scene_kernel(kernel, c).text;
         CHECK(text.find("lambert") != std::string::npos);
         CHECK(text.find("ggx_d(") == std::string::npos);
         CHECK(text.find("hyper_cauchy_d(") == std::string::npos);
@@ -92,7 +93,7 @@ TEST_CASE("scene compiler: the shader ball includes exactly the headers it uses"
                                             "sdf/combinators/union_smooth.h", "sdf/combinators/subtraction.h",
                                             "sdf/combinators/intersection.h"});
     // ... and what those pull in is no more than their own helpers.
-    std::set<std::string> assembled = origin_files(lab::scene::assemble_scene_kernel("kernels/scene_probe.cl", c));
+    std::set<std::string> assembled = origin_files(lab::kernels::assemble_scene_kernel("kernels/scene_probe.cl", c));
     for (const char* unused : {"sdf/primitives/cone.h", "sdf/primitives/capsule.h", "sdf/domain/mod3.h", "sdf/domain/mod_interval3.h",
                                "sdf/combinators/union.h", "sdf/combinators/union_round.h", "sdf/combinators/union_chamfer.h",
                                "sdf/combinators/displace_sine.h", "sdf/lipschitz.h", "sdf/march.h", "sdf/normals.h"}) {
@@ -147,10 +148,10 @@ TEST_CASE("scene compiler: material overrides and disabled objects", "[scene]") 
     // The geometry is the same whatever the materials, and so is every program that only marches
     // (the packet kernels): the renderer keeps it, and a cold PoCL cache compiles it once.
     CHECK(grey.source == c.source);
-    CHECK(lab::scene::assemble_scene_kernel("kernels/march_packets.cl", grey).text ==
-          lab::scene::assemble_scene_kernel("kernels/march_packets.cl", c).text);
-    CHECK(lab::scene::assemble_scene_kernel("kernels/path_tracer.cl", grey).text !=
-          lab::scene::assemble_scene_kernel("kernels/path_tracer.cl", c).text);
+    CHECK(lab::kernels::assemble_scene_kernel("kernels/march_packets.cl", grey).text ==
+          lab::kernels::assemble_scene_kernel("kernels/march_packets.cl", c).text);
+    CHECK(lab::kernels::assemble_scene_kernel("kernels/path_tracer.cl", grey).text !=
+          lab::kernels::assemble_scene_kernel("kernels/path_tracer.cl", c).text);
 
     lab::scene::CompileOptions no_ground;
     no_ground.disabled_objects = {"ground"};

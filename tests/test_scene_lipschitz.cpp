@@ -11,6 +11,7 @@
 #include "scene/interpreter.hpp"
 #include "scene/lipschitz.hpp"
 #include "scene/load_scene.hpp"
+#include "scene/source_literals.hpp"
 #include "sdf/sdf.hpp"
 #include "test_scene_points.hpp"
 

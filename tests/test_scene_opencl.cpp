@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "kernels/host/scene_kernel_source.hpp"
 #include "opencl/runtime.hpp"
 #include "scene/compile.hpp"
 #include "scene/interpreter.hpp"
 #include "scene/load_scene.hpp"
-#include "scene/scene_source.hpp"
 #include "sdf/sdf.hpp"
 #include "test_scene_points.hpp"
 
@@ -36,8 +36,8 @@ struct ProbeResult {
 
 ProbeResult run_probe(const lab::opencl::Runtime& runtime, const CompiledScene& scene, const std::vector<Vec3>& points) {
     static_assert(sizeof(Vec3) == 3 * sizeof(float), "points are uploaded as 3 floats each");
-    lab::opencl::Program program = runtime.build(lab::scene::assemble_scene_kernel("kernels/scene_probe.cl", scene),
-                                                 lab::scene::kSceneBuildOptions);
+    lab::opencl::Program program = runtime.build(lab::kernels::assemble_scene_kernel("kernels/scene_probe.cl", scene),
+                                                 lab::kernels::kSceneBuildOptions);
     lab::opencl::KernelHandle kernel = program.kernel("scene_probe");
     const size_t n = points.size();
     lab::opencl::BufferHandle in = runtime.buffer(n * sizeof(Vec3), CL_MEM_READ_ONLY);

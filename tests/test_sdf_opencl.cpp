@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/host/embedded_sources.hpp"
 #include "opencl/kernel_source.hpp"
 #include "opencl/runtime.hpp"
 #include "sdf/sdf.hpp"
@@ -185,7 +186,7 @@ TEST_CASE("SDF OpenCL: the headers compile as OpenCL C and agree with the C++ bu
         if (path == "kernels/sdf_probe.cl") return kKernel;
         if (path == "test/scene.h") return scene;
         if (path == "test/probe.h") return probe;
-        return lab::opencl::embedded_kernel_file(path);
+        return lab::kernels::embedded_kernel_file(path);
     };
     lab::opencl::Runtime runtime;
     lab::opencl::AssembledSource source = lab::opencl::assemble_source("kernels/sdf_probe.cl", lookup);

@@ -43,23 +43,22 @@ struct Tally {
     long delta = 0, failed = 0;
 };
 
+struct Histogram {
+    std::vector<long> observed;  // per cell, continuous samples only
+    long delta = 0, failed = 0;
+    std::string defect;          // the first broken promise in chunk order; empty when none
+};
+
 struct Bin {
     double expected;
     long observed;
     int cell;  // -1: the samples that were not continuous (deltas and failures); -2: a pool
 };
 
-}  // namespace
-
-ChiSquareResult chi_square_test(const DirectionSampler& sampler, const DirectionDensity& density,
-                                const ChiSquareOptions& options) {
-    ChiSquareResult result;
-    result.alpha = sidak_alpha(options.significance, options.tests);
-    const SphereGrid grid{options.z_cells, options.phi_cells};
+// 1. Histogram of the samples, in fixed chunks with their own seeds.
+Histogram sample_histogram(const DirectionSampler& sampler, const SphereGrid& grid, const ChiSquareOptions& options) {
     const int cells = grid.cells();
     const long n = options.samples;
-
-    // 1. Histogram of the samples, in fixed chunks with their own seeds.
     const int chunks = int(std::clamp(n / 8192, 1L, 256L));
     std::vector<Tally> tallies(chunks);
     std::vector<std::string> chunk_defects(chunks);
@@ -86,26 +85,30 @@ ChiSquareResult chi_square_test(const DirectionSampler& sampler, const Direction
             }
         }
     });
-    std::vector<long> observed(cells, 0);
-    long delta = 0, failed = 0;
+    Histogram h;
+    h.observed.assign(cells, 0);
     for (const Tally& t : tallies) {
-        for (int i = 0; i < cells; ++i) observed[i] += t.counts[i];
-        delta += t.delta;
-        failed += t.failed;
+        for (int i = 0; i < cells; ++i) h.observed[i] += t.counts[i];
+        h.delta += t.delta;
+        h.failed += t.failed;
     }
-    long continuous = n - delta - failed;
-    result.delta_fraction = double(delta) / n;
-    result.failed_fraction = double(failed) / n;
-    result.continuous_fraction = double(continuous) / n;
     for (const std::string& d : chunk_defects) {
         if (!d.empty()) {
-            result.failure = d;
-            return result;
+            h.defect = d;
+            break;
         }
     }
+    return h;
+}
 
-    // 2. The density integrated over each cell; the tolerance keeps the error of the expected count
-    // far below its Poisson noise (estimated from the observed count).
+// 2. The density integrated over each cell; the tolerance keeps the error of the expected count
+// far below its Poisson noise (estimated from the observed count). Sets result->pdf_integral, or
+// result->failure where the density is negative or not finite, integrates to 0 over a cell that
+// holds samples, or to more than 1 over the sphere.
+std::vector<double> cell_integrals(const DirectionDensity& density, const SphereGrid& grid, const std::vector<long>& observed,
+                                   const ChiSquareOptions& options, ChiSquareResult* result) {
+    const int cells = grid.cells();
+    const long n = options.samples;
     std::vector<std::string> cell_defects(cells);
     auto checked_density = [&](int cell, brdf::float3 w) {
         double p = density(w);
@@ -119,29 +122,33 @@ ChiSquareResult chi_square_test(const DirectionSampler& sampler, const Direction
     std::vector<double> integral = integrate_cells(checked_density, grid, tolerance, options.threads);
     for (const std::string& d : cell_defects) {
         if (!d.empty()) {
-            result.failure = d;
-            return result;
+            result->failure = d;
+            return integral;
         }
     }
-    for (int i = 0; i < cells; ++i) result.pdf_integral += integral[i];
+    for (int i = 0; i < cells; ++i) result->pdf_integral += integral[i];
     for (int i = 0; i < cells; ++i) {
         if (observed[i] > 0 && !(integral[i] > 0.0)) {
-            result.failure = format("%g samples in a cell where the density integrates to 0: ", double(observed[i])) +
-                             describe_cell(i, grid);
-            return result;
+            result->failure = format("%g samples in a cell where the density integrates to 0: ", double(observed[i])) +
+                              describe_cell(i, grid);
+            return integral;
         }
     }
-    if (result.pdf_integral > 1.0 + 1e-3) {
-        result.failure = format("the density integrates to %.6f over the sphere (more than 1)", result.pdf_integral);
-        return result;
-    }
+    if (result->pdf_integral > 1.0 + 1e-3)
+        result->failure = format("the density integrates to %.6f over the sphere (more than 1)", result->pdf_integral);
+    return integral;
+}
 
-    // 3. Pearson's statistic over the cells and one bin for the non-continuous samples (so the
-    // bins form a multinomial with total n), pooling bins expected to hold fewer than 5.
+// 3. Pearson's statistic over the cells and one bin for the non-continuous samples (so the
+// bins form a multinomial with total n), pooling bins expected to hold fewer than 5. Sets
+// result->statistic, worst_cell and cells.
+void pearson_statistic(const Histogram& h, const std::vector<double>& integral, const SphereGrid& grid, long n,
+                       ChiSquareResult* result) {
+    const int cells = grid.cells();
     std::vector<Bin> bins;
     bins.reserve(cells + 1);
-    for (int i = 0; i < cells; ++i) bins.push_back({double(n) * integral[i], observed[i], i});
-    bins.push_back({double(n) * std::max(0.0, 1.0 - result.pdf_integral), delta + failed, -1});
+    for (int i = 0; i < cells; ++i) bins.push_back({double(n) * integral[i], h.observed[i], i});
+    bins.push_back({double(n) * std::max(0.0, 1.0 - result->pdf_integral), h.delta + h.failed, -1});
     std::stable_sort(bins.begin(), bins.end(), [](const Bin& a, const Bin& b) { return a.expected < b.expected; });
     Bin pool{0.0, 0, -2};
     std::vector<Bin> kept;
@@ -165,15 +172,40 @@ ChiSquareResult chi_square_test(const DirectionSampler& sampler, const Direction
         if (!(b.expected > 0.0)) continue;
         double diff = double(b.observed) - b.expected;
         double term = diff * diff / b.expected;
-        result.statistic += term;
+        result->statistic += term;
         if (term > worst) {
             worst = term;
             std::string where = b.cell >= 0 ? describe_cell(b.cell, grid)
                                 : b.cell == -1 ? std::string("delta + failed samples") : std::string("pooled cells");
-            result.worst_cell = where + format(": observed %.0f, expected %.1f", double(b.observed), b.expected);
+            result->worst_cell = where + format(": observed %.0f, expected %.1f", double(b.observed), b.expected);
         }
     }
-    result.cells = int(kept.size());
+    result->cells = int(kept.size());
+}
+
+}  // namespace
+
+ChiSquareResult chi_square_test(const DirectionSampler& sampler, const DirectionDensity& density,
+                                const ChiSquareOptions& options) {
+    ChiSquareResult result;
+    result.alpha = sidak_alpha(options.significance, options.tests);
+    const SphereGrid grid{options.z_cells, options.phi_cells};
+    const long n = options.samples;
+
+    const Histogram h = sample_histogram(sampler, grid, options);
+    long continuous = n - h.delta - h.failed;
+    result.delta_fraction = double(h.delta) / n;
+    result.failed_fraction = double(h.failed) / n;
+    result.continuous_fraction = double(continuous) / n;
+    if (!h.defect.empty()) {
+        result.failure = h.defect;
+        return result;
+    }
+
+    const std::vector<double> integral = cell_integrals(density, grid, h.observed, options, &result);
+    if (!result.failure.empty()) return result;
+
+    pearson_statistic(h, integral, grid, n, &result);
     result.dof = result.cells - 1;
     result.p_value = result.dof > 0 ? chi_square_survival(result.statistic, result.dof) : 1.0;
     result.passed = result.p_value >= result.alpha;

@@ -6,7 +6,7 @@
 
 #include <imgui.h>
 
-#include "plots/luminance.hpp"
+#include "analysis/luminance.hpp"
 
 namespace lab::viewer {
 
@@ -17,15 +17,15 @@ constexpr float kRadians = kPi / 180.0f;
 const ImU32 kColour[2] = {IM_COL32(255, 170, 60, 255), IM_COL32(90, 200, 255, 255)};  // A orange, B blue
 
 // Fewer points than the command's plots: the panel redraws while the user drags.
-plots::LobeResolution panel_resolution() {
-    plots::LobeResolution r;
+analysis::LobeResolution panel_resolution() {
+    analysis::LobeResolution r;
     r.grid_theta_step_deg = 5.0f;
     r.plane_step_deg = 1.0f;
     return r;
 }
 
-plots::AlbedoCurveOptions panel_albedo_options() {
-    plots::AlbedoCurveOptions o;
+analysis::AlbedoCurveOptions panel_albedo_options() {
+    analysis::AlbedoCurveOptions o;
     o.angles = 19;
     o.strata = 24;
     return o;
@@ -58,8 +58,8 @@ void LobePanel::recompute() {
         const brdf::Preset* presets[2] = {&a, &b};
         for (int k = 0; k < 2; ++k) {
             if (cancelled()) return;
-            r->lobe[k] = plots::compute_lobe(*presets[k], theta, phi, panel_resolution());
-            r->albedo[k] = plots::albedo_curve(presets[k]->material, panel_albedo_options());
+            r->lobe[k] = analysis::compute_lobe(*presets[k], theta, phi, panel_resolution());
+            r->albedo[k] = analysis::albedo_curve(presets[k]->material, panel_albedo_options());
         }
         std::lock_guard<std::mutex> lock(mutex_);
         result_ = std::move(r);
@@ -104,17 +104,17 @@ void LobePanel::draw_polar(const Result& r) {
     dl->AddLine(ImVec2(centre.x - radius, centre.y), ImVec2(centre.x + radius, centre.y), IM_COL32(120, 120, 120, 255));
     dl->AddLine(centre, ImVec2(centre.x, centre.y - radius), IM_COL32(70, 70, 70, 255));
     float peak = 0.0f;
-    for (const plots::LobeData& l : r.lobe)
-        for (const plots::PlaneSample& s : l.plane) peak = std::max(peak, std::isfinite(s.value) ? s.value : 0.0f);
+    for (const analysis::LobeData& l : r.lobe)
+        for (const analysis::PlaneSample& s : l.plane) peak = std::max(peak, std::isfinite(s.value) ? s.value : 0.0f);
     if (peak > 0.0f) {
         for (int k = 1; k >= 0; --k) {
             std::vector<ImVec2> points;
-            for (const plots::PlaneSample& s : r.lobe[k].plane) {
+            for (const analysis::PlaneSample& s : r.lobe[k].plane) {
                 float rr = std::isfinite(s.value) ? s.value / peak * radius : 0.0f;
                 points.emplace_back(centre.x + std::sin(s.angle_deg * kRadians) * rr, centre.y - std::cos(s.angle_deg * kRadians) * rr);
             }
             dl->AddPolyline(points.data(), int(points.size()), kColour[k], 0, 1.5f);
-            for (const plots::DeltaLobe& d : r.lobe[k].deltas)
+            for (const analysis::DeltaLobe& d : r.lobe[k].deltas)
                 if (d.in_plane)
                     dl->AddLine(centre, ImVec2(centre.x + std::sin(d.plane_angle_deg * kRadians) * radius,
                                                centre.y - std::cos(d.plane_angle_deg * kRadians) * radius), kColour[k], 2.5f);
@@ -149,15 +149,15 @@ void LobePanel::draw_3d(const Result& r) {
     const ImVec2 centre(o.x + width * 0.5f, o.y + 130.0f);
     const float scale = 100.0f;
     float peak = 0.0f;
-    for (const plots::LobeData& l : r.lobe)
-        for (const plots::LobeSample& s : l.grid) {
-            float v = plots::luminance(s.f) * std::fabs(std::cos(s.theta_deg * kRadians));
+    for (const analysis::LobeData& l : r.lobe)
+        for (const analysis::LobeSample& s : l.grid) {
+            float v = analysis::luminance(s.f) * std::fabs(std::cos(s.theta_deg * kRadians));
             if (std::isfinite(v)) peak = std::max(peak, v);
         }
     const float cy = std::cos(yaw_ * kRadians), sy = std::sin(yaw_ * kRadians);
     const float cp = std::cos(pitch_ * kRadians), sp = std::sin(pitch_ * kRadians);
-    auto project = [&](const plots::LobeSample& s) {
-        float v = plots::luminance(s.f) * std::fabs(std::cos(s.theta_deg * kRadians));
+    auto project = [&](const analysis::LobeSample& s) {
+        float v = analysis::luminance(s.f) * std::fabs(std::cos(s.theta_deg * kRadians));
         float rr = (peak > 0.0f && std::isfinite(v)) ? v / peak : 0.0f;
         float st = std::sin(s.theta_deg * kRadians), ct = std::cos(s.theta_deg * kRadians);
         float x = rr * st * std::cos(s.phi_deg * kRadians), y = rr * st * std::sin(s.phi_deg * kRadians), z = rr * ct;
@@ -166,7 +166,7 @@ void LobePanel::draw_3d(const Result& r) {
         return ImVec2(centre.x + x1 * scale, centre.y - up * scale);
     };
     for (int k = 1; k >= 0; --k) {
-        const plots::LobeData& l = r.lobe[k];
+        const analysis::LobeData& l = r.lobe[k];
         if (l.theta_count == 0 || l.phi_count == 0) continue;
         const ImU32 colour = (kColour[k] & 0x00FFFFFF) | 0xA0000000;
         std::vector<ImVec2> line;
@@ -202,11 +202,11 @@ void LobePanel::draw_albedo(const Result& r) {
     std::vector<ImVec2> line;
     for (int c = 0; c < 3; ++c) {
         line.clear();
-        for (const plots::AlbedoPoint& p : r.albedo[0]) line.push_back(at(p.theta_deg, p.estimate.value[c]));
+        for (const analysis::AlbedoPoint& p : r.albedo[0]) line.push_back(at(p.theta_deg, p.estimate.value[c]));
         dl->AddPolyline(line.data(), int(line.size()), channel[c], 0, 1.5f);
     }
     line.clear();
-    for (const plots::AlbedoPoint& p : r.albedo[1]) line.push_back(at(p.theta_deg, plots::luminance(p.estimate.value)));
+    for (const analysis::AlbedoPoint& p : r.albedo[1]) line.push_back(at(p.theta_deg, analysis::luminance(p.estimate.value)));
     dl->AddPolyline(line.data(), int(line.size()), kColour[1], 0, 1.5f);
     dl->AddText(ImVec2(o.x + 4, o.y + 2), IM_COL32(200, 200, 200, 255), "directional albedo vs theta in (A: r g b, B: luminance)");
 }

@@ -1,7 +1,7 @@
 // The lobe panel: the polar plot in the plane of incidence, a 3D view of the lobe and the
 // directional-albedo curve, for material A (the one being edited) with B overlaid, drawn with
-// ImDrawList. The numbers are `dtoadq lobe`'s and `dtoadq albedo`'s (plots::compute_lobe,
-// plots::albedo_curve), computed on a background thread whenever A, B or the incident direction
+// ImDrawList. The numbers are `dtoadq lobe`'s and `dtoadq albedo`'s (analysis::compute_lobe,
+// analysis::albedo_curve), computed on a background thread whenever A, B or the incident direction
 // changes; the panel draws the latest result it has.
 #pragma once
 
@@ -9,9 +9,9 @@
 #include <mutex>
 #include <vector>
 
+#include "analysis/albedo_curve.hpp"
+#include "analysis/lobe_data.hpp"
 #include "brdf/host/preset.hpp"
-#include "plots/albedo_curve.hpp"
-#include "plots/lobe_data.hpp"
 #include "viewer/latest_job.hpp"
 
 namespace lab::viewer {
@@ -26,8 +26,8 @@ public:
 
 private:
     struct Result {
-        plots::LobeData lobe[2];
-        std::vector<plots::AlbedoPoint> albedo[2];
+        analysis::LobeData lobe[2];
+        std::vector<analysis::AlbedoPoint> albedo[2];
     };
     void recompute();
     void draw_polar(const Result& r);

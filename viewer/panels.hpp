@@ -8,9 +8,9 @@
 
 #include "brdf/host/preset.hpp"
 #include "film/tone_map.hpp"
-#include "viewer/app.hpp"
 #include "viewer/render_worker.hpp"
 #include "viewer/view_state.hpp"
+#include "viewer/viewer_config.hpp"
 
 namespace lab::viewer {
 

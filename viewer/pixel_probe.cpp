@@ -1,6 +1,6 @@
 #include "viewer/pixel_probe.hpp"
 
-#include "scene/host_field.hpp"
+#include "scene/field_for_kernel_headers.hpp"
 
 namespace lab::viewer {
 
@@ -9,7 +9,7 @@ namespace lab::viewer {
 namespace probe_code {
 
 using namespace ::kernel;
-using namespace scene::host_field;
+using namespace scene::field_for_kernel_headers;
 
 #include "sdf/march.h"
 #include "sdf/normals.h"
@@ -19,7 +19,7 @@ using namespace scene::host_field;
 
 PixelProbe probe_pixel(const scene::Scene& scene, const kernel::RenderKernelSettings& k, const kernel::Camera& camera, int x, int y) {
     using namespace probe_code;
-    scene::host_field::current_scene = &scene;
+    scene::field_for_kernel_headers::current_scene = &scene;
     float3 origin, direction;
     camera_generate_ray(&camera, float(x) + 0.5f, float(y) + 0.5f, make_float2(0.5f, 0.5f), &origin, &direction);
     MarchResult r = march(origin, direction, 0.0f, render_march_settings(&k));

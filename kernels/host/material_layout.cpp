@@ -1,20 +1,20 @@
-#include "opencl/material_layout.hpp"
+#include "kernels/host/material_layout.hpp"
 
 #include <cstddef>
 #include <string>
 
 #include "brdf/brdf.hpp"
 
-namespace lab::opencl {
+namespace lab::kernels {
 
 // Plain floats and ints only (brdf/material.h): 17 floats and 4 ints, no padding on either side.
 static_assert(sizeof(brdf::Material) == 21 * 4, "brdf::Material changed: update kernels/material_layout.h");
 
-void check_material_layout(const Runtime& runtime, const Program& program) {
-    KernelHandle layout = program.kernel("brdf_material_layout");
+void check_material_layout(const opencl::Runtime& runtime, const opencl::Program& program) {
+    opencl::KernelHandle layout = program.kernel("brdf_material_layout");
     int device[5] = {0, 0, 0, 0, 0};
-    BufferHandle out = runtime.buffer(sizeof(device), CL_MEM_WRITE_ONLY);
-    set_kernel_arg(layout, 0, out);
+    opencl::BufferHandle out = runtime.buffer(sizeof(device), CL_MEM_WRITE_ONLY);
+    opencl::set_kernel_arg(layout, 0, out);
     runtime.launch_1d(layout, 1, 1);
     runtime.read(out, device, sizeof(device));
     const int host[5] = {int(sizeof(brdf::Material)), int(offsetof(brdf::Material, roughness)), int(offsetof(brdf::Material, ior)),
@@ -25,8 +25,8 @@ void check_material_layout(const Runtime& runtime, const Program& program) {
     };
     for (int k = 0; k < 5; ++k)
         if (device[k] != host[k])
-            throw OpenClError("Material layout differs between host and " + runtime.device().device_name + " (size/offsets host " +
-                              text(host) + ", device " + text(device) + ")");
+            throw opencl::OpenClError("Material layout differs between host and " + runtime.device().device_name + " (size/offsets host " +
+                                      text(host) + ", device " + text(device) + ")");
 }
 
-}  // namespace lab::opencl
+}  // namespace lab::kernels

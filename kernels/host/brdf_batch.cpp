@@ -1,13 +1,20 @@
-#include "opencl/brdf_batch.hpp"
+#include "kernels/host/brdf_batch.hpp"
 
 #include <algorithm>
 #include <chrono>
 
 #include "brdf/host/measured_registry.hpp"
 #include "brdf/host/parameters.hpp"
-#include "opencl/material_layout.hpp"
+#include "kernels/host/embedded_sources.hpp"
+#include "kernels/host/material_layout.hpp"
 
-namespace lab::opencl {
+namespace lab::kernels {
+
+using opencl::BufferHandle;
+using opencl::KernelHandle;
+using opencl::OpenClError;
+using opencl::Program;
+using opencl::Runtime;
 
 namespace {
 
@@ -20,7 +27,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 
 Program timed_build(const Runtime& runtime, const std::string& options, double* seconds) {
     Clock::time_point start = Clock::now();
-    Program program = runtime.build_embedded("kernels/brdf_batch.cl", options);
+    Program program = build_embedded(runtime, "kernels/brdf_batch.cl", options);
     *seconds = seconds_since(start);
     return program;
 }
@@ -35,8 +42,8 @@ BrdfBatch::BrdfBatch(const Runtime& runtime, const std::string& extra_options)
       sample_(program_.kernel("brdf_sample")) {
     for (const KernelHandle* k : {&eval_, &pdf_, &sample_}) {
         size_t kernel_max = 0;
-        check_cl(clGetKernelWorkGroupInfo(k->get(), runtime.device().device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max), &kernel_max, nullptr),
-                 "clGetKernelWorkGroupInfo");
+        opencl::check_cl(clGetKernelWorkGroupInfo(k->get(), runtime.device().device, CL_KERNEL_WORK_GROUP_SIZE, sizeof(kernel_max), &kernel_max, nullptr),
+                         "clGetKernelWorkGroupInfo");
         while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     }
     check_material_layout(runtime_, program_);
@@ -104,7 +111,7 @@ std::vector<brdf::float3> BrdfBatch::eval(const std::vector<int>& material, cons
     upload_inputs(material, wo, wi, &index, &wo_buffer, &wi_buffer);
     size_t n = material.size();
     BufferHandle f = runtime_.buffer(n * sizeof(brdf::float3), CL_MEM_WRITE_ONLY);
-    set_kernel_args(eval_, int(n), materials_, measured_, index, wo_buffer, wi_buffer, f);
+    opencl::set_kernel_args(eval_, int(n), materials_, measured_, index, wo_buffer, wi_buffer, f);
     run(eval_, n);
     Clock::time_point start = Clock::now();
     std::vector<brdf::float3> out(n);
@@ -119,7 +126,7 @@ std::vector<float> BrdfBatch::pdf(const std::vector<int>& material, const std::v
     upload_inputs(material, wo, wi, &index, &wo_buffer, &wi_buffer);
     size_t n = material.size();
     BufferHandle pdf = runtime_.buffer(n * sizeof(float), CL_MEM_WRITE_ONLY);
-    set_kernel_args(pdf_, int(n), materials_, measured_, index, wo_buffer, wi_buffer, pdf);
+    opencl::set_kernel_args(pdf_, int(n), materials_, measured_, index, wo_buffer, wi_buffer, pdf);
     run(pdf_, n);
     Clock::time_point start = Clock::now();
     std::vector<float> out(n);
@@ -137,7 +144,7 @@ std::vector<brdf::BsdfSample> BrdfBatch::sample(const std::vector<int>& material
     BufferHandle f = runtime_.buffer(n * sizeof(brdf::float3), CL_MEM_WRITE_ONLY);
     BufferHandle pdf = runtime_.buffer(n * sizeof(float), CL_MEM_WRITE_ONLY);
     BufferHandle flags = runtime_.buffer(n * sizeof(int), CL_MEM_WRITE_ONLY);
-    set_kernel_args(sample_, int(n), materials_, measured_, index, wo_buffer, u_buffer, wi, f, pdf, flags);
+    opencl::set_kernel_args(sample_, int(n), materials_, measured_, index, wo_buffer, u_buffer, wi, f, pdf, flags);
     run(sample_, n);
     Clock::time_point start = Clock::now();
     std::vector<brdf::float3> wi_out(n), f_out(n);
@@ -158,4 +165,4 @@ std::vector<brdf::BsdfSample> BrdfBatch::sample(const std::vector<int>& material
     return out;
 }
 
-}  // namespace lab::opencl
+}  // namespace lab::kernels

@@ -2,13 +2,14 @@
 // (scene_distance, scene_distance_material, scene_analytic_normal; in a kernel the generated
 // scene/generated.h defines them), for the host builds of those headers: the host renderer and the
 // viewer's pixel probe. They evaluate, through the host interpreter, the scene this thread set in
-// `current_scene`. A host build brings them in with `using namespace lab::scene::host_field;` in the
-// namespace that includes sdf/march.h and the kernel headers.
+// `current_scene`. A host build brings them in with
+// `using namespace lab::scene::field_for_kernel_headers;` in the namespace that includes
+// sdf/march.h and the kernel headers.
 #pragma once
 
 #include "scene/interpreter.hpp"
 
-namespace lab::scene::host_field {
+namespace lab::scene::field_for_kernel_headers {
 
 inline thread_local const Scene* current_scene = nullptr;
 
@@ -16,4 +17,4 @@ inline float scene_distance(Vec3 p) { return scene::scene_distance(*current_scen
 inline float scene_distance_material(Vec3 p, int* material) { return scene::scene_distance_material(*current_scene, p, material); }
 inline int scene_analytic_normal(Vec3 p, Vec3* n) { return scene::scene_analytic_normal(*current_scene, p, n); }
 
-}  // namespace lab::scene::host_field
+}  // namespace lab::scene::field_for_kernel_headers

@@ -1,12 +1,12 @@
-#include "plots/lobe_data.hpp"
+#include "analysis/lobe_data.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include "brdf/host/angles.hpp"
-#include "plots/luminance.hpp"
+#include "analysis/luminance.hpp"
 
-namespace lab::plots {
+namespace lab::analysis {
 
 using brdf::degrees_from_direction;
 using brdf::direction_from_degrees;
@@ -111,4 +111,4 @@ std::vector<PlaneSample> plane_slice(const BsdfFunction& f, float theta_in_deg, 
     return plane;
 }
 
-}  // namespace lab::plots
+}  // namespace lab::analysis

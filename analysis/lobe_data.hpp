@@ -11,7 +11,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/preset.hpp"
 
-namespace lab::plots {
+namespace lab::analysis {
 
 struct LobeSample {
     float theta_deg, phi_deg;  // of wo: theta from the normal (> 90 below the surface), phi in [0, 360)
@@ -64,4 +64,4 @@ LobeData compute_lobe(const brdf::Preset& preset, float theta_in_deg, float phi_
 // Delta lobes for incident direction wi, found by sweeping the sampler's lobe choice.
 std::vector<DeltaLobe> find_delta_lobes(const brdf::Material& m, float theta_in_deg, float phi_in_deg);
 
-}  // namespace lab::plots
+}  // namespace lab::analysis

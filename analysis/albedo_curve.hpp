@@ -7,7 +7,7 @@
 #include "brdf/brdf.hpp"
 #include "validation/albedo.hpp"
 
-namespace lab::plots {
+namespace lab::analysis {
 
 struct AlbedoCurveOptions {
     int angles = 46;        // evenly spaced over [0, 90] degrees
@@ -23,4 +23,4 @@ struct AlbedoPoint {
 
 std::vector<AlbedoPoint> albedo_curve(const brdf::Material& m, const AlbedoCurveOptions& options = {});
 
-}  // namespace lab::plots
+}  // namespace lab::analysis

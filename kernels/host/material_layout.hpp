@@ -5,9 +5,9 @@
 
 #include "opencl/runtime.hpp"
 
-namespace lab::opencl {
+namespace lab::kernels {
 
-// Throws OpenClError naming the device and both layouts when they differ.
-void check_material_layout(const Runtime& runtime, const Program& program);
+// Throws opencl::OpenClError naming the device and both layouts when they differ.
+void check_material_layout(const opencl::Runtime& runtime, const opencl::Program& program);
 
-}  // namespace lab::opencl
+}  // namespace lab::kernels

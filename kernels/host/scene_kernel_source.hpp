@@ -9,7 +9,7 @@
 #include "opencl/kernel_source.hpp"
 #include "scene/compile.hpp"
 
-namespace lab::scene {
+namespace lab::kernels {
 
 // The path kernels include the compiled scene's geometry by,
 inline constexpr const char* kGeneratedScenePath = "scene/generated.h";
@@ -23,6 +23,6 @@ inline constexpr const char* kSceneBuildOptions = "-cl-std=CL1.2 -cl-fp32-correc
 // Assembles `entry` (e.g. "kernels/scene_probe.cl") with the scene's sources behind
 // "scene/generated.h" and "scene/materials.h". Throws lab::opencl::OpenClError for an include that
 // resolves to nothing.
-opencl::AssembledSource assemble_scene_kernel(const std::string& entry, const CompiledScene& scene);
+opencl::AssembledSource assemble_scene_kernel(const std::string& entry, const scene::CompiledScene& scene);
 
-}  // namespace lab::scene
+}  // namespace lab::kernels

@@ -8,7 +8,7 @@
 #include "brdf/brdf.hpp"
 #include "opencl/runtime.hpp"
 
-namespace lab::opencl {
+namespace lab::kernels {
 
 // Wall-clock seconds of the last batch call, each phase finished before the next starts.
 struct BatchTiming {
@@ -23,8 +23,8 @@ public:
     static constexpr const char* kBuildOptions = "-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt";
 
     // Builds the kernels (extra_options are appended, e.g. a -D that forces a cold build) and checks
-    // that the device lays out Material like the host. Throws KernelBuildError or OpenClError.
-    explicit BrdfBatch(const Runtime& runtime, const std::string& extra_options = "");
+    // that the device lays out Material like the host. Throws opencl::KernelBuildError or opencl::OpenClError.
+    explicit BrdfBatch(const opencl::Runtime& runtime, const std::string& extra_options = "");
 
     // clBuildProgram, and the first launch of every kernel (PoCL compiles the work-group function then).
     double build_seconds() const { return build_seconds_; }
@@ -45,18 +45,18 @@ public:
 private:
     void check_inputs(const std::vector<int>& material, size_t wo_count, size_t third_count) const;
     void upload_inputs(const std::vector<int>& material, const std::vector<brdf::float3>& wo, const std::vector<brdf::float3>& third,
-                       BufferHandle* index, BufferHandle* wo_buffer, BufferHandle* third_buffer);
-    void run(const KernelHandle& kernel, size_t count);
+                       opencl::BufferHandle* index, opencl::BufferHandle* wo_buffer, opencl::BufferHandle* third_buffer);
+    void run(const opencl::KernelHandle& kernel, size_t count);
 
-    const Runtime& runtime_;
+    const opencl::Runtime& runtime_;
     double build_seconds_ = 0.0, first_launch_seconds_ = 0.0;  // before program_: its initialiser sets the first
-    Program program_;
-    KernelHandle eval_, pdf_, sample_;
+    opencl::Program program_;
+    opencl::KernelHandle eval_, pdf_, sample_;
     size_t local_size_ = 64;
-    BufferHandle materials_;
-    BufferHandle measured_;  // brdf::measured_table_data() when set_materials ran
+    opencl::BufferHandle materials_;
+    opencl::BufferHandle measured_;  // brdf::measured_table_data() when set_materials ran
     size_t material_count_ = 0;
     BatchTiming timing_;
 };
 
-}  // namespace lab::opencl
+}  // namespace lab::kernels

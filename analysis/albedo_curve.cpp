@@ -1,10 +1,10 @@
-#include "plots/albedo_curve.hpp"
+#include "analysis/albedo_curve.hpp"
 
 #include <stdexcept>
 
 #include "brdf/host/angles.hpp"
 
-namespace lab::plots {
+namespace lab::analysis {
 
 std::vector<AlbedoPoint> albedo_curve(const brdf::Material& m, const AlbedoCurveOptions& options) {
     if (options.angles < 2 || options.strata < 1) throw std::invalid_argument("albedo curve: needs 2 angles and 1 stratum at least");
@@ -18,4 +18,4 @@ std::vector<AlbedoPoint> albedo_curve(const brdf::Material& m, const AlbedoCurve
     return curve;
 }
 
-}  // namespace lab::plots
+}  // namespace lab::analysis

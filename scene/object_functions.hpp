@@ -1,0 +1,56 @@
+// The generated functions of one object: its distance (scene_object_N, in component form) and, for a
+// primitive under rigid transforms and uniform scales, its analytic normal, each written as
+// numbered locals with the sdf/ headers they use.
+#pragma once
+
+#include <set>
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace lab::scene {
+
+// The body of one generated function: numbered locals, one statement each, and the headers used.
+class FunctionWriter {
+public:
+    explicit FunctionWriter(std::set<std::string>* headers) : headers_(headers) {}
+
+    std::string point(const std::string& expression) { return local("float3", "p", expression); }
+    // A point as three float locals pNx, pNy, pNz (one statement); returns "pN".
+    std::string point_components(const std::string& x, const std::string& y, const std::string& z) {
+        std::string name = "p" + std::to_string(next_++);
+        body_ += "    SDF_FLOAT " + name + "x = " + x + ", " + name + "y = " + y + ", " + name + "z = " + z + ";\n";
+        return name;
+    }
+    std::string distance(const std::string& expression) { return local("SDF_FLOAT", "d", expression); }
+    std::string normal(const std::string& expression) { return local("float3", "n", expression); }
+    void use(const std::string& header) { headers_->insert(header); }
+    const std::string& body() const { return body_; }
+
+private:
+    std::string local(const char* type, const char* prefix, const std::string& expression) {
+        std::string name = prefix + std::to_string(next_++);
+        body_ += std::string("    ") + type + " " + name + " = " + expression + ";\n";
+        return name;
+    }
+    std::set<std::string>* headers_;
+    std::string body_;
+    int next_ = 1;
+};
+
+// The distance of `node` at the point whose components are named px, py, pz (p the stem); returns
+// the local that holds it.
+std::string emit_distance(const Node& node, const std::string& p, FunctionWriter* w);
+
+// A primitive under rigid transforms and uniform scales only: its normal is the primitive's
+// analytic one (nX) turned back by the rotations (translation and uniform scale leave it).
+bool has_analytic_normal(const Node& node);
+
+// The analytic normal of a node has_analytic_normal() accepts, at the float3 point p.
+std::string emit_normal(const Node& node, const std::string& p, FunctionWriter* w);
+
+// A rough cost of evaluating the node, in primitive evaluations: where an object costs more than its
+// box test (about one and a half primitives), the test pays when it skips the object.
+float evaluation_cost(const Node& node);
+
+}  // namespace lab::scene

@@ -1,0 +1,51 @@
+// What the viewer opens with: the renderer's factory, the scene and material, the window's size and
+// display, and the headless automation's script (run_viewer, viewer/app.hpp).
+#pragma once
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "brdf/host/preset.hpp"
+#include "film/tone_map.hpp"
+#include "scene/scene.hpp"
+#include "viewer/render_worker.hpp"
+#include "viewer/script.hpp"
+#include "viewer/view_state.hpp"
+
+namespace lab::viewer {
+
+struct ViewerConfig {
+    RenderWorker::RendererFactory make_renderer;
+    // The factory of a renderer under another environment map (the environment panel); its errors
+    // (a missing or bad map) come from the worker that calls it.
+    std::function<RenderWorker::RendererFactory(const std::string& env)> factory_for_env;
+    ViewState initial;
+    scene::Scene scene;                // as the renderer has it: for the pixel inspector's rays
+    int width = 256, height = 256;     // of the render; the window adds the panel beside it
+    int edited_slot = 0;               // the slot the material panel edits
+    brdf::Preset preset;               // its material as loaded: what "reset" returns to
+    brdf::Preset compare;              // B of the lobe panel's A/B overlay
+    std::string title;
+    int max_samples = 1 << 16;
+    double chunk_seconds = 1.0 / 30.0; // the render worker's budget per chunk
+    film::ToneMap tone_map = film::ToneMap::Aces;
+    float display_exposure = 0.0f;
+
+    // Headless automation: with frames > 0 the viewer closes itself after that many frames and
+    // once the image shows every scripted change.
+    bool split = false;                // start in the A/B split view
+    int frames = 0;
+    int min_samples = 1;               // ... and the image has at least this many samples per pixel
+    std::vector<ScriptedSet> sets;
+    std::vector<ScriptedSet> moves;      // --move KEY=VALUE@FRAME: camera and environment changes (viewer/script.hpp)
+    std::vector<ScriptedSet> env_loads;  // --load-env PATH@FRAME: as the environment panel's "load map" (key unused)
+    std::string screenshot;            // PNG of the whole window at the last frame
+    std::string save_preset;           // written on exit
+    std::string export_scene, export_name;  // written on exit
+    std::vector<std::array<int, 2>> inspect;  // pixels whose inspector lines are printed at the end
+    bool stats = false;                // print frame times, samples/s and change latency on exit
+};
+
+}  // namespace lab::viewer
