@@ -29,7 +29,7 @@ KNOWN_TOP_LEVEL = {
 
 # Names that are no file in the source tree, each with why it is named.
 NOT_IN_THE_SOURCE_TREE = {
-    # The compiled scene's two headers, which scene/scene_source.cpp serves to the kernel build.
+    # The compiled scene's two headers, which kernels/host/scene_kernel_source.cpp serves to the kernel build.
     "scene/generated.h": "virtual header: the compiled scene's distance field",
     "scene/materials.h": "virtual header: the compiled scene's BRDF feature switches",
     # Example names of a user's files, in the error messages and commands the docs show.
