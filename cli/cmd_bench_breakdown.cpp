@@ -6,7 +6,7 @@
 // paths alike (its rays per path are printed next to it); and the environment's part done twice,
 // on the very same paths: default/twice - 1 is its share without that proviso. (3) The wavefront's
 // launches (a CPU device): each kind's share of the time and microseconds per sample, the host
-// waiting for every launch (render/opencl_renderer.hpp, WavefrontLaunchTimes). (4) Work-group size:
+// waiting for every launch (render/wavefront_launch_times.hpp, WavefrontLaunchTimes). (4) Work-group size:
 // paths/s per local size against the default 64. Figures, not timed tests: every ratio is measured
 // within the run.
 #include <algorithm>

@@ -100,7 +100,7 @@ void run_bench_render(const BenchRenderCommand& c) {
         render::RenderStatistics h = measure(host, c.throughput_seconds);
         double bidirectional[2] = {0.0, 0.0};
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt}) {
-            if (integrator == render::Integrator::lt && job.input.environment) continue;  // lt refuses an environment
+            if (!render::integrator_descriptor(integrator).renders_environment() && job.input.environment) continue;
             render::RenderInput input = job.input;
             input.settings.integrator = integrator;
             std::unique_ptr<render::Renderer> r = on_device(input);
@@ -132,7 +132,7 @@ void run_bench_render(const BenchRenderCommand& c) {
         std::string name = fs::path(file).stem().string();
         std::vector<EqualTimeRun> runs;
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::pt}) {
-            if (integrator == render::Integrator::lt && job.input.environment) continue;  // lt refuses an environment
+            if (!render::integrator_descriptor(integrator).renders_environment() && job.input.environment) continue;
             EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
             run.input.settings.integrator = integrator;
             runs.push_back(std::move(run));

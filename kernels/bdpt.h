@@ -141,12 +141,9 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
         for (int t = 1; t <= n_cam; ++t)
             for (int s = 0; s <= n_light; ++s) {
                 int depth = s + t - 2;
-                /* (1, 1), the lens joined to a light, and (0, 2) make the same paths (a light seen
-                 * directly) with weight 1 each: (1, 1) only runs where (0, 2) cannot */
                 if (depth < 0 || s + t > max_vertices) continue;
-                if (s == 1 && t == 1 && bdpt_strategy_enabled(k->strategies, 0, 2)) continue;
-                if (!bdpt_strategy_enabled(k->strategies, s, t)) continue;
-                if (k->strategy_only >= 0 && k->strategy_only != s * 32 + t) continue;
+                if (!bdpt_strategy_runs(k->strategies, s, t)) continue;
+                if (k->single_strategy >= 0 && k->single_strategy != bdpt_strategy_code(s, t)) continue;
                 float2 raster = make_float2(-1.0f, -1.0f);
                 float weight;
                 /* the light sample (s = 1) and the lens sample (t = 1) draw from the strategy's own
@@ -154,7 +151,7 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
                  * render, so the strategy images add up to the render; the other strategies draw none */
                 Rng connection_rng = rng;
                 if (s == 1 || t == 1)
-                    connection_rng = rng_make_stream((uint)pixel, (uint)(k->first_sample + i), (uint)(1 + s * 32 + t), k->seed_lo, k->seed_hi);
+                    connection_rng = rng_make_stream((uint)pixel, (uint)(k->first_sample + i), (uint)(1 + bdpt_strategy_code(s, t)), k->seed_lo, k->seed_hi);
                 float3 c = bdpt_connect(k, s_march, camera, scene, light, cam, s, t, &connection_rng, &raster, &weight, &counters);
                 if (!k->unweighted) c = c * weight;
                 /* a NaN or infinite contribution or weight is counted before anything can drop it */

@@ -23,14 +23,6 @@ SS_FN float bdpt_remap0(float pdf) { return pdf != 0.0f ? pdf : 1.0f; }
  * so the ratio, and every ratio the running product carries it into, stays 0. */
 SS_FN float bdpt_remap_reverse(float pdf, bool next_is_delta) { return pdf != 0.0f || !next_is_delta ? pdf : 1.0f; }
 
-SS_FN bool bdpt_strategy_enabled(int mask, int s, int t) {
-    if (t == 1) return (mask & STRATEGY_T1) != 0;
-    if (t < 1) return false; /* the lens is never hit */
-    if (s == 0) return (mask & STRATEGY_S0) != 0;
-    if (s == 1) return (mask & STRATEGY_S1) != 0;
-    return (mask & STRATEGY_S2) != 0;
-}
-
 SS_FN float bdpt_heuristic(int heuristic, float r) { return heuristic == MIS_POWER ? r * r : r; }
 
 /* q1 / q for light vertex x0 and its neighbour x1: the density with which s = 1 samples x0 from x1

@@ -6,6 +6,7 @@
 #define KERNELS_RENDER_SETTINGS_H
 #include "single_source/vocabulary.h"
 #include "sdf/march_settings.h"
+#include "kernels/bdpt_strategies.h"
 
 /* How a path finds the lights (the environment, emissive spheres, point lights):
  *   BSDF:   only where a BSDF-sampled ray happens to reach one (point lights are then never found);
@@ -15,15 +16,6 @@
 #define LIGHT_SAMPLING_BSDF 0
 #define LIGHT_SAMPLING_LIGHTS 1
 #define LIGHT_SAMPLING_MIS 2
-
-/* The strategies a bidirectional kernel (kernels/bdpt.h) adds up, as a mask: s light-subpath
- * vertices joined to t camera-subpath vertices. bdpt takes them all, the light tracer `lt` only
- * t = 1 (docs/bdpt.md). */
-#define STRATEGY_S0 1      /* s = 0: the camera subpath reaches a light */
-#define STRATEGY_S1 2      /* s = 1, t >= 2: a light sample joined to a camera vertex */
-#define STRATEGY_S2 4      /* s >= 2, t >= 2: two subpath vertices joined by a visibility march */
-#define STRATEGY_T1 8      /* t = 1: a light-subpath vertex joined to the lens, splatted */
-#define STRATEGY_ALL 15
 
 /* The most vertices of a bidirectional path (max_depth + 2): the size of the host build's private
  * vertex arrays (kernels/bdpt_vertex.h); an OpenCL build sizes them to its own max_vertices. */
@@ -50,9 +42,9 @@ typedef struct RenderKernelSettings {
     int max_vertices;     /* s + t at most: max_depth + 2, the lens, max_depth scattering events and the light */
     int strategies;       /* STRATEGY_* mask */
     int mis_heuristic;    /* MIS_* */
-    int strategy_only;    /* >= 0: add only strategy (s, t) = (strategy_only / 32, strategy_only % 32), weighted by the
-                             mask's MIS (--strategies DIR); -1: every strategy of the mask */
-    int unweighted;       /* 1: with strategy_only, its contribution without the MIS weight */
+    int single_strategy;  /* >= 0: add only the strategy of this bdpt_strategy_code (kernels/bdpt_strategies.h), weighted
+                             by the mask's MIS (--strategies DIR); -1: every strategy of the mask */
+    int unweighted;       /* 1: with single_strategy, its contribution without the MIS weight */
     float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
     float scene_radius;
     float surface_lo[3], surface_hi[3]; /* MarchSettings' surface box */

@@ -51,7 +51,7 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange rang
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());
     // The splat buffer holds floats as their bits (kernels/film.h), which the film reads back as floats.
     auto* splat = reinterpret_cast<unsigned*>(film_.splat.data());
-    const bool bidirectional = input_.settings.integrator != Integrator::pt;
+    const bool bidirectional = integrator_descriptor(input_.settings.integrator).bidirectional();
     std::atomic<int> next{range.first};
     auto work = [&] {
         scene::host_field::current_scene = &input_.scene;

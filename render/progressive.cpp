@@ -71,7 +71,7 @@ film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatis
     m.set("light_selection", light_selection_name(renderer.light_selection()));
     m.set("max_depth", s.max_depth);
     m.set("roulette_depth", s.roulette_depth);
-    if (s.integrator != Integrator::pt) {  // what only the bidirectional kernel reads
+    if (integrator_descriptor(s.integrator).bidirectional()) {  // what only the bidirectional kernel reads
         m.set("max_vertices", bdpt_max_vertices(s));
         m.set("mis_heuristic", mis_heuristic_name(s.mis_heuristic));
         if (s.strategies != 0) m.set("strategies", s.strategies);  // a STRATEGY_* mask other than the integrator's own

@@ -5,12 +5,10 @@
 #include <cstdint>
 #include <string>
 
+#include "render/integrator.hpp"
+
 namespace lab::render {
 
-// Which transport algorithm fills the film. `pt`: the path tracer with next-event estimation
-// (kernels/path_tracer.h); `bdpt`: bidirectional path tracing, every strategy (kernels/bdpt.h);
-// `lt`: light tracing, the same code with only its t = 1 strategies (docs/bdpt.md).
-enum class Integrator { pt, bdpt, lt };
 // BDPT's multiple importance sampling heuristic.
 enum class MisHeuristic { balance, power };
 // How paths find lights (kernels/render_settings.h): BSDF sampling alone, light sampling (next-event
@@ -19,12 +17,10 @@ enum class LightSampling { bsdf, lights, mis };
 enum class NormalMethod { tetrahedral, central, analytic };
 
 // Parse the command-line words; errors are lab::InputError naming `option`.
-Integrator parse_integrator(const std::string& text, const std::string& option = "--integrator");
 MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option = "--mis");
 NormalMethod parse_normal_method(const std::string& text, const std::string& option = "--normals");
 // "bsdf" (or "brdf"), "lights" (or "env", the preview's word) and "mis".
 LightSampling parse_light_sampling(const std::string& text, const std::string& option);
-const char* integrator_name(Integrator integrator);
 const char* mis_heuristic_name(MisHeuristic heuristic);
 const char* light_sampling_name(LightSampling sampling);
 const char* normal_method_name(NormalMethod method);
@@ -60,7 +56,7 @@ struct RenderSettings {
     // in its path's work-item (the same bits).
     bool packets = true;
     // Paths the wavefront keeps in flight: as many samples of every pixel as make up about this many
-    // (at least one); 0: the renderer's default (render/opencl_renderer.cpp). The same bits whatever it is.
+    // (at least one); 0: the wavefront's default (render/wavefront_driver.cpp). The same bits whatever it is.
     int wavefront_paths = 0;
 };
 

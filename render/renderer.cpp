@@ -73,25 +73,7 @@ Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     }
     emission_ = emission_table(compiled_);
     rebuild_lights();
-    check_integrator_lights();
-}
-
-// What a bidirectional integrator cannot render is refused before anything is built or rendered,
-// instead of coming out black.
-void Renderer::check_integrator_lights() const {
-    const Integrator integrator = input_.settings.integrator;
-    if (integrator == Integrator::pt) return;
-    const std::string name = integrator_name(integrator);
-    if (lights_.lights.empty())
-        throw InputError(compiled_.file, "--integrator",
-                         name + " starts its light subpaths on the lights, and the scene has none (no emissive sphere, point light or "
-                                "environment): add one, or give --env");
-    // The lens is never hit from infinity, and light subpaths from the environment start on a disk
-    // of finite radius, which an endless surface outruns (docs/bdpt.md): t = 1 alone misses both.
-    if (integrator == Integrator::lt && input_.environment)
-        throw InputError(compiled_.file, "--integrator",
-                         "lt cannot render an environment light (light tracing never reaches the lens from infinity, nor an endless "
-                         "surface beyond the environment's light disk): use --integrator bdpt or pt");
+    check_integrator_lights(input_.settings.integrator, compiled_.file, !lights_.lights.empty(), input_.environment.has_value());
 }
 
 void Renderer::initialize() {
@@ -129,9 +111,9 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     k.light_count = int(lights_.lights.size());
     k.show_background = s.show_background ? 1 : 0;
     k.max_vertices = bdpt_max_vertices(s);
-    k.strategies = s.strategies != 0 ? s.strategies : s.integrator == Integrator::lt ? STRATEGY_T1 : STRATEGY_ALL;
+    k.strategies = s.strategies != 0 ? s.strategies : integrator_descriptor(s.integrator).strategies;
     k.mis_heuristic = s.mis_heuristic == MisHeuristic::power ? MIS_POWER : MIS_BALANCE;
-    k.strategy_only = s.strategy_s >= 0 ? s.strategy_s * 32 + s.strategy_t : -1;
+    k.single_strategy = s.strategy_s >= 0 ? kernel::bdpt_strategy_code(s.strategy_s, s.strategy_t) : -1;
     k.unweighted = s.strategy_unweighted ? 1 : 0;
     k.scene_center[0] = compiled_.bounds_center.x;
     k.scene_center[1] = compiled_.bounds_center.y;

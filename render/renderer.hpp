@@ -162,7 +162,6 @@ protected:
 
 private:
     void rebuild_lights();
-    void check_integrator_lights() const;
 
     int first_sample_ = 0;    // where a reset film starts
     SampleRanges restored_;   // the samples restore_film put on the film

@@ -94,7 +94,7 @@ struct SumTerms {
 SumTerms sum_terms(const lab::render::RenderSettings& s, int samples) {
     SumTerms terms;
     terms.own = samples;
-    if (s.integrator != lab::render::Integrator::pt) terms.splat = double(s.width) * s.height * samples * (lab::render::bdpt_max_vertices(s) - 1);
+    if (lab::render::integrator_descriptor(s.integrator).splats()) terms.splat = double(s.width) * s.height * samples * (lab::render::bdpt_max_vertices(s) - 1);
     return terms;
 }
 
