@@ -125,10 +125,10 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         std::vector<render::RenderInput> variants{job.input};
         for (const std::string& part : parts) {
             variants.push_back(job.input);
-            variants.back().settings.extra_build_options += std::string(" -DBENCH_STANDIN_") + part;
+            variants.back().settings.opencl.extra_build_options += std::string(" -DBENCH_STANDIN_") + part;
         }
         variants.push_back(job.input);
-        variants.back().settings.extra_build_options += " -DBENCH_TWICE_ENVIRONMENT";
+        variants.back().settings.opencl.extra_build_options += " -DBENCH_TWICE_ENVIRONMENT";
         std::vector<Speed> s = interleaved(runtime, variants, c);
         std::printf("  default: %.3g paths/s, %.2f rays/path\n", s[0].paths_per_second, s[0].rays_per_path);
         // the share from rays/s: a stand-in that changes the path length (the grey Lambert BSDF) changes paths/s for that too
@@ -147,7 +147,7 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         std::vector<render::RenderInput> sizes{job.input};
         for (int l : c.local_sizes) {
             sizes.push_back(job.input);
-            sizes.back().settings.local_size = l;
+            sizes.back().settings.opencl.local_size = l;
         }
         std::vector<Speed> t = interleaved(runtime, sizes, c);
         std::printf("  work-group size, paths/s against 64:");

@@ -68,9 +68,9 @@ void write_strategy_images(const RenderJob& job, const std::string& device, int 
             if (!render::integrator_runs_strategy(settings.integrator, s, t)) continue;
             for (bool unweighted : {true, false}) {
                 RenderJob one = job;
-                one.input.settings.strategy_s = s;
-                one.input.settings.strategy_t = t;
-                one.input.settings.strategy_unweighted = unweighted;
+                one.input.settings.strategy_debug.strategy_s = s;
+                one.input.settings.strategy_debug.strategy_t = t;
+                one.input.settings.strategy_debug.strategy_unweighted = unweighted;
                 std::unique_ptr<render::Renderer> renderer = make_renderer(one, device, &runtime);
                 renderer->set_samples_per_launch(spp);
                 renderer->add_samples(spp);

@@ -127,13 +127,13 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
-    int max_vertices = min(max(k->max_vertices, 2), BDPT_MAX_VERTICES);
+    int max_vertices = min(max(k->bdpt.max_vertices, 2), BDPT_MAX_VERTICES);
     PathVertex cam[BDPT_MAX_VERTICES];
     PathVertex light[BDPT_MAX_VERTICES];
     for (int i = 0; i < k->sample_count; ++i) {
         Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
         /* t = 1 alone (the light tracer) needs no camera subpath: its lens vertex is sampled per connection */
-        bool camera_strategies = (k->strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
+        bool camera_strategies = (k->bdpt.strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
         int n_cam = camera_strategies ? bdpt_camera_subpath(k, s_march, camera, scene, pixel, &rng, cam, max_vertices, &counters) : 1;
         int n_light = k->light_count > 0 ? bdpt_light_subpath(k, s_march, scene, &rng, light, max_vertices - 1, &counters) : 0;
         float3 l = float3_splat(0.0f);
@@ -142,8 +142,8 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
             for (int s = 0; s <= n_light; ++s) {
                 int depth = s + t - 2;
                 if (depth < 0 || s + t > max_vertices) continue;
-                if (!bdpt_strategy_runs(k->strategies, s, t)) continue;
-                if (k->single_strategy >= 0 && k->single_strategy != bdpt_strategy_code(s, t)) continue;
+                if (!bdpt_strategy_runs(k->bdpt.strategies, s, t)) continue;
+                if (k->bdpt.single_strategy >= 0 && k->bdpt.single_strategy != bdpt_strategy_code(s, t)) continue;
                 float2 raster = make_float2(-1.0f, -1.0f);
                 float weight;
                 /* the light sample (s = 1) and the lens sample (t = 1) draw from the strategy's own
@@ -153,7 +153,7 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
                 if (s == 1 || t == 1)
                     connection_rng = rng_make_stream((uint)pixel, (uint)(k->first_sample + i), (uint)(1 + bdpt_strategy_code(s, t)), k->seed_lo, k->seed_hi);
                 float3 c = bdpt_connect(k, s_march, camera, scene, light, cam, s, t, &connection_rng, &raster, &weight, &counters);
-                if (!k->unweighted) c = c * weight;
+                if (!k->bdpt.unweighted) c = c * weight;
                 /* a NaN or infinite contribution or weight is counted before anything can drop it */
                 if (!finite3(c)) {
                     finite = false;

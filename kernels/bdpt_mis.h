@@ -77,7 +77,7 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* k, const Camera* camera,
         r *= bdpt_remap_reverse(rev, i < t - 2 && cam[i + 1].delta) / bdpt_remap0(cam[i].pdf_fwd);
         bool delta = i != t - 1 && cam[i].delta;
         float q = s + t - i == 1 ? q_ratio : own;
-        if (!delta && !cam[i - 1].delta && bdpt_strategy_enabled(k->strategies, s + t - i, i)) sum += bdpt_heuristic(k->mis_heuristic, r * q);
+        if (!delta && !cam[i - 1].delta && bdpt_strategy_enabled(k->bdpt.strategies, s + t - i, i)) sum += bdpt_heuristic(k->bdpt.mis_heuristic, r * q);
     }
     r = 1.0f;
     for (int i = s - 1; i >= 0; --i) { /* strategy (i, s + t - i) */
@@ -87,7 +87,7 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* k, const Camera* camera,
         bool delta = i != s - 1 && v->delta;
         bool delta_before = i > 0 ? light[i - 1].delta != 0 : vertex_is_delta_light(scene, i == s - 1 ? qs : &light[0]);
         float q = i == 1 ? q_ratio : own;
-        if (!delta && !delta_before && bdpt_strategy_enabled(k->strategies, i, s + t - i)) sum += bdpt_heuristic(k->mis_heuristic, r * q);
+        if (!delta && !delta_before && bdpt_strategy_enabled(k->bdpt.strategies, i, s + t - i)) sum += bdpt_heuristic(k->bdpt.mis_heuristic, r * q);
     }
     return 1.0f / (1.0f + sum);
 }

@@ -113,11 +113,11 @@ SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* k, const RenderS
  * ray runs is reached by no light subpath: its density is 0, so the strategies that start there take
  * no share of its paths' MIS weights. */
 SS_FN float environment_disk_pdf(const RenderKernelSettings* k, float3 w, float3 p) {
-    float3 d = p - float3_from_array(k->scene_center);
+    float3 d = p - float3_from_array(k->bdpt.scene_center);
     float along = dot(d, w);
     float3 across = d - along * w;
-    float r2 = sqr(k->scene_radius);
-    if (dot(across, across) > r2 || along > k->scene_radius || k->scene_radius - along > k->max_distance) return 0.0f;
+    float r2 = sqr(k->bdpt.scene_radius);
+    if (dot(across, across) > r2 || along > k->bdpt.scene_radius || k->bdpt.scene_radius - along > k->max_distance) return 0.0f;
     return 1.0f / (SS_PI * r2);
 }
 

@@ -146,11 +146,11 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* k, MarchSettings s, con
         v.p = wi;
         v.frame = frame_from_normal(-wi);
         ShadingFrame disk_frame = frame_from_normal(wi);
-        float2 d = square_to_concentric_disk(u.y, u.z) * k->scene_radius;
-        float3 center = float3_from_array(k->scene_center);
-        origin = center + d.x * disk_frame.t + d.y * disk_frame.b + wi * k->scene_radius;
+        float2 d = square_to_concentric_disk(u.y, u.z) * k->bdpt.scene_radius;
+        float3 center = float3_from_array(k->bdpt.scene_center);
+        origin = center + d.x * disk_frame.t + d.y * disk_frame.b + wi * k->bdpt.scene_radius;
         direction = -wi;
-        pdf_position = 1.0f / (SS_PI * sqr(k->scene_radius));
+        pdf_position = 1.0f / (SS_PI * sqr(k->bdpt.scene_radius));
         le = environment_radiance(&scene->env, scene->env_buffers.texels, wi);
     }
     if (!(pdf_dir > 0.0f) || !(pdf_position > 0.0f)) return 0;

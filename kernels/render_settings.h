@@ -1,12 +1,12 @@
 /* The settings every integrator kernel takes (kernels/path_tracer.cl, kernels/bdpt.cl,
  * kernels/march_packets.cl, and the host build of the same integrators, render/host_renderer.cpp):
- * plain 4-byte scalars only, so the struct has one layout on both sides and travels as a kernel
- * argument by value. */
+ * plain 4-byte scalars only (and structs of them), so the struct has one layout on both sides and
+ * travels as a kernel argument by value. */
 #ifndef KERNELS_RENDER_SETTINGS_H
 #define KERNELS_RENDER_SETTINGS_H
 #include "single_source/vocabulary.h"
 #include "sdf/march_settings.h"
-#include "kernels/bdpt_strategies.h"
+#include "kernels/bdpt_settings.h"
 
 /* How a path finds the lights (the environment, emissive spheres, point lights):
  *   BSDF:   only where a BSDF-sampled ray happens to reach one (point lights are then never found);
@@ -16,13 +16,6 @@
 #define LIGHT_SAMPLING_BSDF 0
 #define LIGHT_SAMPLING_LIGHTS 1
 #define LIGHT_SAMPLING_MIS 2
-
-/* The most vertices of a bidirectional path (max_depth + 2): the size of the host build's private
- * vertex arrays (kernels/bdpt_vertex.h); an OpenCL build sizes them to its own max_vertices. */
-#define BDPT_VERTEX_LIMIT 64
-
-#define MIS_BALANCE 0
-#define MIS_POWER 1
 
 typedef struct RenderKernelSettings {
     int first_sample;   /* sample index of this launch's first sample (keys the random numbers) */
@@ -38,15 +31,7 @@ typedef struct RenderKernelSettings {
     float max_distance, over_relaxation, lipschitz;
     int light_count;      /* entries of the light array; the environment, when there is one, is entry 0 */
     int show_background;  /* 0: camera rays (and mirror paths) that escape see black, lighting unchanged */
-    /* bidirectional kernels only */
-    int max_vertices;     /* s + t at most: max_depth + 2, the lens, max_depth scattering events and the light */
-    int strategies;       /* STRATEGY_* mask */
-    int mis_heuristic;    /* MIS_* */
-    int single_strategy;  /* >= 0: add only the strategy of this bdpt_strategy_code (kernels/bdpt_strategies.h), weighted
-                             by the mask's MIS (--strategies DIR); -1: every strategy of the mask */
-    int unweighted;       /* 1: with single_strategy, its contribution without the MIS weight */
-    float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
-    float scene_radius;
+    BdptKernelSettings bdpt; /* the bidirectional kernels' own (kernels/bdpt_settings.h) */
     float surface_lo[3], surface_hi[3]; /* MarchSettings' surface box */
 } RenderKernelSettings;
 

@@ -8,8 +8,8 @@ MarchWork count_march_work(const opencl::Runtime& runtime, RenderInput input, in
     OpenClRenderer plain(runtime, input);
     plain.add_samples(samples);
     RenderStatistics p = plain.statistics();
-    input.settings.extra_build_options += " -DSCENE_COUNT_EVALUATIONS";
-    input.settings.packets = false;  // the counting build marches every ray in its path's work-item
+    input.settings.opencl.extra_build_options += " -DSCENE_COUNT_EVALUATIONS";
+    input.settings.opencl.packets = false;  // the counting build marches every ray in its path's work-item
     OpenClRenderer counting(runtime, input);
     counting.add_samples(samples);
     RenderStatistics c = counting.statistics();  // rays: march steps; lost rays: evaluations

@@ -33,7 +33,7 @@ OpenClRenderer::OpenClRenderer(const opencl::Runtime& runtime, RenderInput input
 // On a CPU only: on a GPU, whose work-items are the SIMD lanes already, eight rays per work-item and
 // a launch per step made the path tracer 8 to 20 times slower (docs/render.md, "On a GPU").
 bool OpenClRenderer::wavefront() const {
-    return integrator_descriptor(input_.settings.integrator).wavefront && input_.settings.packets && runtime_.device().type == "cpu";
+    return integrator_descriptor(input_.settings.integrator).wavefront && input_.settings.opencl.packets && runtime_.device().type == "cpu";
 }
 
 int OpenClRenderer::samples_in_flight() const { return wavefront() ? wavefront_slots(input_.settings) : 1; }
@@ -44,7 +44,7 @@ void OpenClRenderer::build_kernel() {
     auto start = std::chrono::steady_clock::now();
     const RenderSettings& s = input_.settings;
     const IntegratorDescriptor& integrator = integrator_descriptor(s.integrator);
-    std::string options = kBuildOptions + (s.extra_build_options.empty() ? "" : " " + s.extra_build_options);
+    std::string options = kBuildOptions + (s.opencl.extra_build_options.empty() ? "" : " " + s.opencl.extra_build_options);
     // the wavefront's step prefetches environment texels (kernels/path_tracer_wavefront.h); PoCL only
     if (wavefront()) options += " -DWAVEFRONT_PREFETCH";
     // BDPT's private vertex arrays hold exactly the paths its max_depth allows (kernels/bdpt_vertex.h)
@@ -62,7 +62,7 @@ void OpenClRenderer::build_kernel() {
                      "clGetKernelWorkGroupInfo");
     // kLaunchGranularity (64) work-items unless set (`dtoadq bench breakdown` compares sizes), at
     // most the kernel's maximum
-    local_size_ = s.local_size > 0 ? size_t(s.local_size) : size_t(kLaunchGranularity);
+    local_size_ = s.opencl.local_size > 0 ? size_t(s.opencl.local_size) : size_t(kLaunchGranularity);
     while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     program_.emplace(std::move(program));
     kernel_ = std::move(kernel);

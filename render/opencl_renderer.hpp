@@ -18,10 +18,10 @@ public:
 
     std::string device_description() const override;
 
-    // The path tracer's wavefront (kernels/path_tracer_wavefront.h), when RenderSettings::packets
+    // The path tracer's wavefront (kernels/path_tracer_wavefront.h), when OpenClTuning::packets
     // and the device is a CPU: its marches run eight rays per work-item on the vector lanes.
     bool wavefront() const;
-    // Samples of every pixel the wavefront keeps in flight (RenderSettings::wavefront_paths); 1
+    // Samples of every pixel the wavefront keeps in flight (OpenClTuning::wavefront_paths); 1
     // without the wavefront.
     int samples_in_flight() const;
 

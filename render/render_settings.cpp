@@ -14,7 +14,6 @@ namespace {
 // Images beyond 2^26 pixels are refused up front: the kernels count pixels in an int.
 constexpr long kMaxPixels = 1L << 26;
 
-constexpr std::pair<const char*, MisHeuristic> kMisWords[] = {{"balance", MisHeuristic::balance}, {"power", MisHeuristic::power}};
 // The first word of each value is its name; the others are accepted as synonyms.
 constexpr std::pair<const char*, LightSampling> kLightSamplingWords[] = {
     {"bsdf", LightSampling::bsdf}, {"lights", LightSampling::lights}, {"mis", LightSampling::mis},
@@ -24,8 +23,6 @@ constexpr std::pair<const char*, NormalMethod> kNormalWords[] = {
 
 }  // namespace
 
-MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option) { return parse_word(text, option, kMisWords); }
-const char* mis_heuristic_name(MisHeuristic heuristic) { return word_of(heuristic, kMisWords); }
 NormalMethod parse_normal_method(const std::string& text, const std::string& option) { return parse_word(text, option, kNormalWords); }
 LightSampling parse_light_sampling(const std::string& text, const std::string& option) {
     return parse_word(text, option, kLightSamplingWords);
@@ -45,8 +42,8 @@ void check_render_settings(const RenderSettings& settings) {
     if (integrator_descriptor(settings.integrator).bidirectional() && settings.max_depth > kBdptMaxDepth)
         throw InputError("--max-depth", "", std::string(integrator_name(settings.integrator)) + " takes at most " +
                                                 std::to_string(kBdptMaxDepth) + " scattering events, got " + std::to_string(settings.max_depth));
-    if (settings.local_size < 0 || settings.local_size > 4096)
-        throw InputError("local size", "", "must be in [0, 4096], got " + std::to_string(settings.local_size));
+    if (settings.opencl.local_size < 0 || settings.opencl.local_size > 4096)
+        throw InputError("local size", "", "must be in [0, 4096], got " + std::to_string(settings.opencl.local_size));
     if (settings.max_steps < 1 || settings.max_steps > 1 << 20)
         throw InputError("--max-steps", "", "must be in [1, 1048576], got " + std::to_string(settings.max_steps));
     if (!(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f))

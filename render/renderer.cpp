@@ -110,15 +110,15 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     k.lipschitz = std::max(compiled_.lipschitz, 1.0f);
     k.light_count = int(lights_.lights.size());
     k.show_background = s.show_background ? 1 : 0;
-    k.max_vertices = bdpt_max_vertices(s);
-    k.strategies = s.strategies != 0 ? s.strategies : integrator_descriptor(s.integrator).strategies;
-    k.mis_heuristic = s.mis_heuristic == MisHeuristic::power ? MIS_POWER : MIS_BALANCE;
-    k.single_strategy = s.strategy_s >= 0 ? kernel::bdpt_strategy_code(s.strategy_s, s.strategy_t) : -1;
-    k.unweighted = s.strategy_unweighted ? 1 : 0;
-    k.scene_center[0] = compiled_.bounds_center.x;
-    k.scene_center[1] = compiled_.bounds_center.y;
-    k.scene_center[2] = compiled_.bounds_center.z;
-    k.scene_radius = std::max(compiled_.bounds_radius, 1e-3f);
+    k.bdpt.max_vertices = bdpt_max_vertices(s);
+    k.bdpt.strategies = s.strategy_debug.strategies != 0 ? s.strategy_debug.strategies : integrator_descriptor(s.integrator).strategies;
+    k.bdpt.mis_heuristic = s.bdpt.mis_heuristic == MisHeuristic::power ? MIS_POWER : MIS_BALANCE;
+    k.bdpt.single_strategy = s.strategy_debug.strategy_s >= 0 ? kernel::bdpt_strategy_code(s.strategy_debug.strategy_s, s.strategy_debug.strategy_t) : -1;
+    k.bdpt.unweighted = s.strategy_debug.strategy_unweighted ? 1 : 0;
+    k.bdpt.scene_center[0] = compiled_.bounds_center.x;
+    k.bdpt.scene_center[1] = compiled_.bounds_center.y;
+    k.bdpt.scene_center[2] = compiled_.bounds_center.z;
+    k.bdpt.scene_radius = std::max(compiled_.bounds_radius, 1e-3f);
     for (int i = 0; i < 3; ++i) {
         k.surface_lo[i] = compiled_.surface_lo[i];
         k.surface_hi[i] = compiled_.surface_hi[i];

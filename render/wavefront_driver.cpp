@@ -13,7 +13,7 @@ namespace lab::render {
 
 namespace {
 
-// Paths the wavefront keeps in flight unless RenderSettings::wavefront_paths says otherwise: a
+// Paths the wavefront keeps in flight unless OpenClTuning::wavefront_paths says otherwise: a
 // step and a march of a launch cost some fifty microseconds of launching and waiting whatever their
 // size, and at 128 x 128 one sample of a simple scene takes only a few milliseconds.
 constexpr int kWavefrontPaths = 1 << 16;
@@ -26,7 +26,7 @@ constexpr size_t kPacketLocal = 1;
 
 int wavefront_slots(const RenderSettings& s) {
     const int64_t pixels = int64_t(s.width) * s.height;
-    const int64_t paths = s.wavefront_paths > 0 ? s.wavefront_paths : kWavefrontPaths;
+    const int64_t paths = s.opencl.wavefront_paths > 0 ? s.opencl.wavefront_paths : kWavefrontPaths;
     return int(std::max<int64_t>(1, paths / pixels));
 }
 

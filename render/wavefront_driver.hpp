@@ -16,7 +16,7 @@
 
 namespace lab::render {
 
-// Samples of every pixel the wavefront keeps in flight: about RenderSettings::wavefront_paths paths
+// Samples of every pixel the wavefront keeps in flight: about OpenClTuning::wavefront_paths paths
 // (or the default), at least one sample.
 int wavefront_slots(const RenderSettings& settings);
 

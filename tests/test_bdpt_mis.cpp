@@ -90,10 +90,10 @@ struct Fixture {
 // facing the scene from c + R w, rays running along -w up to the march's max distance) reaches p:
 // written out here from the disk's geometry, not taken from the kernel.
 bool disk_reaches(const RenderKernelSettings& k, float3 w, float3 p) {
-    glm::dvec3 d = glm::dvec3(p) - glm::dvec3(k.scene_center[0], k.scene_center[1], k.scene_center[2]);
+    glm::dvec3 d = glm::dvec3(p) - glm::dvec3(k.bdpt.scene_center[0], k.bdpt.scene_center[1], k.bdpt.scene_center[2]);
     double along = glm::dot(d, glm::dvec3(w));
     double across = glm::length(d - along * glm::dvec3(w));
-    return across <= k.scene_radius && along <= k.scene_radius && k.scene_radius - along <= k.max_distance;
+    return across <= k.bdpt.scene_radius && along <= k.bdpt.scene_radius && k.bdpt.scene_radius - along <= k.max_distance;
 }
 
 // A path x_0 (on a light) .. x_{n-1} (the lens) as strategy (s, t) sees it: light[0..s-1] and
@@ -201,8 +201,8 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
     for (const PathVertex& v : x) any_delta = any_delta || v.delta;
     for (int heuristic : {MIS_BALANCE, MIS_POWER})
         for (int mask : {STRATEGY_ALL, STRATEGY_S0 | STRATEGY_S1, STRATEGY_T1, STRATEGY_S1 | STRATEGY_S2 | STRATEGY_T1, STRATEGY_S0 | STRATEGY_S2}) {
-            f.k.mis_heuristic = heuristic;
-            f.k.strategies = mask;
+            f.k.bdpt.mis_heuristic = heuristic;
+            f.k.bdpt.strategies = mask;
             double sum = 0.0;
             bool any = false;
             for (int s = 0; s < n; ++s) {
@@ -242,7 +242,7 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
 TEST_CASE("BDPT: the MIS weights of all strategies that can make a walked path sum to 1", "[render][bdpt][mis]") {
     Fixture f;
     PathCounters counters{};
-    const int max_vertices = f.k.max_vertices;
+    const int max_vertices = f.k.bdpt.max_vertices;
     std::vector<PathVertex> cam(static_cast<size_t>(max_vertices)), light(static_cast<size_t>(max_vertices));
     Totals totals;
     for (int sample = 0; sample < 3000; ++sample) {

@@ -26,7 +26,7 @@ BenchRender render_bench_build(const lab::scene::Scene& scene, const std::string
     environment.face_size = 32;
     input.environment = lab::ibl::load_environment("envmaps/courtyard.exr", environment);
     input.settings.width = input.settings.height = 16;
-    input.settings.extra_build_options = options;
+    input.settings.opencl.extra_build_options = options;
     const lab::opencl::Runtime runtime("");
     lab::render::OpenClRenderer renderer(runtime, input);
     renderer.add_samples(2);

@@ -1,5 +1,5 @@
 // The path tracer's CPU wavefront (kernels/path_tracer_wavefront.h) keeps several samples of every
-// pixel in flight on small images (RenderSettings::wavefront_paths) and adds each pixel's paths to
+// pixel in flight on small images (OpenClTuning::wavefront_paths) and adds each pixel's paths to
 // the film in sample order afterwards (render_pt_resolve). Whatever the number in flight, and with
 // the image split into parts (one sample in flight there), the film must hold the bits of the
 // work-item kernel, which traces each pixel's samples one after the other in one work-item, and the
@@ -29,8 +29,8 @@ struct InFlightFilm {
 // `spp` samples in launches of `per_launch` samples (in parts of `part_pixels` pixels, 0: whole).
 InFlightFilm render_in_flight(const lab::opencl::Runtime& runtime, lab::render::RenderInput input, bool packets, int wavefront_paths, int spp, int per_launch,
             int part_pixels) {
-    input.settings.packets = packets;
-    input.settings.wavefront_paths = wavefront_paths;
+    input.settings.opencl.packets = packets;
+    input.settings.opencl.wavefront_paths = wavefront_paths;
     lab::render::OpenClRenderer renderer(runtime, input);
     renderer.set_samples_per_launch(per_launch);
     if (part_pixels > 0) renderer.set_launch_pixels(part_pixels);
