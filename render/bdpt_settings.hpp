@@ -2,16 +2,10 @@
 // into their strategies for looking at the estimator rather than rendering an image.
 #pragma once
 
-#include <string>
-
 namespace lab::render {
 
-// BDPT's multiple importance sampling heuristic.
+// BDPT's multiple importance sampling heuristic (its command-line words: render/render_settings.hpp).
 enum class MisHeuristic { balance, power };
-
-// Parse the command-line word; errors are lab::InputError naming `option`.
-MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option = "--mis");
-const char* mis_heuristic_name(MisHeuristic heuristic);
 
 struct BdptSettings {
     MisHeuristic mis_heuristic = MisHeuristic::balance;

@@ -6,7 +6,6 @@
 #include "opencl/runtime.hpp"
 #include "render/renderer.hpp"
 #include "render/wavefront_driver.hpp"
-#include "render/wavefront_launch_times.hpp"
 
 namespace lab::render {
 
@@ -25,10 +24,8 @@ public:
     // without the wavefront.
     int samples_in_flight() const;
 
-    // With `on`, the wavefront's launches are timed from now (the host waits for each: a little
-    // slower than an untimed render), into wavefront_launch_times(), which restarts at 0.
-    void time_wavefront_launches(bool on) { wavefront_driver_.time_launches(on); }
-    const WavefrontLaunchTimes& wavefront_launch_times() const { return wavefront_driver_.launch_times(); }
+    // Tells `observer` of every launch of the wavefront from now on (WavefrontDriver::observe_launches).
+    void observe_wavefront_launches(WavefrontLaunchObserver* observer) { wavefront_driver_.observe_launches(observer); }
 
     // The options the integrator's program was last built with: among them the scene's kinds of
     // light (-DSCENE_LIGHT_TYPES, kernels/lights/light_selection.h).

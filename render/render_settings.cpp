@@ -14,6 +14,7 @@ namespace {
 // Images beyond 2^26 pixels are refused up front: the kernels count pixels in an int.
 constexpr long kMaxPixels = 1L << 26;
 
+constexpr std::pair<const char*, MisHeuristic> kMisWords[] = {{"balance", MisHeuristic::balance}, {"power", MisHeuristic::power}};
 // The first word of each value is its name; the others are accepted as synonyms.
 constexpr std::pair<const char*, LightSampling> kLightSamplingWords[] = {
     {"bsdf", LightSampling::bsdf}, {"lights", LightSampling::lights}, {"mis", LightSampling::mis},
@@ -23,6 +24,8 @@ constexpr std::pair<const char*, NormalMethod> kNormalWords[] = {
 
 }  // namespace
 
+MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option) { return parse_word(text, option, kMisWords); }
+const char* mis_heuristic_name(MisHeuristic heuristic) { return word_of(heuristic, kMisWords); }
 NormalMethod parse_normal_method(const std::string& text, const std::string& option) { return parse_word(text, option, kNormalWords); }
 LightSampling parse_light_sampling(const std::string& text, const std::string& option) {
     return parse_word(text, option, kLightSamplingWords);

@@ -19,9 +19,11 @@ enum class LightSampling { bsdf, lights, mis };
 enum class NormalMethod { tetrahedral, central, analytic };
 
 // Parse the command-line words; errors are lab::InputError naming `option`.
+MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option = "--mis");
 NormalMethod parse_normal_method(const std::string& text, const std::string& option = "--normals");
 // "bsdf" (or "brdf"), "lights" (or "env", the preview's word) and "mis".
 LightSampling parse_light_sampling(const std::string& text, const std::string& option);
+const char* mis_heuristic_name(MisHeuristic heuristic);
 const char* light_sampling_name(LightSampling sampling);
 const char* normal_method_name(NormalMethod method);
 

@@ -68,11 +68,6 @@ void WavefrontDriver::allocate(int slots, size_t pixels) {
     path_lost_counts_ = runtime_.buffer(n * sizeof(cl_uint), CL_MEM_READ_WRITE);
 }
 
-void WavefrontDriver::time_launches(bool on) {
-    time_launches_ = on;
-    launch_times_ = WavefrontLaunchTimes{};
-}
-
 void WavefrontDriver::launch(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, PixelRange pixels) {
     const bool whole = pixels.first == 0 && pixels.count == target.image_pixels;
     kernel::RenderKernelSettings batch = k;
@@ -121,11 +116,10 @@ void WavefrontDriver::launch_packets(PixelRange packets, size_t total) const {
     launch_range(runtime_, march_rays_, packets, kPacketLocal, total);
 }
 
-void WavefrontDriver::timed(WavefrontLaunchTimes::Kind& kind, Clock::time_point start, bool wait) {
-    if (!time_launches_) return;
+void WavefrontDriver::ended(WavefrontLaunch kind, Clock::time_point start, bool wait) {
+    if (observer_ == nullptr) return;
     if (wait) runtime_.finish();
-    kind.seconds += std::chrono::duration<double>(Clock::now() - start).count();
-    kind.launches += 1;
+    observer_->launch_ended(kind, start);
 }
 
 // Iteration 0, the camera rays: a pinhole's are begun on the packets' lanes and marched in one
@@ -136,15 +130,15 @@ void WavefrontDriver::launch_camera_rays(const WavefrontTarget& target, const ke
     if (target.camera->lens_radius > 0.0f) {
         bind_step(target, camera_kernel_, k, r.slots);
         launch_range(runtime_, camera_kernel_, r.paths, target.local_size, size_t(r.path_count));
-        timed(launch_times_.camera_steps, camera_start);
+        ended(WavefrontLaunch::camera_step, camera_start);
         const Clock::time_point march_start = Clock::now();
         opencl::set_kernel_args(march_rays_, k, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
         launch_packets(r.packets, 2 * size_t(r.granules));
-        timed(launch_times_.camera_marches, march_start);
+        ended(WavefrontLaunch::camera_march, march_start);
     } else {
         opencl::set_kernel_args(march_camera_rays_, k, *target.camera, r.path_count, stride_, path_rays_, camera_rngs_, ray_marches_);
         launch_range(runtime_, march_camera_rays_, r.packets, kPacketLocal, size_t(r.granules));
-        timed(launch_times_.camera_marches, camera_start);
+        ended(WavefrontLaunch::camera_march, camera_start);
     }
 }
 
@@ -163,7 +157,7 @@ void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::
         cl_uint unfinished[2] = {0, 0};
         runtime_.read(unfinished_, unfinished, sizeof(unfinished));  // blocking: the step is done
         const bool last = unfinished[0] == 0 && unfinished[1] == 0;
-        timed(last ? launch_times_.last_steps : launch_times_.scatter_steps, step_start, false);
+        ended(last ? WavefrontLaunch::last_step : WavefrontLaunch::scatter_step, step_start, false);
         if (last) break;
         const Clock::time_point march_start = Clock::now();
         opencl::set_kernel_args(march_rays_, k, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
@@ -173,7 +167,7 @@ void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::
             if (unfinished[0] != 0) launch_packets(r.packets, packet_total);
             if (unfinished[1] != 0) launch_packets(r.shadow_packets, packet_total);
         }
-        timed(launch_times_.marches, march_start);
+        ended(WavefrontLaunch::march, march_start);
     }
 }
 
@@ -183,7 +177,7 @@ void WavefrontDriver::launch_resolve(const WavefrontTarget& target, int slots) {
     opencl::set_kernel_args(resolve_kernel_, image, slots, *target.accumulation, *target.rays, *target.lost, path_radiance_, path_ray_counts_,
                             path_lost_counts_);
     launch_range(runtime_, resolve_kernel_, PixelRange{0, image}, target.local_size, size_t(image));
-    timed(launch_times_.resolves, resolve_start);
+    ended(WavefrontLaunch::resolve, resolve_start);
 }
 
 }  // namespace lab::render

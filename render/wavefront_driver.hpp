@@ -12,13 +12,30 @@
 
 #include "opencl/runtime.hpp"
 #include "render/renderer.hpp"
-#include "render/wavefront_launch_times.hpp"
 
 namespace lab::render {
 
 // Samples of every pixel the wavefront keeps in flight: about OpenClTuning::wavefront_paths paths
 // (or the default), at least one sample.
 int wavefront_slots(const RenderSettings& settings);
+
+// The kinds of launch the wavefront makes.
+enum class WavefrontLaunch {
+    camera_step,   // a thin lens's camera rays, one path per work-item, left in the buffers
+    camera_march,  // the camera rays' packets (a pinhole's rays begun in them)
+    scatter_step,  // a step that leaves rays to march (the paths begun, surfaces scattered, light samples drawn)
+    march,         // the packets of the rays and shadow rays those steps leave
+    last_step,     // the step that leaves nothing to march (the last shadow rays resolved, escapes looked up)
+    resolve,       // several samples in flight: their paths added to the film
+};
+
+// Told of every launch once it has ended, the host waiting for each (a little slower than an
+// unobserved render): the measurement of `dtoadq bench breakdown` (bench/wavefront_launch_timer.hpp).
+class WavefrontLaunchObserver {
+public:
+    virtual ~WavefrontLaunchObserver() = default;
+    virtual void launch_ended(WavefrontLaunch kind, std::chrono::steady_clock::time_point start) = 0;
+};
 
 // What the renderer that owns the scene and the film gives a launch.
 struct WavefrontTarget {
@@ -46,10 +63,8 @@ public:
     // of the image (the buffers hold that many paths of every pixel).
     void launch(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, PixelRange pixels);
 
-    // With `on`, the launches are timed from now (the host waits for each: a little slower than an
-    // untimed render), into launch_times(), which restarts at 0.
-    void time_launches(bool on);
-    const WavefrontLaunchTimes& launch_times() const { return launch_times_; }
+    // Tells `observer` of every launch from now on; nullptr: of none.
+    void observe_launches(WavefrontLaunchObserver* observer) { observer_ = observer; }
 
 private:
     // Where a launch's paths and packets lie in the buffers.
@@ -68,9 +83,9 @@ private:
     void launch_steps(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, const Ranges& r);
     void launch_resolve(const WavefrontTarget& target, int slots);
     void launch_packets(PixelRange packets, size_t total) const;
-    // With timing on: waits for the launches so far, and adds the time since `start` to `kind`.
+    // With an observer: waits for the launches so far (unless the host has), and tells it.
     using Clock = std::chrono::steady_clock;
-    void timed(WavefrontLaunchTimes::Kind& kind, Clock::time_point start, bool wait = true);
+    void ended(WavefrontLaunch kind, Clock::time_point start, bool wait = true);
 
     const opencl::Runtime& runtime_;
     opencl::KernelHandle first_step_kernel_, step_kernel_, camera_kernel_, resolve_kernel_, march_rays_, march_camera_rays_;
@@ -81,8 +96,7 @@ private:
     opencl::BufferHandle path_radiance_, path_ray_counts_, path_lost_counts_;  // per path, several samples in flight
     int slots_ = 0;   // samples in flight the buffers hold
     int stride_ = 0;  // entries of each ray array: the paths rounded up to a whole packet
-    bool time_launches_ = false;
-    WavefrontLaunchTimes launch_times_;
+    WavefrontLaunchObserver* observer_ = nullptr;
 };
 
 }  // namespace lab::render

@@ -1,4 +1,4 @@
-// `bench breakdown`'s "environment twice" build (kernels/bench_standins.h, -DBENCH_TWICE_ENVIRONMENT)
+// `bench breakdown`'s "environment twice" build (bench/kernels/part_standins.h, -DBENCH_TWICE_ENVIRONMENT)
 // evaluates every environment sample and pdf a second time and adds it times 0: its figure is the
 // environment's share of the time only if it traces the default build's very paths, with the same
 // result. Checked on the film bits of a sphere under courtyard.exr.

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/bench_convergence.hpp"
+#include "bench/convergence.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"

@@ -1,20 +1,20 @@
-#include "render/march_work.hpp"
+#include "bench/march_cost.hpp"
 
 #include "render/opencl_renderer.hpp"
 
-namespace lab::render {
+namespace lab::bench {
 
-MarchWork count_march_work(const opencl::Runtime& runtime, RenderInput input, int samples) {
-    OpenClRenderer plain(runtime, input);
+MarchCost measure_march_cost(const opencl::Runtime& runtime, render::RenderInput input, int samples) {
+    render::OpenClRenderer plain(runtime, input);
     plain.add_samples(samples);
-    RenderStatistics p = plain.statistics();
+    render::RenderStatistics p = plain.statistics();
     input.settings.opencl.extra_build_options += " -DSCENE_COUNT_EVALUATIONS";
     input.settings.opencl.packets = false;  // the counting build marches every ray in its path's work-item
-    OpenClRenderer counting(runtime, input);
+    render::OpenClRenderer counting(runtime, input);
     counting.add_samples(samples);
-    RenderStatistics c = counting.statistics();  // rays: march steps; lost rays: evaluations
-    MarchWork w;
-    FilmReadback a = plain.film(), b = counting.film();
+    render::RenderStatistics c = counting.statistics();  // rays: march steps; lost rays: evaluations
+    MarchCost w;
+    render::FilmReadback a = plain.film(), b = counting.film();
     w.same_film = a.accumulation == b.accumulation && a.splat == b.splat;
     w.rays_per_path = p.paths ? double(p.rays) / double(p.paths) : 0.0;
     w.steps_per_ray = p.rays ? double(c.rays) / double(p.rays) : 0.0;
@@ -22,4 +22,4 @@ MarchWork count_march_work(const opencl::Runtime& runtime, RenderInput input, in
     return w;
 }
 
-}  // namespace lab::render
+}  // namespace lab::bench
