@@ -36,20 +36,20 @@ typedef struct RenderKernelSettings {
 } RenderKernelSettings;
 
 /* sdf/march.h's settings with what the render settings change; the epsilons stay the defaults. */
-SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
-    MarchSettings s = march_settings_default(k->lipschitz);
-    s.max_steps = k->max_steps;
-    s.max_distance = k->max_distance;
-    s.over_relaxation = k->over_relaxation;
+SS_FN MarchSettings render_march_settings(const RenderKernelSettings* settings) {
+    MarchSettings march_settings = march_settings_default(settings->lipschitz);
+    march_settings.max_steps = settings->max_steps;
+    march_settings.max_distance = settings->max_distance;
+    march_settings.over_relaxation = settings->over_relaxation;
     /* each entry by itself, not in a loop: PoCL kept the settings of such a loop in memory for every
      * work-item of the wavefront's step (docs/render.md, stop 29) */
-    s.surface_lo[0] = k->surface_lo[0];
-    s.surface_lo[1] = k->surface_lo[1];
-    s.surface_lo[2] = k->surface_lo[2];
-    s.surface_hi[0] = k->surface_hi[0];
-    s.surface_hi[1] = k->surface_hi[1];
-    s.surface_hi[2] = k->surface_hi[2];
-    return s;
+    march_settings.surface_lo[0] = settings->surface_lo[0];
+    march_settings.surface_lo[1] = settings->surface_lo[1];
+    march_settings.surface_lo[2] = settings->surface_lo[2];
+    march_settings.surface_hi[0] = settings->surface_hi[0];
+    march_settings.surface_hi[1] = settings->surface_hi[1];
+    march_settings.surface_hi[2] = settings->surface_hi[2];
+    return march_settings;
 }
 
 #endif

@@ -111,9 +111,9 @@ void OpenClRenderer::clear_film() {
     runtime_.write(lost_, zeros.data(), pixels * sizeof(cl_uint));
 }
 
-cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& k) const {
+cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& launch_settings) const {
     cl_uint a = 0;
-    opencl::set_kernel_arg(kernel, a++, k);
+    opencl::set_kernel_arg(kernel, a++, launch_settings);
     opencl::set_kernel_arg(kernel, a++, camera_);
     opencl::set_kernel_arg(kernel, a++, bound_environment().map());
     for (const opencl::BufferHandle* b : {&texels_, &alias_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
@@ -122,7 +122,7 @@ cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel
     return a;
 }
 
-void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pixels) {
+void OpenClRenderer::launch(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels) {
     const int image = input_.settings.width * input_.settings.height;
     if (wavefront()) {
         const WavefrontTarget target{&camera_,
@@ -130,9 +130,9 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange pi
                                          return bind_render_arguments(kernel, settings);
                                      },
                                      &accumulation_, &rays_, &lost_, local_size_, image};
-        wavefront_driver_.launch(target, k, pixels);
+        wavefront_driver_.launch(target, launch_settings, pixels);
     } else {
-        bind_render_arguments(kernel_, k);
+        bind_render_arguments(kernel_, launch_settings);
         launch_range(runtime_, kernel_, pixels, local_size_, size_t(image));
     }
     runtime_.finish();

@@ -35,7 +35,7 @@ private:
     void build_kernel() override;
     void upload_scene() override;
     void clear_film() override;
-    void launch(const kernel::RenderKernelSettings& k, PixelRange pixels) override;
+    void launch(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels) override;
     FilmReadback read_film() const override;
     void write_film(const FilmReadback& film) override;
     void read_ray_counts(uint64_t* rays, uint64_t* lost) const override;
@@ -45,7 +45,7 @@ private:
     std::string build_options_;
     opencl::KernelHandle kernel_;
     // Arguments 0 .. 14, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
-    cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& k) const;
+    cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& launch_settings) const;
     WavefrontDriver wavefront_driver_;  // used when wavefront()
     size_t local_size_ = 64;
     opencl::BufferHandle texels_, alias_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;

@@ -68,12 +68,12 @@ void WavefrontDriver::allocate(int slots, size_t pixels) {
     path_lost_counts_ = runtime_.buffer(n * sizeof(cl_uint), CL_MEM_READ_WRITE);
 }
 
-void WavefrontDriver::launch(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, PixelRange pixels) {
+void WavefrontDriver::launch(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, PixelRange pixels) {
     const bool whole = pixels.first == 0 && pixels.count == target.image_pixels;
-    kernel::RenderKernelSettings batch = k;
-    for (int i = 0; i < k.sample_count; i += batch.sample_count) {
-        batch.first_sample = k.first_sample + i;
-        batch.sample_count = whole ? std::min(slots_, k.sample_count - i) : 1;
+    kernel::RenderKernelSettings batch = settings;
+    for (int i = 0; i < settings.sample_count; i += batch.sample_count) {
+        batch.first_sample = settings.first_sample + i;
+        batch.sample_count = whole ? std::min(slots_, settings.sample_count - i) : 1;
         launch_samples(target, batch, pixels);
     }
 }
@@ -92,17 +92,17 @@ WavefrontDriver::Ranges WavefrontDriver::ranges_of(int slots, int image_pixels, 
 // kernels/path_tracer_wavefront.h's loop: the camera rays, then steps and the packets of their rays
 // and shadow rays until no path has anything left to march; then, with several samples in flight,
 // the resolve that adds them to the film in sample order.
-void WavefrontDriver::launch_samples(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, PixelRange pixels) {
-    const Ranges r = ranges_of(k.sample_count, target.image_pixels, pixels);
-    launch_camera_rays(target, k, r);
-    launch_steps(target, k, r);
+void WavefrontDriver::launch_samples(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, PixelRange pixels) {
+    const Ranges r = ranges_of(settings.sample_count, target.image_pixels, pixels);
+    launch_camera_rays(target, settings, r);
+    launch_steps(target, settings, r);
     if (r.slots > 1) launch_resolve(target, r.slots);
 }
 
 // the step kernels' arguments (kernels/path_tracer.cl, WAVEFRONT_KERNEL_ARGUMENTS)
-void WavefrontDriver::bind_step(const WavefrontTarget& target, const opencl::KernelHandle& step, const kernel::RenderKernelSettings& k,
+void WavefrontDriver::bind_step(const WavefrontTarget& target, const opencl::KernelHandle& step, const kernel::RenderKernelSettings& settings,
                                 int slots) const {
-    cl_uint a = target.bind_render_arguments(step, k);
+    cl_uint a = target.bind_render_arguments(step, settings);
     opencl::set_kernel_arg(step, a++, stride_);
     for (const opencl::BufferHandle* b : {&states_, &path_rays_, &shadow_rays_, &ray_marches_, &shadow_marches_, &unfinished_})
         opencl::set_kernel_arg(step, a++, *b);
@@ -125,18 +125,18 @@ void WavefrontDriver::ended(WavefrontLaunch kind, Clock::time_point start, bool 
 // Iteration 0, the camera rays: a pinhole's are begun on the packets' lanes and marched in one
 // launch (march_camera_rays); a thin lens's by the camera step, one path per work-item, then
 // marched. Every path has one, so the host need not ask.
-void WavefrontDriver::launch_camera_rays(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, const Ranges& r) {
+void WavefrontDriver::launch_camera_rays(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r) {
     const Clock::time_point camera_start = Clock::now();
     if (target.camera->lens_radius > 0.0f) {
-        bind_step(target, camera_kernel_, k, r.slots);
+        bind_step(target, camera_kernel_, settings, r.slots);
         launch_range(runtime_, camera_kernel_, r.paths, target.local_size, size_t(r.path_count));
         ended(WavefrontLaunch::camera_step, camera_start);
         const Clock::time_point march_start = Clock::now();
-        opencl::set_kernel_args(march_rays_, k, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
+        opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
         launch_packets(r.packets, 2 * size_t(r.granules));
         ended(WavefrontLaunch::camera_march, march_start);
     } else {
-        opencl::set_kernel_args(march_camera_rays_, k, *target.camera, r.path_count, stride_, path_rays_, camera_rngs_, ray_marches_);
+        opencl::set_kernel_args(march_camera_rays_, settings, *target.camera, r.path_count, stride_, path_rays_, camera_rngs_, ray_marches_);
         launch_range(runtime_, march_camera_rays_, r.packets, kPacketLocal, size_t(r.granules));
         ended(WavefrontLaunch::camera_march, camera_start);
     }
@@ -144,15 +144,15 @@ void WavefrontDriver::launch_camera_rays(const WavefrontTarget& target, const ke
 
 // Per step the host waits once, for the step's two flags (a ray left, a shadow ray left), and
 // launches one march of what is left.
-void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, const Ranges& r) {
+void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r) {
     const size_t packet_total = 2 * size_t(r.granules);
     for (int iteration = 1;; ++iteration) {
         const Clock::time_point step_start = Clock::now();
         // max_depth scattering events, and the last shadow ray one step later
-        if (iteration > k.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
+        if (iteration > settings.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
         runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
         const opencl::KernelHandle& step = iteration == 1 ? first_step_kernel_ : step_kernel_;
-        bind_step(target, step, k, r.slots);
+        bind_step(target, step, settings, r.slots);
         launch_range(runtime_, step, r.paths, target.local_size, size_t(r.path_count));
         cl_uint unfinished[2] = {0, 0};
         runtime_.read(unfinished_, unfinished, sizeof(unfinished));  // blocking: the step is done
@@ -160,7 +160,7 @@ void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::
         ended(last ? WavefrontLaunch::last_step : WavefrontLaunch::scatter_step, step_start, false);
         if (last) break;
         const Clock::time_point march_start = Clock::now();
-        opencl::set_kernel_args(march_rays_, k, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
+        opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
         if (unfinished[0] != 0 && unfinished[1] != 0 && r.packets.count == r.granules)
             launch_packets(PixelRange{0, 2 * r.granules}, packet_total);  // both, in one launch
         else {

@@ -59,9 +59,9 @@ public:
     void build(const opencl::Program& program, const scene::CompiledScene& compiled, const std::string& options);
     // Buffers for `slots` samples of `pixels` pixels in flight; kept while they hold that many.
     void allocate(int slots, size_t pixels);
-    // Adds k.sample_count samples to the pixels: up to slots() at a time, and only one for a part
+    // Adds settings.sample_count samples to the pixels: up to slots() at a time, and only one for a part
     // of the image (the buffers hold that many paths of every pixel).
-    void launch(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, PixelRange pixels);
+    void launch(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, PixelRange pixels);
 
     // Tells `observer` of every launch from now on; nullptr: of none.
     void observe_launches(WavefrontLaunchObserver* observer) { observer_ = observer; }
@@ -77,10 +77,10 @@ private:
     };
     static Ranges ranges_of(int slots, int image_pixels, PixelRange pixels);
 
-    void launch_samples(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, PixelRange pixels);
-    void bind_step(const WavefrontTarget& target, const opencl::KernelHandle& step, const kernel::RenderKernelSettings& k, int slots) const;
-    void launch_camera_rays(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, const Ranges& r);
-    void launch_steps(const WavefrontTarget& target, const kernel::RenderKernelSettings& k, const Ranges& r);
+    void launch_samples(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, PixelRange pixels);
+    void bind_step(const WavefrontTarget& target, const opencl::KernelHandle& step, const kernel::RenderKernelSettings& settings, int slots) const;
+    void launch_camera_rays(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r);
+    void launch_steps(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r);
     void launch_resolve(const WavefrontTarget& target, int slots);
     void launch_packets(PixelRange packets, size_t total) const;
     // With an observer: waits for the launches so far (unless the host has), and tells it.
