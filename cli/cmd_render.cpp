@@ -4,7 +4,7 @@
 // as `preview`.
 #include <memory>
 
-#include "common/input_error.hpp"
+#include "render/integrator.hpp"
 
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
@@ -17,12 +17,9 @@ void register_render(CLI::App& app) {
     auto run = std::make_shared<RenderRunOptions>();
     auto strategies = std::make_shared<std::string>();
     run->output = "render.exr";
-    auto* cmd = app.add_subcommand("render", "Render a scene file with one of the integrators (pt, bdpt, lt)");
+    auto* cmd = app.add_subcommand("render", "Render a scene file with one of the integrators (" + render::integrator_names() + ")");
     cmd->add_option("scene", job->scene, "Scene file (docs/scenes.md)")->required();
-    cmd->add_option("--integrator", job->integrator,
-                    "Integrator: pt (path tracing with next-event estimation and MIS), bdpt (bidirectional, every strategy) or lt "
-                    "(light tracing)")
-        ->capture_default_str();
+    cmd->add_option("--integrator", job->integrator, "Integrator: " + render::integrator_help())->capture_default_str();
     cmd->add_option("--mis", job->mis_heuristic, "bdpt, lt: MIS heuristic, balance or power")->capture_default_str();
     cmd->add_option("--light-sampling", job->light_sampling,
                     "How paths find lights: bsdf (BSDF sampling alone), lights (next-event estimation alone) or mis")
@@ -34,8 +31,7 @@ void register_render(CLI::App& app) {
                     "bdpt, lt: also write one EXR per strategy (s, t), unweighted and MIS-weighted, with --spp samples each, and a "
                     "contact sheet, into this folder");
     cmd->callback([job, run, strategies] {
-        if (!strategies->empty() && render::parse_integrator(job->integrator) == render::Integrator::pt)
-            throw InputError("--strategies", "", "needs --integrator bdpt or lt (the path tracer has no (s, t) strategies)");
+        if (!strategies->empty()) render::check_integrator_has_strategies(render::parse_integrator(job->integrator), "--strategies");
         if (!strategies->empty()) check_strategy_folder(*strategies);
         run_render_job(*job, *run);
         if (!strategies->empty()) write_strategy_images(prepare_render_job(*job), job->device, run->spp, *strategies, run->quiet);

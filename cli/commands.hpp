@@ -1,4 +1,4 @@
-// Each subcommand registers itself on the application; one file per subcommand.
+// Each subcommand registers itself on the application; one file per subcommand (`bench`'s in bench/).
 #pragma once
 
 #include <CLI/CLI.hpp>

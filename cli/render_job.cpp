@@ -82,7 +82,7 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     settings.light_sampling = render::parse_light_sampling(o.light_sampling, o.light_sampling_option);
     settings.normals = render::parse_normal_method(o.normals);
     settings.max_depth = o.max_depth;
-    settings.mis_heuristic = render::parse_mis_heuristic(o.mis_heuristic);
+    settings.bdpt.mis_heuristic = render::parse_mis_heuristic(o.mis_heuristic);
     settings.max_steps = o.max_steps;
     settings.over_relaxation = o.over_relaxation;
     render::check_render_settings(settings);

@@ -9,6 +9,7 @@
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "kernels/host.hpp"
+#include "render/integrator.hpp"
 
 namespace lab::cli {
 
@@ -55,8 +56,7 @@ void check_strategy_folder(const std::string& dir) {
 
 void write_strategy_images(const RenderJob& job, const std::string& device, int spp, const std::string& dir, bool quiet) {
     const render::RenderSettings& settings = job.input.settings;
-    if (settings.integrator == render::Integrator::pt)
-        throw InputError("--strategies", "", "needs --integrator bdpt or lt (the path tracer has no (s, t) strategies)");
+    render::check_integrator_has_strategies(settings.integrator, "--strategies");
     make_folder(dir);  // again: the folder may have gone during the render
     const int n = render::bdpt_max_vertices(settings), w = settings.width, h = settings.height;
     // rows: path lengths 2 .. n vertices; columns: s = 0 .. n - 1, twice (unweighted, weighted)
@@ -65,12 +65,12 @@ void write_strategy_images(const RenderJob& job, const std::string& device, int 
     for (int length = 2; length <= n; ++length)
         for (int s = 0; s < length; ++s) {
             int t = length - s;
-            if (settings.integrator == render::Integrator::lt ? t != 1 : (s == 1 && t == 1)) continue;
+            if (!render::integrator_runs_strategy(settings.integrator, s, t)) continue;
             for (bool unweighted : {true, false}) {
                 RenderJob one = job;
-                one.input.settings.strategy_s = s;
-                one.input.settings.strategy_t = t;
-                one.input.settings.strategy_unweighted = unweighted;
+                one.input.settings.strategy_debug.strategy_s = s;
+                one.input.settings.strategy_debug.strategy_t = t;
+                one.input.settings.strategy_debug.strategy_unweighted = unweighted;
                 std::unique_ptr<render::Renderer> renderer = make_renderer(one, device, &runtime);
                 renderer->set_samples_per_launch(spp);
                 renderer->add_samples(spp);

@@ -22,18 +22,18 @@
 /* Whether a segment from surface vertex a to surface vertex b is clear. The march starts off a's
  * surface and stops at b's within the error the march itself allows there (its hit threshold, over
  * the cosine at b: a grazing arrival stops short of b by that much). */
-SS_FN bool bdpt_surfaces_see_each_other(const PathVertex* a, const PathVertex* b, MarchSettings s, PathCounters* counters) {
+SS_FN bool bdpt_surfaces_see_each_other(const PathVertex* a, const PathVertex* b, MarchSettings march_settings, PathCounters* counters) {
     float3 w = b->p - a->p;
     float dist = length(w);
     if (!(dist > 0.0f)) return false;
     w = w / dist;
     float3 origin = offset_origin(a->p, a->frame.n, a->epsilon, dot(a->frame.n, w));
-    s.max_distance = fmin(s.max_distance, dist);
-    MarchResult r = trace_ray(origin, w, s, counters);
+    march_settings.max_distance = fmin(march_settings.max_distance, dist);
+    MarchResult r = trace_ray(origin, w, march_settings, counters);
     if (r.status == MARCH_MISS) return true;
     if (r.status != MARCH_HIT) return false;
     float gap = length(origin + w * r.t - b->p) * fabs(dot(b->frame.n, w));
-    return gap <= 4.0f * fmax(b->epsilon, march_epsilon(s, r.t));
+    return gap <= 4.0f * fmax(b->epsilon, march_epsilon(march_settings, r.t));
 }
 
 /* The origin of a shadow ray from vertex v along unit w: off the surface on w's side. */
@@ -43,7 +43,7 @@ SS_FN float3 bdpt_ray_origin(const PathVertex* v, float3 w) {
 
 /* The unweighted contribution of strategy (s, t) and, through *weight, its MIS weight; t = 1 sets
  * *raster to where it lands. Zero where the strategy cannot make a path from these subpaths. */
-SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, const Camera* camera, const RenderScene* scene,
+SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings march_settings, const Camera* camera, const RenderScene* scene,
                           const PathVertex* light, const PathVertex* cam, int s, int t, Rng* rng, float2* raster, float* weight,
                           PathCounters* counters) {
     float3 zero = float3_splat(0.0f);
@@ -56,7 +56,7 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         if (!vertex_emits(scene, pt)) return zero;
         bool seen_directly = true; /* through delta lobes only, as the path tracer's backdrop */
         for (int i = 1; i < t - 1; ++i) seen_directly = seen_directly && cam[i].delta;
-        if (pt->type == VERTEX_ENVIRONMENT && seen_directly && !k->show_background) return zero;
+        if (pt->type == VERTEX_ENVIRONMENT && seen_directly && !settings->show_background) return zero;
         L = pt->beta * vertex_le(scene, pt, seen_directly);
     } else if (t == 1) {
         const PathVertex* qs = &light[s - 1];
@@ -69,14 +69,14 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         float cos_q = qs->on_surface ? fabs(dot(qs->frame.n, cs.wi)) : 1.0f;
         L = qs->beta * f * sampled.beta * cos_q;
         if (!(max_component(L) > 0.0f)) return zero;
-        if (!segment_unoccluded(bdpt_ray_origin(qs, cs.wi), cs.wi, cs.distance, -1, s_march, counters)) return zero;
+        if (!segment_unoccluded(bdpt_ray_origin(qs, cs.wi), cs.wi, cs.distance, -1, march_settings, counters)) return zero;
         *raster = cs.raster;
     } else if (s == 1) {
         const PathVertex* pt = &cam[t - 1];
         if (!vertex_scatters(scene, pt)) return zero;
         float4 u = rng_next4(rng);
         float pmf;
-        int index = select_light(scene->light_cdf, k->light_count, u.z, &pmf);
+        int index = select_light(scene->light_cdf, settings->light_count, u.z, &pmf);
         if (!(pmf > 0.0f)) return zero;
         Light l = scene->lights[index];
         /* On an emissive sphere itself, the hit can lie a rounding error on the far side of the
@@ -94,10 +94,10 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         sampled.epsilon = 0.0f;
         sampled.beta = ls.radiance / (pmf * ls.pdf);
         sampled.pdf_rev = 0.0f;
-        sampled.pdf_fwd = vertex_pdf_light_origin(k, scene, &sampled);
+        sampled.pdf_fwd = vertex_pdf_light_origin(settings, scene, &sampled);
         L = pt->beta * vertex_f(scene, pt, ls.wi, TRANSPORT_RADIANCE) * sampled.beta * fabs(dot(ls.wi, pt->frame.n));
         if (!(max_component(L) > 0.0f)) return zero;
-        if (!segment_unoccluded(bdpt_ray_origin(pt, ls.wi), ls.wi, ls.distance, l.material_slot, s_march, counters)) return zero;
+        if (!segment_unoccluded(bdpt_ray_origin(pt, ls.wi), ls.wi, ls.distance, l.material_slot, march_settings, counters)) return zero;
     } else {
         const PathVertex* qs = &light[s - 1];
         const PathVertex* pt = &cam[t - 1];
@@ -109,44 +109,41 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* k, MarchSettings s_march, 
         float g = fabs(dot(qs->frame.n, w)) * fabs(dot(pt->frame.n, w)) / d2;
         L = qs->beta * vertex_f(scene, qs, w, TRANSPORT_IMPORTANCE) * vertex_f(scene, pt, -w, TRANSPORT_RADIANCE) * pt->beta * g;
         if (!(max_component(L) > 0.0f)) return zero;
-        if (!bdpt_surfaces_see_each_other(qs, pt, s_march, counters)) return zero;
+        if (!bdpt_surfaces_see_each_other(qs, pt, march_settings, counters)) return zero;
     }
-    *weight = bdpt_mis_weight(k, camera, scene, light, cam, &sampled, s, t);
+    *weight = bdpt_mis_weight(settings, camera, scene, light, cam, &sampled, s, t);
     return L;
 }
 
-/* Adds settings.sample_count samples to one pixel (pixel k is (k % width, k / width)), its t = 1
+/* Adds settings->sample_count samples to one pixel (pixel k is (k % width, k / width)), its t = 1
  * connections to the splat buffer. A sample with a non-finite contribution or MIS weight is counted
  * in accumulation.w and its own pixel's sum left out, as the path tracer's are (the film divides
  * by the finite samples; the statistics report the count). */
-SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel,
+SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int pixel,
                       GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* splat, GLOBAL_MEM uint* ray_counts,
                       GLOBAL_MEM uint* lost_ray_counts) {
-    MarchSettings s_march = render_march_settings(k);
+    MarchSettings march_settings = render_march_settings(settings);
     float4 sum = accumulation[pixel];
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
-    int max_vertices = min(max(k->max_vertices, 2), BDPT_MAX_VERTICES);
+    int max_vertices = min(max(settings->bdpt.max_vertices, 2), BDPT_MAX_VERTICES);
     PathVertex cam[BDPT_MAX_VERTICES];
     PathVertex light[BDPT_MAX_VERTICES];
-    for (int i = 0; i < k->sample_count; ++i) {
-        Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
+    for (int i = 0; i < settings->sample_count; ++i) {
+        Rng rng = rng_make((uint)pixel, (uint)(settings->first_sample + i), settings->seed_lo, settings->seed_hi);
         /* t = 1 alone (the light tracer) needs no camera subpath: its lens vertex is sampled per connection */
-        bool camera_strategies = (k->strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
-        int n_cam = camera_strategies ? bdpt_camera_subpath(k, s_march, camera, scene, pixel, &rng, cam, max_vertices, &counters) : 1;
-        int n_light = k->light_count > 0 ? bdpt_light_subpath(k, s_march, scene, &rng, light, max_vertices - 1, &counters) : 0;
+        bool camera_strategies = (settings->bdpt.strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
+        int n_cam = camera_strategies ? bdpt_camera_subpath(settings, march_settings, camera, scene, pixel, &rng, cam, max_vertices, &counters) : 1;
+        int n_light = settings->light_count > 0 ? bdpt_light_subpath(settings, march_settings, scene, &rng, light, max_vertices - 1, &counters) : 0;
         float3 l = float3_splat(0.0f);
         bool finite = true;
         for (int t = 1; t <= n_cam; ++t)
             for (int s = 0; s <= n_light; ++s) {
                 int depth = s + t - 2;
-                /* (1, 1), the lens joined to a light, and (0, 2) make the same paths (a light seen
-                 * directly) with weight 1 each: (1, 1) only runs where (0, 2) cannot */
                 if (depth < 0 || s + t > max_vertices) continue;
-                if (s == 1 && t == 1 && bdpt_strategy_enabled(k->strategies, 0, 2)) continue;
-                if (!bdpt_strategy_enabled(k->strategies, s, t)) continue;
-                if (k->strategy_only >= 0 && k->strategy_only != s * 32 + t) continue;
+                if (!bdpt_strategy_runs(settings->bdpt.strategies, s, t)) continue;
+                if (settings->bdpt.single_strategy >= 0 && settings->bdpt.single_strategy != bdpt_strategy_code(s, t)) continue;
                 float2 raster = make_float2(-1.0f, -1.0f);
                 float weight;
                 /* the light sample (s = 1) and the lens sample (t = 1) draw from the strategy's own
@@ -154,9 +151,9 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* k, const Camera* camera, const
                  * render, so the strategy images add up to the render; the other strategies draw none */
                 Rng connection_rng = rng;
                 if (s == 1 || t == 1)
-                    connection_rng = rng_make_stream((uint)pixel, (uint)(k->first_sample + i), (uint)(1 + s * 32 + t), k->seed_lo, k->seed_hi);
-                float3 c = bdpt_connect(k, s_march, camera, scene, light, cam, s, t, &connection_rng, &raster, &weight, &counters);
-                if (!k->unweighted) c = c * weight;
+                    connection_rng = rng_make_stream((uint)pixel, (uint)(settings->first_sample + i), (uint)(1 + bdpt_strategy_code(s, t)), settings->seed_lo, settings->seed_hi);
+                float3 c = bdpt_connect(settings, march_settings, camera, scene, light, cam, s, t, &connection_rng, &raster, &weight, &counters);
+                if (!settings->bdpt.unweighted) c = c * weight;
                 /* a NaN or infinite contribution or weight is counted before anything can drop it */
                 if (!finite3(c)) {
                     finite = false;

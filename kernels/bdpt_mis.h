@@ -23,14 +23,6 @@ SS_FN float bdpt_remap0(float pdf) { return pdf != 0.0f ? pdf : 1.0f; }
  * so the ratio, and every ratio the running product carries it into, stays 0. */
 SS_FN float bdpt_remap_reverse(float pdf, bool next_is_delta) { return pdf != 0.0f || !next_is_delta ? pdf : 1.0f; }
 
-SS_FN bool bdpt_strategy_enabled(int mask, int s, int t) {
-    if (t == 1) return (mask & STRATEGY_T1) != 0;
-    if (t < 1) return false; /* the lens is never hit */
-    if (s == 0) return (mask & STRATEGY_S0) != 0;
-    if (s == 1) return (mask & STRATEGY_S1) != 0;
-    return (mask & STRATEGY_S2) != 0;
-}
-
 SS_FN float bdpt_heuristic(int heuristic, float r) { return heuristic == MIS_POWER ? r * r : r; }
 
 /* q1 / q for light vertex x0 and its neighbour x1: the density with which s = 1 samples x0 from x1
@@ -39,9 +31,9 @@ SS_FN float bdpt_heuristic(int heuristic, float r) { return heuristic == MIS_POW
  * pbrt-v4 uses q for both; with the sphere's cone sampler that makes s = 1's weight too large near
  * the cap's rim, where its real density vanishes (fireflies). 1 for point lights and the
  * environment, and for a sphere seen from inside, whose sampler is the area sampler. */
-SS_FN float bdpt_light_sample_ratio(const RenderKernelSettings* k, const RenderScene* scene, const PathVertex* x0, const PathVertex* x1) {
+SS_FN float bdpt_light_sample_ratio(const RenderKernelSettings* settings, const RenderScene* scene, const PathVertex* x0, const PathVertex* x1) {
     int index = vertex_light_index(scene, x0);
-    if (index < 0 || index >= k->light_count) return 1.0f;
+    if (index < 0 || index >= settings->light_count) return 1.0f;
     Light light = scene->lights[index];
     if (light.type != LIGHT_SPHERE) return 1.0f;
     float3 w = x0->p - x1->p;
@@ -55,7 +47,7 @@ SS_FN float bdpt_light_sample_ratio(const RenderKernelSettings* k, const RenderS
 
 /* `sampled` stands in for light[0] when s = 1 (a light sample) and for camera[0] when t = 1 (a
  * lens sample); it is ignored otherwise. */
-SS_FN float bdpt_mis_weight(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, const PathVertex* light,
+SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, const PathVertex* light,
                             const PathVertex* cam, const PathVertex* sampled, int s, int t) {
     if (s + t == 2) return 1.0f;
     const PathVertex* qs = s == 1 ? sampled : (s > 1 ? &light[s - 1] : 0);
@@ -63,18 +55,18 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* k, const Camera* camera,
     const PathVertex* qs_minus = s > 1 ? &light[s - 2] : 0;
     const PathVertex* pt_minus = t > 1 ? &cam[t - 2] : 0;
     /* the reverse densities this connection gives its endpoints and their neighbours */
-    float pt_rev = s > 0 ? vertex_pdf(k, camera, scene, qs_minus, qs, pt) : vertex_pdf_light_origin(k, scene, pt);
+    float pt_rev = s > 0 ? vertex_pdf(settings, camera, scene, qs_minus, qs, pt) : vertex_pdf_light_origin(settings, scene, pt);
     float pt_minus_rev = 0.0f;
-    if (t > 1) pt_minus_rev = s > 0 ? vertex_pdf(k, camera, scene, qs, pt, pt_minus) : vertex_pdf_light(k, scene, pt, pt_minus);
-    float qs_rev = s > 0 ? vertex_pdf(k, camera, scene, pt_minus, pt, qs) : 0.0f;
-    float qs_minus_rev = s > 1 ? vertex_pdf(k, camera, scene, pt, qs, qs_minus) : 0.0f;
+    if (t > 1) pt_minus_rev = s > 0 ? vertex_pdf(settings, camera, scene, qs, pt, pt_minus) : vertex_pdf_light(settings, scene, pt, pt_minus);
+    float qs_rev = s > 0 ? vertex_pdf(settings, camera, scene, pt_minus, pt, qs) : 0.0f;
+    float qs_minus_rev = s > 1 ? vertex_pdf(settings, camera, scene, pt, qs, qs_minus) : 0.0f;
 
     /* s = 1's own density of x0 against the light subpath's (bdpt_light_sample_ratio): a factor on
      * the ratio of strategy s' = 1 when this one is not it, its inverse on every other when it is */
     float q_ratio = 1.0f;
-    if (s == 0 && t > 1) q_ratio = bdpt_light_sample_ratio(k, scene, pt, pt_minus);
-    else if (s == 1) q_ratio = bdpt_light_sample_ratio(k, scene, qs, pt);
-    else if (s >= 2) q_ratio = bdpt_light_sample_ratio(k, scene, &light[0], &light[1]);
+    if (s == 0 && t > 1) q_ratio = bdpt_light_sample_ratio(settings, scene, pt, pt_minus);
+    else if (s == 1) q_ratio = bdpt_light_sample_ratio(settings, scene, qs, pt);
+    else if (s >= 2) q_ratio = bdpt_light_sample_ratio(settings, scene, &light[0], &light[1]);
     float own = s == 1 ? 1.0f / q_ratio : 1.0f; /* scales every other strategy's ratio */
 
     float sum = 0.0f;
@@ -85,7 +77,7 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* k, const Camera* camera,
         r *= bdpt_remap_reverse(rev, i < t - 2 && cam[i + 1].delta) / bdpt_remap0(cam[i].pdf_fwd);
         bool delta = i != t - 1 && cam[i].delta;
         float q = s + t - i == 1 ? q_ratio : own;
-        if (!delta && !cam[i - 1].delta && bdpt_strategy_enabled(k->strategies, s + t - i, i)) sum += bdpt_heuristic(k->mis_heuristic, r * q);
+        if (!delta && !cam[i - 1].delta && bdpt_strategy_enabled(settings->bdpt.strategies, s + t - i, i)) sum += bdpt_heuristic(settings->bdpt.mis_heuristic, r * q);
     }
     r = 1.0f;
     for (int i = s - 1; i >= 0; --i) { /* strategy (i, s + t - i) */
@@ -95,7 +87,7 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* k, const Camera* camera,
         bool delta = i != s - 1 && v->delta;
         bool delta_before = i > 0 ? light[i - 1].delta != 0 : vertex_is_delta_light(scene, i == s - 1 ? qs : &light[0]);
         float q = i == 1 ? q_ratio : own;
-        if (!delta && !delta_before && bdpt_strategy_enabled(k->strategies, i, s + t - i)) sum += bdpt_heuristic(k->mis_heuristic, r * q);
+        if (!delta && !delta_before && bdpt_strategy_enabled(settings->bdpt.strategies, i, s + t - i)) sum += bdpt_heuristic(settings->bdpt.mis_heuristic, r * q);
     }
     return 1.0f / (1.0f + sum);
 }

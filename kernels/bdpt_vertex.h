@@ -96,9 +96,9 @@ SS_FN float vertex_convert_density(float pdf, const PathVertex* from, const Path
 /* pmf times the density with which a light subpath starts at v: per unit area on a sphere light,
  * 1 for a point light (a delta position), per unit solid angle of the direction for the environment
  * (pbrt-v4's PdfLightOrigin). */
-SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* k, const RenderScene* scene, const PathVertex* v) {
+SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* settings, const RenderScene* scene, const PathVertex* v) {
     int index = vertex_light_index(scene, v);
-    float pmf = light_selection_pmf(scene->light_cdf, k->light_count, index);
+    float pmf = light_selection_pmf(scene->light_cdf, settings->light_count, index);
     if (!(pmf > 0.0f)) return 0.0f;
     Light light = scene->lights[index];
     if (light.type == LIGHT_SPHERE) return pmf * sphere_light_area_pdf(&light);
@@ -112,22 +112,22 @@ SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* k, const RenderS
  * the march's max_distance. A point outside that cylinder, above the disk or farther from it than a
  * ray runs is reached by no light subpath: its density is 0, so the strategies that start there take
  * no share of its paths' MIS weights. */
-SS_FN float environment_disk_pdf(const RenderKernelSettings* k, float3 w, float3 p) {
-    float3 d = p - float3_from_array(k->scene_center);
+SS_FN float environment_disk_pdf(const RenderKernelSettings* settings, float3 w, float3 p) {
+    float3 d = p - float3_from_array(settings->bdpt.scene_center);
     float along = dot(d, w);
     float3 across = d - along * w;
-    float r2 = sqr(k->scene_radius);
-    if (dot(across, across) > r2 || along > k->scene_radius || k->scene_radius - along > k->max_distance) return 0.0f;
+    float r2 = sqr(settings->bdpt.scene_radius);
+    if (dot(across, across) > r2 || along > settings->bdpt.scene_radius || settings->bdpt.scene_radius - along > settings->max_distance) return 0.0f;
     return 1.0f / (SS_PI * r2);
 }
 
 /* The density at `next` of a light subpath leaving light vertex v towards it (pbrt-v4's
  * PdfLight): a sphere emits from both sides, cosine-distributed on each; a point light uniformly;
  * the environment from a disk of the scene's radius, uniform by area where its rays reach. */
-SS_FN float vertex_pdf_light(const RenderKernelSettings* k, const RenderScene* scene, const PathVertex* v, const PathVertex* next) {
+SS_FN float vertex_pdf_light(const RenderKernelSettings* settings, const RenderScene* scene, const PathVertex* v, const PathVertex* next) {
     Light light = scene->lights[vertex_light_index(scene, v)];
     if (light.type == LIGHT_ENVIRONMENT) {
-        float pdf = environment_disk_pdf(k, v->p, next->p);
+        float pdf = environment_disk_pdf(settings, v->p, next->p);
         return next->on_surface ? pdf * fabs(dot(next->frame.n, v->p)) : pdf;
     }
     float3 w = vertex_direction(v, next);
@@ -136,14 +136,14 @@ SS_FN float vertex_pdf_light(const RenderKernelSettings* k, const RenderScene* s
 }
 
 /* The density at `next` of v sampling it, coming from `prev` (ignored by the camera and lights). */
-SS_FN float vertex_pdf(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, const PathVertex* prev,
+SS_FN float vertex_pdf(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, const PathVertex* prev,
                        const PathVertex* v, const PathVertex* next) {
     if (v->type == VERTEX_CAMERA) {
         float pdf_position, pdf_direction;
         camera_pdf_we(camera, v->p, vertex_direction(v, next), &pdf_position, &pdf_direction);
         return vertex_convert_density(pdf_direction, v, next);
     }
-    if (v->type != VERTEX_SURFACE) return vertex_pdf_light(k, scene, v, next);
+    if (v->type != VERTEX_SURFACE) return vertex_pdf_light(settings, scene, v, next);
     Material m = scene->materials[v->index];
     float3 wp = frame_to_local(v->frame, vertex_direction(v, prev));
     float3 wn = frame_to_local(v->frame, vertex_direction(v, next));

@@ -11,15 +11,15 @@
 /* Extends `path` (count vertices so far, the last one the ray's origin) by the ray from origin
  * along unit `direction` that carries throughput beta and was sampled with solid-angle density
  * pdf_dir, up to max_count vertices. A camera subpath that escapes ends on the environment (when
- * there is one). Russian roulette from k->roulette_depth scattering events on keeps a subpath with
+ * there is one). Russian roulette from settings->roulette_depth scattering events on keeps a subpath with
  * probability min(1, max beta / max beta at its start). Returns the new count. */
-SS_FN int bdpt_random_walk(const RenderKernelSettings* k, MarchSettings s, const RenderScene* scene, Rng* rng, float3 origin,
+SS_FN int bdpt_random_walk(const RenderKernelSettings* settings, MarchSettings march_settings, const RenderScene* scene, Rng* rng, float3 origin,
                            float3 direction, float3 beta, float pdf_dir, int mode, bool inside, PathVertex* path, int count,
                            int max_count, PathCounters* counters) {
-    bool has_environment = k->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
+    bool has_environment = settings->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
     float beta_start = max_component(beta);
     for (int bounces = 0; count < max_count; ++bounces) {
-        MarchResult r = trace_ray(origin, direction, s, counters);
+        MarchResult r = trace_ray(origin, direction, march_settings, counters);
         PathVertex v;
         v.beta = beta;
         v.pdf_rev = 0.0f;
@@ -37,7 +37,7 @@ SS_FN int bdpt_random_walk(const RenderKernelSettings* k, MarchSettings s, const
             path[count++] = v;
             break;
         }
-        SurfaceHit hit = surface_hit(k, s, origin, direction, r.t, inside);
+        SurfaceHit hit = surface_hit(settings, march_settings, origin, direction, r.t, inside);
         /* an emissive sphere scatters on the side the ray arrives from, outside or in (kernels/path_tracer.h) */
         if (scene->emission[hit.slot].w > 0.0f) hit = facing_side(hit);
         v.type = VERTEX_SURFACE;
@@ -68,7 +68,7 @@ SS_FN int bdpt_random_walk(const RenderKernelSettings* k, MarchSettings s, const
         if ((b.flags & BSDF_TRANSMISSION) != 0) inside = !inside;
         origin = offset_origin(hit.p, hit.frame.n, hit.epsilon, b.wi.z);
         direction = frame_to_world(hit.frame, b.wi);
-        if (bounces + 1 >= k->roulette_depth) {
+        if (bounces + 1 >= settings->roulette_depth) {
             float survive = fmin(max_component(beta) / beta_start, 1.0f);
             if (!(u.w < survive)) break;
             beta /= survive;
@@ -79,7 +79,7 @@ SS_FN int bdpt_random_walk(const RenderKernelSettings* k, MarchSettings s, const
 
 /* The camera subpath of pixel `pixel`, its ray drawn as the path tracer draws it (camera_pixel_ray):
  * the lens vertex, then the walk in radiance mode. */
-SS_FN int bdpt_camera_subpath(const RenderKernelSettings* k, MarchSettings s, const Camera* camera, const RenderScene* scene, int pixel,
+SS_FN int bdpt_camera_subpath(const RenderKernelSettings* settings, MarchSettings march_settings, const Camera* camera, const RenderScene* scene, int pixel,
                               Rng* rng, PathVertex* path, int max_count, PathCounters* counters) {
     float3 origin, direction;
     camera_pixel_ray(camera, pixel, rng, &origin, &direction);
@@ -88,7 +88,7 @@ SS_FN int bdpt_camera_subpath(const RenderKernelSettings* k, MarchSettings s, co
     float pdf_position, pdf_direction;
     camera_pdf_we(camera, origin, direction, &pdf_position, &pdf_direction);
     bool inside = scene_distance(origin) < 0.0f;
-    return bdpt_random_walk(k, s, scene, rng, origin, direction, float3_splat(1.0f), pdf_direction, TRANSPORT_RADIANCE, inside, path, 1,
+    return bdpt_random_walk(settings, march_settings, scene, rng, origin, direction, float3_splat(1.0f), pdf_direction, TRANSPORT_RADIANCE, inside, path, 1,
                             max_count, counters);
 }
 
@@ -99,12 +99,12 @@ SS_FN int bdpt_camera_subpath(const RenderKernelSettings* k, MarchSettings s, co
  *   point:  a direction uniform on the sphere;
  *   environment: a direction from its importance sampler, the origin uniform on a disk of the
  *           scene's radius facing it (pbrt-v4's ImageInfiniteLight::SampleLe). */
-SS_FN int bdpt_light_subpath(const RenderKernelSettings* k, MarchSettings s, const RenderScene* scene, Rng* rng, PathVertex* path,
+SS_FN int bdpt_light_subpath(const RenderKernelSettings* settings, MarchSettings march_settings, const RenderScene* scene, Rng* rng, PathVertex* path,
                              int max_count, PathCounters* counters) {
     float4 u = rng_next4(rng);
     float4 u_dir = rng_next4(rng);
     float pmf;
-    int index = select_light(scene->light_cdf, k->light_count, u.x, &pmf);
+    int index = select_light(scene->light_cdf, settings->light_count, u.x, &pmf);
     if (!(pmf > 0.0f) || max_count < 1) return 0;
     Light light = scene->lights[index];
     PathVertex v;
@@ -114,7 +114,7 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* k, MarchSettings s, con
     v.pdf_rev = 0.0f;
     v.delta = 0;
     v.on_surface = 0;
-    v.epsilon = march_epsilon(s, 0.0f);
+    v.epsilon = march_epsilon(march_settings, 0.0f);
     float3 origin, direction, le;
     float pdf_position, pdf_dir, cos_out = 1.0f;
     if (light.type == LIGHT_SPHERE) {
@@ -146,11 +146,11 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* k, MarchSettings s, con
         v.p = wi;
         v.frame = frame_from_normal(-wi);
         ShadingFrame disk_frame = frame_from_normal(wi);
-        float2 d = square_to_concentric_disk(u.y, u.z) * k->scene_radius;
-        float3 center = float3_from_array(k->scene_center);
-        origin = center + d.x * disk_frame.t + d.y * disk_frame.b + wi * k->scene_radius;
+        float2 d = square_to_concentric_disk(u.y, u.z) * settings->bdpt.scene_radius;
+        float3 center = float3_from_array(settings->bdpt.scene_center);
+        origin = center + d.x * disk_frame.t + d.y * disk_frame.b + wi * settings->bdpt.scene_radius;
         direction = -wi;
-        pdf_position = 1.0f / (SS_PI * sqr(k->scene_radius));
+        pdf_position = 1.0f / (SS_PI * sqr(settings->bdpt.scene_radius));
         le = environment_radiance(&scene->env, scene->env_buffers.texels, wi);
     }
     if (!(pdf_dir > 0.0f) || !(pdf_position > 0.0f)) return 0;
@@ -162,7 +162,7 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* k, MarchSettings s, con
     /* a disk point inside a solid (an endless plane crosses the disk) lies in the solid's shadow:
      * nothing its ray reaches is lit along it */
     if (v.type == VERTEX_ENVIRONMENT && inside) return 1;
-    int count = bdpt_random_walk(k, s, scene, rng, origin, direction, beta, pdf_dir, TRANSPORT_IMPORTANCE, inside, path, 1, max_count,
+    int count = bdpt_random_walk(settings, march_settings, scene, rng, origin, direction, beta, pdf_dir, TRANSPORT_IMPORTANCE, inside, path, 1, max_count,
                                  counters);
     /* from the environment the first hit's density is the disk's, per unit area across the ray */
     if (v.type == VERTEX_ENVIRONMENT && count > 1)

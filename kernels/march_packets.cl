@@ -25,7 +25,7 @@ int lowest_lane(uint bits) { return 31 - (int)clz(bits & (0u - bits)); }
  * has ended), so the lanes stay busy however long each ray's march and however few rays are left.
  * A lane waits for company until half the lanes are free: starting a ray costs a few dozen scalar
  * operations. */
-SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings s, int first, int end, int stride, __global const float* rays, __global RayMarch* marches) {
+SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int first, int end, int stride, __global const float* rays, __global RayMarch* marches) {
     uint evaluations = 0u;
     float field[RAY_FIELDS][8]; /* each lane's ray: origin, direction, max distance */
     int lane_ray[8];            /* the ray each lane marches; -1: none */
@@ -34,7 +34,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings s, int first, int end, i
         for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = NO_RAY;
     }
     float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 1.0f, max_distance = NO_RAY;
-    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, s);
+    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, march_settings);
     int next = first;
     int8 holding = 0; /* the lanes that have a ray, marched or marching */
     for (;;) {
@@ -82,7 +82,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings s, int first, int end, i
                 vy = vload8(0, field[4]);
                 vz = vload8(0, field[5]);
                 max_distance = vload8(0, field[6]);
-                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, s);
+                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, march_settings);
             }
         }
         if (!any(st.running)) {
@@ -91,7 +91,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings s, int first, int end, i
             if (next >= end && !any(holding)) break;
             continue;
         }
-        march_lanes_advance(&st, ox, oy, oz, vx, vy, vz, max_distance, s, &evaluations);
+        march_lanes_advance(&st, ox, oy, oz, vx, vy, vz, max_distance, march_settings, &evaluations);
     }
 }
 
@@ -124,7 +124,7 @@ __kernel void march_camera_rays(RenderKernelSettings settings, Camera camera, in
     if (first >= paths) return;
     const int end = min(first + MARCH_RAYS_PER_ITEM, paths);
     const int pixels = camera.width * camera.height;
-    const MarchSettings s = render_march_settings(&settings);
+    const MarchSettings march_settings = render_march_settings(&settings);
     /* the stride is a multiple of 8 (kernels/ray_march.h): the lanes of a last packet past `end`
      * store no ray, as the padding holds */
     for (int packet = first; packet < end; packet += 8) {
@@ -139,11 +139,11 @@ __kernel void march_camera_rays(RenderKernelSettings settings, Camera camera, in
         vstore8(dx, 0, rays + 3 * stride + packet);
         vstore8(dy, 0, rays + 4 * stride + packet);
         vstore8(dz, 0, rays + 5 * stride + packet);
-        vstore8(select((float8)s.max_distance, (float8)NO_RAY, path >= end), 0, rays + 6 * stride + packet);
+        vstore8(select((float8)march_settings.max_distance, (float8)NO_RAY, path >= end), 0, rays + 6 * stride + packet);
         vstore8(rng.s0, 0, camera_rngs + packet);
         vstore8(rng.s1, 0, camera_rngs + stride + packet);
         vstore8(rng.s2, 0, camera_rngs + 2 * stride + packet);
         vstore8(rng.s3, 0, camera_rngs + 3 * stride + packet);
     }
-    march_granule(s, first, end, stride, rays, marches);
+    march_granule(march_settings, first, end, stride, rays, marches);
 }

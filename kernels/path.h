@@ -31,8 +31,8 @@ SS_FN void count_march(MarchResult r, PathCounters* counters) {
 #endif
 }
 
-SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings s, PathCounters* counters) {
-    MarchResult r = march(origin, direction, 0.0f, s);
+SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings march_settings, PathCounters* counters) {
+    MarchResult r = march(origin, direction, 0.0f, march_settings);
     count_march(r, counters);
     return r;
 }
@@ -69,14 +69,14 @@ typedef struct SurfaceHit {
 
 /* `inside`: the ray travels in a solid (only transmission gets a ray there), so the side it came
  * from is the inner one; the frame's normal stays outward and that side must face it. */
-SS_FN SurfaceHit surface_hit(const RenderKernelSettings* k, MarchSettings s, float3 origin, float3 direction, float t, bool inside) {
+SS_FN SurfaceHit surface_hit(const RenderKernelSettings* settings, MarchSettings march_settings, float3 origin, float3 direction, float t, bool inside) {
     SurfaceHit h;
     h.p = origin + direction * t;
     scene_distance_material(h.p, &h.slot);
-    float3 outward = scene_normal(h.p, k->normal_step, k->normal_method);
+    float3 outward = scene_normal(h.p, settings->normal_step, settings->normal_method);
     h.frame = shading_frame(inside ? -facing_normal(-outward, -direction) : facing_normal(outward, -direction));
     h.wo = frame_to_local(h.frame, -direction);
-    h.epsilon = march_epsilon(s, t);
+    h.epsilon = march_epsilon(march_settings, t);
     return h;
 }
 
@@ -119,18 +119,18 @@ SS_FN bool shadow_reached(const ShadowRay* shadow, MarchResult r) {
 }
 
 /* A shadow ray's march: it ends at the ray's distance. */
-SS_FN float shadow_max_distance(MarchSettings s, float distance) { return fmin(s.max_distance, distance); }
+SS_FN float shadow_max_distance(MarchSettings march_settings, float distance) { return fmin(march_settings.max_distance, distance); }
 
-SS_FN MarchResult trace_shadow_ray(const ShadowRay* shadow, MarchSettings s, PathCounters* counters) {
-    s.max_distance = shadow_max_distance(s, shadow->distance);
-    return trace_ray(float3_from_array(shadow->origin), float3_from_array(shadow->direction), s, counters);
+SS_FN MarchResult trace_shadow_ray(const ShadowRay* shadow, MarchSettings march_settings, PathCounters* counters) {
+    march_settings.max_distance = shadow_max_distance(march_settings, shadow->distance);
+    return trace_ray(float3_from_array(shadow->origin), float3_from_array(shadow->direction), march_settings, counters);
 }
 
 /* Whether a shadow ray (ShadowRay's fields) reaches what it aims at. */
-SS_FN bool segment_unoccluded(float3 origin, float3 direction, float distance, int target_slot, MarchSettings s,
+SS_FN bool segment_unoccluded(float3 origin, float3 direction, float distance, int target_slot, MarchSettings march_settings,
                               PathCounters* counters) {
-    s.max_distance = shadow_max_distance(s, distance);
-    return segment_reached(origin, direction, target_slot, trace_ray(origin, direction, s, counters));
+    march_settings.max_distance = shadow_max_distance(march_settings, distance);
+    return segment_reached(origin, direction, target_slot, trace_ray(origin, direction, march_settings, counters));
 }
 
 #endif

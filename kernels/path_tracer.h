@@ -20,29 +20,29 @@
 #include "kernels/path.h"
 #include "kernels/render_scene.h"
 #include "kernels/rng.h"
-#include "kernels/bench_standins.h" /* nothing unless a BENCH_STANDIN_* measurement build */
+#include "bench/kernels/part_standins.h" /* nothing unless a BENCH_STANDIN_* measurement build */
 
 /* The MIS weight of a light reached by a ray sampled from the BSDF with solid-angle density
  * `bsdf_pdf`: 1 after a delta event (no light sample could have made it) or with BSDF sampling
  * alone, 0 with light sampling alone, else the power heuristic against `light_density`, the density
  * with which next-event estimation at the ray's origin samples the same direction (the light's
  * selection included; only read in that last case). */
-SS_FN float light_hit_mis_weight(const RenderKernelSettings* k, float bsdf_pdf, bool after_delta, float light_density) {
-    if (after_delta || k->light_sampling == LIGHT_SAMPLING_BSDF) return 1.0f;
-    if (k->light_sampling == LIGHT_SAMPLING_LIGHTS) return 0.0f;
+SS_FN float light_hit_mis_weight(const RenderKernelSettings* settings, float bsdf_pdf, bool after_delta, float light_density) {
+    if (after_delta || settings->light_sampling == LIGHT_SAMPLING_BSDF) return 1.0f;
+    if (settings->light_sampling == LIGHT_SAMPLING_LIGHTS) return 0.0f;
     return mis_power_heuristic(bsdf_pdf, light_density);
 }
 
 /* The same for light `index` reached from `from` along `direction`: its density looked up only when
  * the weight needs it. Inlined always: out of line (as PoCL's compiler left it), its pointer to the
  * scene kept a copy of the scene in memory for every work-item of the wavefront's step. */
-SS_FN SS_INLINE_ALWAYS float light_hit_weight(const RenderKernelSettings* k, const RenderScene* scene, int index, float3 from, float3 direction,
+SS_FN SS_INLINE_ALWAYS float light_hit_weight(const RenderKernelSettings* settings, const RenderScene* scene, int index, float3 from, float3 direction,
                              float bsdf_pdf, bool after_delta) {
-    if (after_delta || k->light_sampling != LIGHT_SAMPLING_MIS) return light_hit_mis_weight(k, bsdf_pdf, after_delta, 0.0f);
+    if (after_delta || settings->light_sampling != LIGHT_SAMPLING_MIS) return light_hit_mis_weight(settings, bsdf_pdf, after_delta, 0.0f);
     Light light = scene->lights[index];
-    float light_density = light_selection_pmf(scene->light_cdf, k->light_count, index) *
+    float light_density = light_selection_pmf(scene->light_cdf, settings->light_count, index) *
                           light_pdf(&light, &scene->env, scene->env_buffers, from, direction);
-    return light_hit_mis_weight(k, bsdf_pdf, after_delta, light_density);
+    return light_hit_mis_weight(settings, bsdf_pdf, after_delta, light_density);
 }
 
 /* Next-event estimation at a surface point: one light chosen by the selection distribution, one
@@ -50,12 +50,12 @@ SS_FN SS_INLINE_ALWAYS float light_hit_weight(const RenderKernelSettings* k, con
  * with its contribution: `throughput` times the estimate (pending 0 when the sample is worth
  * nothing). m: the material at the hit, clamped (material_clamped). u: xy for the light sample, z
  * for the choice of light. */
-SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* k, const RenderScene* scene, const Material* m, const SurfaceHit* hit,
+SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* settings, const RenderScene* scene, const Material* m, const SurfaceHit* hit,
                                     float3 u, float3 throughput) {
     ShadowRay shadow;
     shadow.pending = 0;
     float pmf;
-    int index = select_light(scene->light_cdf, k->light_count, u.z, &pmf);
+    int index = select_light(scene->light_cdf, settings->light_count, u.z, &pmf);
     if (!(pmf > 0.0f)) return shadow;
     Light light = scene->lights[index];
     LightSample ls = sample_light(&light, &scene->env, scene->env_buffers, hit->p, make_float2(u.x, u.y));
@@ -64,7 +64,7 @@ SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* k, const RenderS
     float3 f = bsdf_eval_clamped(m, scene->measured, hit->wo, wl);
     if (!(max_component(f) > 0.0f)) return shadow;
     float light_density = pmf * ls.pdf;
-    float weight = (ls.delta || k->light_sampling != LIGHT_SAMPLING_MIS) ? 1.0f
+    float weight = (ls.delta || settings->light_sampling != LIGHT_SAMPLING_MIS) ? 1.0f
                                                                          : mis_power_heuristic(light_density, bsdf_pdf_clamped(m, scene->measured, hit->wo, wl));
     float3_to_array(offset_origin(hit->p, hit->frame.n, hit->epsilon, wl.z), shadow.origin);
     float3_to_array(ls.wi, shadow.direction);
@@ -116,34 +116,34 @@ SS_FN PathState path_begin(float3 origin, float3 direction, Rng rng) {
 /* The path's ray found `march_result`: adds what it sees there (the environment, an emitter), and at
  * a surface it scatters from makes the light sample (p->shadow) and samples the BSDF for its next
  * ray. Clears p->active when the path ends. */
-SS_FN void path_scatter(const RenderKernelSettings* k, MarchSettings s, const RenderScene* scene, PathState* p, MarchResult march_result) {
+SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings march_settings, const RenderScene* scene, PathState* p, MarchResult march_result) {
     float3 radiance = float3_from_array(p->radiance);
     float3 throughput = float3_from_array(p->throughput);
     float3 origin = float3_from_array(p->origin), direction = float3_from_array(p->direction);
     float3 previous_p = float3_from_array(p->previous_p);
     p->active = 0;
     if (march_result.status != MARCH_HIT) {
-        bool has_environment = k->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
-        if (has_environment && p->seen_directly && k->show_background) {
+        bool has_environment = settings->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
+        if (has_environment && p->seen_directly && settings->show_background) {
             /* what the eye sees directly or in mirrors is filtered, so the backdrop shows no texels
              * (it is seen after delta events only: no light sample could have found it) */
-            float weight = light_hit_weight(k, scene, 0, previous_p, direction, p->previous_pdf, p->previous_delta);
+            float weight = light_hit_weight(settings, scene, 0, previous_p, direction, p->previous_pdf, p->previous_delta);
             if (weight > 0.0f) radiance += throughput * weight * environment_radiance_filtered(&scene->env, scene->env_buffers.texels, direction);
         } else if (has_environment && !p->seen_directly) {
             /* the radiance and the density of the texel, from one lookup */
             float env_pdf;
             float3 le = environment_radiance_pdf(&scene->env, scene->env_buffers.texels, direction, &env_pdf);
-            float weight = light_hit_mis_weight(k, p->previous_pdf, p->previous_delta,
-                                                light_selection_pmf(scene->light_cdf, k->light_count, 0) * env_pdf);
+            float weight = light_hit_mis_weight(settings, p->previous_pdf, p->previous_delta,
+                                                light_selection_pmf(scene->light_cdf, settings->light_count, 0) * env_pdf);
             if (weight > 0.0f) radiance += throughput * weight * le;
         }
         float3_to_array(radiance, p->radiance);
         return;
     }
-    SurfaceHit hit = surface_hit(k, s, origin, direction, march_result.t, p->inside);
+    SurfaceHit hit = surface_hit(settings, march_settings, origin, direction, march_result.t, p->inside);
     float4 emitted = scene->emission[hit.slot];
     if (emitted.w > 0.0f) { /* an emissive sphere, seen from either side */
-        float weight = light_hit_weight(k, scene, scene->light_of_slot[hit.slot], previous_p, direction, p->previous_pdf, p->previous_delta);
+        float weight = light_hit_weight(settings, scene, scene->light_of_slot[hit.slot], previous_p, direction, p->previous_pdf, p->previous_delta);
         radiance += throughput * (weight * make_float3(emitted.x, emitted.y, emitted.z));
         float3_to_array(radiance, p->radiance);
         if (emitted.w < EMISSION_SCATTERS) return; /* a black emitter scatters nothing */
@@ -151,15 +151,15 @@ SS_FN void path_scatter(const RenderKernelSettings* k, MarchSettings s, const Re
          * a sphere light is a surface, not a solid the path enters. */
         hit = facing_side(hit);
     }
-    if (p->depth >= k->max_depth) return;
+    if (p->depth >= settings->max_depth) return;
 
     /* bsdf_* take private pointers; the renderer clamped the scene's materials (material_clamped)
      * when it took them (render/renderer.cpp), so the vertex's three BSDF calls take it as it is */
     Material m = scene->materials[hit.slot];
     float4 u_light = rng_next4(&p->rng);
     float4 u_bsdf = rng_next4(&p->rng);
-    if (k->light_sampling != LIGHT_SAMPLING_BSDF && k->light_count > 0)
-        p->shadow = direct_light_sample(k, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), throughput);
+    if (settings->light_sampling != LIGHT_SAMPLING_BSDF && settings->light_count > 0)
+        p->shadow = direct_light_sample(settings, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), throughput);
 
     BsdfSample b = bsdf_sample_clamped(&m, scene->measured, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
     if (b.flags == 0) return;
@@ -175,7 +175,7 @@ SS_FN void path_scatter(const RenderKernelSettings* k, MarchSettings s, const Re
     /* Russian roulette keeps a path with probability min(1, max throughput): a path whose
      * throughput stays 1 (white furnace) is never cut, so the estimator's variance is not raised
      * where nothing is absorbed. */
-    if (p->depth + 1 >= k->roulette_depth) {
+    if (p->depth + 1 >= settings->roulette_depth) {
         float survive = fmin(max_component(throughput), 1.0f);
         if (!(u_light.z < survive)) return;
         throughput /= survive;
@@ -193,12 +193,12 @@ SS_FN void path_resolve_shadow(PathState* p, MarchResult r) {
 
 /* Radiance arriving at `origin` from `direction`, estimated by one path drawing its numbers from
  * `rng`: each vertex's shadow ray is marched right after it scatters. */
-SS_FN float3 trace_path(const RenderKernelSettings* k, MarchSettings s, const RenderScene* scene, float3 origin, float3 direction, Rng rng,
+SS_FN float3 trace_path(const RenderKernelSettings* settings, MarchSettings march_settings, const RenderScene* scene, float3 origin, float3 direction, Rng rng,
                         PathCounters* counters) {
     PathState p = path_begin(origin, direction, rng);
     for (;;) {
-        path_scatter(k, s, scene, &p, trace_ray(float3_from_array(p.origin), float3_from_array(p.direction), s, counters));
-        if (p.shadow.pending) path_resolve_shadow(&p, trace_shadow_ray(&p.shadow, s, counters));
+        path_scatter(settings, march_settings, scene, &p, trace_ray(float3_from_array(p.origin), float3_from_array(p.direction), march_settings, counters));
+        if (p.shadow.pending) path_resolve_shadow(&p, trace_shadow_ray(&p.shadow, march_settings, counters));
         if (!p.active) break;
     }
     return float3_from_array(p.radiance);
@@ -212,20 +212,20 @@ SS_FN float4 film_add_path(float4 sum, float3 l) {
     return sum;
 }
 
-/* Adds settings.sample_count samples to one pixel; pixel k is (k % width, k / width), row 0 at the
+/* Adds settings->sample_count samples to one pixel; pixel k is (k % width, k / width), row 0 at the
  * top. The samples of a pixel are summed in sample order by the one work-item that owns it. */
-SS_FN void path_tracer_pixel(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int pixel,
+SS_FN void path_tracer_pixel(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int pixel,
                              GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts) {
-    MarchSettings s = render_march_settings(k);
+    MarchSettings march_settings = render_march_settings(settings);
     float4 sum = accumulation[pixel];
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
-    for (int i = 0; i < k->sample_count; ++i) {
-        Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + i), k->seed_lo, k->seed_hi);
+    for (int i = 0; i < settings->sample_count; ++i) {
+        Rng rng = rng_make((uint)pixel, (uint)(settings->first_sample + i), settings->seed_lo, settings->seed_hi);
         float3 origin, direction;
         camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-        sum = film_add_path(sum, trace_path(k, s, scene, origin, direction, rng, &counters));
+        sum = film_add_path(sum, trace_path(settings, march_settings, scene, origin, direction, rng, &counters));
     }
     accumulation[pixel] = sum;
     ray_counts[pixel] += counters.rays;

@@ -39,11 +39,11 @@ SS_FN MarchResult load_march(GLOBAL_MEM const RayMarch* marches, int path) {
  * sample from the environment, with the two numbers that sample will use in *u: the step peeks at
  * them through a copy of the path's generator (path_scatter's u_light: xy the sample, w the choice
  * of light). A path that ends at an emitter draws nothing: a prefetch for it is wasted, not wrong. */
-SS_FN bool peek_environment_sample(const RenderKernelSettings* k, const RenderScene* scene, int depth, Rng rng, float2* u) {
-    if (depth >= k->max_depth || k->light_sampling == LIGHT_SAMPLING_BSDF || k->light_count <= 0) return false;
+SS_FN bool peek_environment_sample(const RenderKernelSettings* settings, const RenderScene* scene, int depth, Rng rng, float2* u) {
+    if (depth >= settings->max_depth || settings->light_sampling == LIGHT_SAMPLING_BSDF || settings->light_count <= 0) return false;
     float4 numbers = rng_next4(&rng);
     float pmf;
-    int index = select_light(scene->light_cdf, k->light_count, numbers.w, &pmf);
+    int index = select_light(scene->light_cdf, settings->light_count, numbers.w, &pmf);
     if (!(pmf > 0.0f) || scene->lights[index].type != LIGHT_ENVIRONMENT) return false;
     *u = make_float2(numbers.x, numbers.y);
     return true;
@@ -80,7 +80,7 @@ SS_FN void store_camera_rng(GLOBAL_MEM uint* camera_rngs, int stride, int path, 
  * with WAVEFRONT_PREFETCH; nothing else changes, not a bit of the image. The path may belong to a
  * work-group that another thread is stepping: whatever state it reads, every index stays inside its
  * buffer (the numbers are in [0, 1), a direction's texel is clamped), and only a prefetch uses it. */
-SS_FN SS_INLINE_ALWAYS void prefetch_step_environment(const RenderKernelSettings* k, const RenderScene* scene, GLOBAL_MEM const PathState* states,
+SS_FN SS_INLINE_ALWAYS void prefetch_step_environment(const RenderKernelSettings* settings, const RenderScene* scene, GLOBAL_MEM const PathState* states,
                                      GLOBAL_MEM const uint* camera_rngs, int stride, GLOBAL_MEM const RayMarch* ray_marches, int path,
                                      int paths, bool texel, bool first) {
 #if defined(__clang__) && defined(WAVEFRONT_PREFETCH)
@@ -95,14 +95,14 @@ SS_FN SS_INLINE_ALWAYS void prefetch_step_environment(const RenderKernelSettings
         return;
     }
     float2 u;
-    if (!peek_environment_sample(k, scene, first ? 0 : states[path].depth, first ? load_camera_rng(camera_rngs, stride, path) : states[path].rng, &u))
+    if (!peek_environment_sample(settings, scene, first ? 0 : states[path].depth, first ? load_camera_rng(camera_rngs, stride, path) : states[path].rng, &u))
         return;
     if (texel)
         __builtin_prefetch(&b.texels[environment_sample_texel(&scene->env, b.alias, u.x, u.y)]);
     else
         __builtin_prefetch(&b.alias[environment_sample_column_entry(&scene->env, b.alias, u.x, u.y)]);
 #else
-    (void)k, (void)scene, (void)states, (void)camera_rngs, (void)stride, (void)ray_marches, (void)path, (void)paths, (void)texel, (void)first;
+    (void)settings, (void)scene, (void)states, (void)camera_rngs, (void)stride, (void)ray_marches, (void)path, (void)paths, (void)texel, (void)first;
 #endif
 }
 
@@ -141,7 +141,7 @@ typedef struct WavefrontFilm {
  * unfinished[0] when the path still has a ray to march, unfinished[1] when it has a shadow ray:
  * every writer writes the same 1, since the host needs only whether any ray, and any shadow ray, is
  * left (it launches only those marches), and a counter's atomics cost more than the step on a CPU. */
-SS_FN void path_tracer_leave(MarchSettings s, int path, const PathState* p, GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays,
+SS_FN void path_tracer_leave(MarchSettings march_settings, int path, const PathState* p, GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays,
                              GLOBAL_MEM float* shadow_rays, WavefrontFilm film, GLOBAL_MEM volatile uint* unfinished) {
     if (!p->active && !p->shadow.pending) {
         /* The path is done. All that is read of it until the next sample's camera step rewrites it
@@ -161,14 +161,14 @@ SS_FN void path_tracer_leave(MarchSettings s, int path, const PathState* p, GLOB
         return;
     }
     if (p->active) {
-        store_ray(rays, stride, path, float3_from_array(p->origin), float3_from_array(p->direction), s.max_distance);
+        store_ray(rays, stride, path, float3_from_array(p->origin), float3_from_array(p->direction), march_settings.max_distance);
         unfinished[0] = 1u; /* every writer writes the same 1 (above) */
     } else {
         store_no_ray(rays, stride, path);
     }
     if (p->shadow.pending) {
         store_ray(shadow_rays, stride, path, float3_from_array(p->shadow.origin), float3_from_array(p->shadow.direction),
-                  shadow_max_distance(s, p->shadow.distance));
+                  shadow_max_distance(march_settings, p->shadow.distance));
         unfinished[1] = 1u;
     } else {
         store_no_ray(shadow_rays, stride, path);
@@ -180,14 +180,14 @@ SS_FN void path_tracer_leave(MarchSettings s, int path, const PathState* p, GLOB
  * (march_camera_rays, kernels/march_packets.cl, begins a pinhole's rays on the vector lanes): path
  * `path` (WavefrontFilm: sample first_sample + slot of pixel path - slot * pixels) draws its camera
  * ray, left for the packets, and the generator its first step begins the path with. */
-SS_FN void path_tracer_camera_step(const RenderKernelSettings* k, const Camera* camera, int path, int stride, GLOBAL_MEM float* rays,
+SS_FN void path_tracer_camera_step(const RenderKernelSettings* settings, const Camera* camera, int path, int stride, GLOBAL_MEM float* rays,
                                    GLOBAL_MEM uint* camera_rngs) {
     const int pixels = camera->width * camera->height;
     const int slot = path / pixels, pixel = path - slot * pixels;
-    Rng rng = rng_make((uint)pixel, (uint)(k->first_sample + slot), k->seed_lo, k->seed_hi);
+    Rng rng = rng_make((uint)pixel, (uint)(settings->first_sample + slot), settings->seed_lo, settings->seed_hi);
     float3 origin, direction;
     camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-    store_ray(rays, stride, path, origin, direction, render_march_settings(k).max_distance);
+    store_ray(rays, stride, path, origin, direction, render_march_settings(settings).max_distance);
     store_camera_rng(camera_rngs, stride, path, rng);
 }
 
@@ -195,7 +195,7 @@ SS_FN void path_tracer_camera_step(const RenderKernelSettings* k, const Camera* 
  * begins the path with its camera ray (in the ray buffer) and the generator that ray left; a later
  * one resolves its pending shadow ray with its march. Then it takes the march of its ray and
  * scatters (path_scatter). */
-SS_FN SS_INLINE_ALWAYS void path_tracer_step(const RenderKernelSettings* k, const Camera* camera, const RenderScene* scene, int path,
+SS_FN SS_INLINE_ALWAYS void path_tracer_step(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int path,
                                              GLOBAL_MEM PathState* states, int stride, GLOBAL_MEM float* rays, GLOBAL_MEM float* shadow_rays,
                                              GLOBAL_MEM const RayMarch* ray_marches, GLOBAL_MEM const RayMarch* shadow_marches,
                                              GLOBAL_MEM const uint* camera_rngs, WavefrontFilm film, GLOBAL_MEM volatile uint* unfinished,
@@ -206,10 +206,10 @@ SS_FN SS_INLINE_ALWAYS void path_tracer_step(const RenderKernelSettings* k, cons
     GLOBAL_MEM uint* ray_count = film.slots > 1 ? &film.path_rays[path] : &film.ray_counts[path];
     GLOBAL_MEM uint* lost_ray_count = film.slots > 1 ? &film.path_lost_rays[path] : &film.lost_ray_counts[path];
     prefetch_step_state(states, path + 4 * WAVEFRONT_PREFETCH_AHEAD, paths);
-    prefetch_step_environment(k, scene, states, camera_rngs, stride, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, paths, false, first);
-    prefetch_step_environment(k, scene, states, camera_rngs, stride, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, paths, true, first);
+    prefetch_step_environment(settings, scene, states, camera_rngs, stride, ray_marches, path + 2 * WAVEFRONT_PREFETCH_AHEAD, paths, false, first);
+    prefetch_step_environment(settings, scene, states, camera_rngs, stride, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, paths, true, first);
     if (!first && !states[path].active && !states[path].shadow.pending) return; /* finished at an earlier step */
-    MarchSettings s = render_march_settings(k);
+    MarchSettings march_settings = render_march_settings(settings);
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
@@ -230,11 +230,11 @@ SS_FN SS_INLINE_ALWAYS void path_tracer_step(const RenderKernelSettings* k, cons
     if (p.active) {
         MarchResult r = load_march(ray_marches, path);
         count_march(r, &counters);
-        path_scatter(k, s, scene, &p, r);
+        path_scatter(settings, march_settings, scene, &p, r);
     }
     *ray_count += counters.rays;
     *lost_ray_count += counters.lost_rays;
-    path_tracer_leave(s, path, &p, states, stride, rays, shadow_rays, film, unfinished);
+    path_tracer_leave(march_settings, path, &p, states, stride, rays, shadow_rays, film, unfinished);
 }
 
 /* Adds the paths of `film.slots` samples in flight (slots > 1) to pixel `pixel`'s film entries, in

@@ -1,11 +1,12 @@
 /* The settings every integrator kernel takes (kernels/path_tracer.cl, kernels/bdpt.cl,
  * kernels/march_packets.cl, and the host build of the same integrators, render/host_renderer.cpp):
- * plain 4-byte scalars only, so the struct has one layout on both sides and travels as a kernel
- * argument by value. */
+ * plain 4-byte scalars only (and structs of them), so the struct has one layout on both sides and
+ * travels as a kernel argument by value. */
 #ifndef KERNELS_RENDER_SETTINGS_H
 #define KERNELS_RENDER_SETTINGS_H
 #include "single_source/vocabulary.h"
 #include "sdf/march_settings.h"
+#include "kernels/bdpt_settings.h"
 
 /* How a path finds the lights (the environment, emissive spheres, point lights):
  *   BSDF:   only where a BSDF-sampled ray happens to reach one (point lights are then never found);
@@ -15,22 +16,6 @@
 #define LIGHT_SAMPLING_BSDF 0
 #define LIGHT_SAMPLING_LIGHTS 1
 #define LIGHT_SAMPLING_MIS 2
-
-/* The strategies a bidirectional kernel (kernels/bdpt.h) adds up, as a mask: s light-subpath
- * vertices joined to t camera-subpath vertices. bdpt takes them all, the light tracer `lt` only
- * t = 1 (docs/bdpt.md). */
-#define STRATEGY_S0 1      /* s = 0: the camera subpath reaches a light */
-#define STRATEGY_S1 2      /* s = 1, t >= 2: a light sample joined to a camera vertex */
-#define STRATEGY_S2 4      /* s >= 2, t >= 2: two subpath vertices joined by a visibility march */
-#define STRATEGY_T1 8      /* t = 1: a light-subpath vertex joined to the lens, splatted */
-#define STRATEGY_ALL 15
-
-/* The most vertices of a bidirectional path (max_depth + 2): the size of the host build's private
- * vertex arrays (kernels/bdpt_vertex.h); an OpenCL build sizes them to its own max_vertices. */
-#define BDPT_VERTEX_LIMIT 64
-
-#define MIS_BALANCE 0
-#define MIS_POWER 1
 
 typedef struct RenderKernelSettings {
     int first_sample;   /* sample index of this launch's first sample (keys the random numbers) */
@@ -46,33 +31,25 @@ typedef struct RenderKernelSettings {
     float max_distance, over_relaxation, lipschitz;
     int light_count;      /* entries of the light array; the environment, when there is one, is entry 0 */
     int show_background;  /* 0: camera rays (and mirror paths) that escape see black, lighting unchanged */
-    /* bidirectional kernels only */
-    int max_vertices;     /* s + t at most: max_depth + 2, the lens, max_depth scattering events and the light */
-    int strategies;       /* STRATEGY_* mask */
-    int mis_heuristic;    /* MIS_* */
-    int strategy_only;    /* >= 0: add only strategy (s, t) = (strategy_only / 32, strategy_only % 32), weighted by the
-                             mask's MIS (--strategies DIR); -1: every strategy of the mask */
-    int unweighted;       /* 1: with strategy_only, its contribution without the MIS weight */
-    float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
-    float scene_radius;
+    BdptKernelSettings bdpt; /* the bidirectional kernels' own (kernels/bdpt_settings.h) */
     float surface_lo[3], surface_hi[3]; /* MarchSettings' surface box */
 } RenderKernelSettings;
 
 /* sdf/march.h's settings with what the render settings change; the epsilons stay the defaults. */
-SS_FN MarchSettings render_march_settings(const RenderKernelSettings* k) {
-    MarchSettings s = march_settings_default(k->lipschitz);
-    s.max_steps = k->max_steps;
-    s.max_distance = k->max_distance;
-    s.over_relaxation = k->over_relaxation;
+SS_FN MarchSettings render_march_settings(const RenderKernelSettings* settings) {
+    MarchSettings march_settings = march_settings_default(settings->lipschitz);
+    march_settings.max_steps = settings->max_steps;
+    march_settings.max_distance = settings->max_distance;
+    march_settings.over_relaxation = settings->over_relaxation;
     /* each entry by itself, not in a loop: PoCL keeps the settings of such a loop in memory for every
      * work-item of the wavefront's step (docs/render.md, "Code PoCL compiles well") */
-    s.surface_lo[0] = k->surface_lo[0];
-    s.surface_lo[1] = k->surface_lo[1];
-    s.surface_lo[2] = k->surface_lo[2];
-    s.surface_hi[0] = k->surface_hi[0];
-    s.surface_hi[1] = k->surface_hi[1];
-    s.surface_hi[2] = k->surface_hi[2];
-    return s;
+    march_settings.surface_lo[0] = settings->surface_lo[0];
+    march_settings.surface_lo[1] = settings->surface_lo[1];
+    march_settings.surface_lo[2] = settings->surface_lo[2];
+    march_settings.surface_hi[0] = settings->surface_hi[0];
+    march_settings.surface_hi[1] = settings->surface_hi[1];
+    march_settings.surface_hi[2] = settings->surface_hi[2];
+    return march_settings;
 }
 
 #endif

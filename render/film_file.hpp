@@ -10,7 +10,7 @@
 
 #include "film/image_metadata.hpp"
 #include "film/image_output.hpp"
-#include "render/renderer.hpp"
+#include "render/film_readback.hpp"
 #include "render/sample_ranges.hpp"
 
 namespace lab::render {

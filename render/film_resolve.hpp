@@ -2,7 +2,7 @@
 #pragma once
 
 #include "film/image.hpp"
-#include "render/renderer.hpp"
+#include "render/film_readback.hpp"
 
 namespace lab::render {
 

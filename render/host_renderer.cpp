@@ -3,26 +3,11 @@
 #include <atomic>
 #include <thread>
 
-#include "scene/field_for_kernel_headers.hpp"
+#include "render/host_kernels.hpp"
 
 namespace lab::render {
 
-// The integrator's single-source code on the host. The kernels call the scene's distance field as
-// free functions (the generated scene/generated.h defines them in a kernel); here they evaluate
-// the scene each worker thread renders, through the host interpreter.
-namespace host_integrator {
-
-using namespace ::kernel;
-using namespace scene::field_for_kernel_headers;
-
-#include "sdf/march.h"
-#include "sdf/normals.h"
-#include "kernels/path_tracer.h"
-#include "kernels/bdpt.h"
-
-}  // namespace host_integrator
-
-size_t path_state_bytes() { return sizeof(host_integrator::PathState); }
+size_t path_state_bytes() { return sizeof(host_kernels::PathState); }
 
 HostRenderer::HostRenderer(RenderInput input, int threads) : Renderer(std::move(input)) {
     threads_ = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
@@ -41,7 +26,7 @@ void HostRenderer::clear_film() {
     lost_.assign(pixels, 0u);
 }
 
-void HostRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange range) {
+void HostRenderer::launch(const kernel::RenderKernelSettings& launch_settings, PixelRange range) {
     const ibl::Environment& env = bound_environment();
     kernel::RenderScene scene = kernel::render_scene_make(compiled_.materials.data(), brdf::measured_tables(), emission_.data(), lights_.lights.data(),
                                                           lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(),
@@ -51,18 +36,18 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& k, PixelRange rang
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());
     // The splat buffer holds floats as their bits (kernels/film.h), which the film reads back as floats.
     auto* splat = reinterpret_cast<unsigned*>(film_.splat.data());
-    const bool bidirectional = input_.settings.integrator != Integrator::pt;
+    const bool bidirectional = integrator_descriptor(input_.settings.integrator).bidirectional();
     std::atomic<int> next{range.first};
     auto work = [&] {
-        scene::field_for_kernel_headers::current_scene = &input_.scene;
+        const HostSceneScope scene_scope(input_.scene);
         // Rows of pixels at a time: few enough atomics, small enough to balance the threads.
         const int chunk = std::max(1, input_.settings.width);
         for (int begin = next.fetch_add(chunk); begin < pixels; begin = next.fetch_add(chunk))
             for (int pixel = begin; pixel < std::min(pixels, begin + chunk); ++pixel)
                 if (bidirectional)
-                    host_integrator::bdpt_pixel(&k, &camera_, &scene, pixel, accumulation, splat, rays_.data(), lost_.data());
+                    host_kernels::bdpt_pixel(&launch_settings, &camera_, &scene, pixel, accumulation, splat, rays_.data(), lost_.data());
                 else
-                    host_integrator::path_tracer_pixel(&k, &camera_, &scene, pixel, accumulation, rays_.data(), lost_.data());
+                    host_kernels::path_tracer_pixel(&launch_settings, &camera_, &scene, pixel, accumulation, rays_.data(), lost_.data());
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < threads_; ++t) pool.emplace_back(work);

@@ -24,7 +24,7 @@ private:
     void build_kernel() override {}  // nothing to build: the integrator is compiled into the binary
     void upload_scene() override {}  // the scene is read where it is
     void clear_film() override;
-    void launch(const kernel::RenderKernelSettings& k, PixelRange pixels) override;
+    void launch(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels) override;
     FilmReadback read_film() const override;
     void write_film(const FilmReadback& film) override;
     void read_ray_counts(uint64_t* rays, uint64_t* lost) const override;

@@ -71,14 +71,14 @@ film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatis
     m.set("light_selection", light_selection_name(renderer.light_selection()));
     m.set("max_depth", s.max_depth);
     m.set("roulette_depth", s.roulette_depth);
-    if (s.integrator != Integrator::pt) {  // what only the bidirectional kernel reads
+    if (integrator_descriptor(s.integrator).bidirectional()) {  // what only the bidirectional kernel reads
         m.set("max_vertices", bdpt_max_vertices(s));
-        m.set("mis_heuristic", mis_heuristic_name(s.mis_heuristic));
-        if (s.strategies != 0) m.set("strategies", s.strategies);  // a STRATEGY_* mask other than the integrator's own
-        if (s.strategy_s >= 0) {  // one strategy alone (--strategies DIR)
-            m.set("strategy_s", s.strategy_s);
-            m.set("strategy_t", s.strategy_t);
-            m.set("mis_weighted", s.strategy_unweighted ? 0 : 1);
+        m.set("mis_heuristic", mis_heuristic_name(s.bdpt.mis_heuristic));
+        if (s.strategy_debug.strategies != 0) m.set("strategies", s.strategy_debug.strategies);  // a STRATEGY_* mask other than the integrator's own
+        if (s.strategy_debug.strategy_s >= 0) {  // one strategy alone (--strategies DIR)
+            m.set("strategy_s", s.strategy_debug.strategy_s);
+            m.set("strategy_t", s.strategy_debug.strategy_t);
+            m.set("mis_weighted", s.strategy_debug.strategy_unweighted ? 0 : 1);
         }
     }
     m.set("max_steps", s.max_steps);

@@ -5,6 +5,7 @@
 
 #include "common/input_error.hpp"
 #include "kernels/host.hpp"
+#include "render/option_words.hpp"
 
 namespace lab::render {
 
@@ -13,24 +14,6 @@ namespace {
 // Images beyond 2^26 pixels are refused up front: the kernels count pixels in an int.
 constexpr long kMaxPixels = 1L << 26;
 
-template <typename Enum, size_t N>
-Enum parse_word(const std::string& text, const std::string& option, const std::pair<const char*, Enum> (&words)[N]) {
-    std::string known;
-    for (const auto& [word, value] : words) {
-        if (text == word) return value;
-        known += std::string(known.empty() ? "" : ", ") + word;
-    }
-    throw InputError(option, "", "unknown value \"" + text + "\" (" + known + ")");
-}
-
-template <typename Enum, size_t N>
-const char* word_of(Enum value, const std::pair<const char*, Enum> (&words)[N]) {
-    for (const auto& [word, v] : words)
-        if (v == value) return word;
-    return "?";
-}
-
-constexpr std::pair<const char*, Integrator> kIntegratorWords[] = {{"pt", Integrator::pt}, {"bdpt", Integrator::bdpt}, {"lt", Integrator::lt}};
 constexpr std::pair<const char*, MisHeuristic> kMisWords[] = {{"balance", MisHeuristic::balance}, {"power", MisHeuristic::power}};
 // The first word of each value is its name; the others are accepted as synonyms.
 constexpr std::pair<const char*, LightSampling> kLightSamplingWords[] = {
@@ -41,14 +24,12 @@ constexpr std::pair<const char*, NormalMethod> kNormalWords[] = {
 
 }  // namespace
 
-Integrator parse_integrator(const std::string& text, const std::string& option) { return parse_word(text, option, kIntegratorWords); }
 MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option) { return parse_word(text, option, kMisWords); }
 const char* mis_heuristic_name(MisHeuristic heuristic) { return word_of(heuristic, kMisWords); }
 NormalMethod parse_normal_method(const std::string& text, const std::string& option) { return parse_word(text, option, kNormalWords); }
 LightSampling parse_light_sampling(const std::string& text, const std::string& option) {
     return parse_word(text, option, kLightSamplingWords);
 }
-const char* integrator_name(Integrator integrator) { return word_of(integrator, kIntegratorWords); }
 const char* light_sampling_name(LightSampling sampling) { return word_of(sampling, kLightSamplingWords); }
 const char* normal_method_name(NormalMethod method) { return word_of(method, kNormalWords); }
 
@@ -61,11 +42,11 @@ void check_render_settings(const RenderSettings& settings) {
                                            " is outside 1x1 .. " + std::to_string(kMaxImageSide) + " a side and 2^26 pixels");
     if (settings.max_depth < 0 || settings.max_depth > 1024)
         throw InputError("--max-depth", "", "must be in [0, 1024], got " + std::to_string(settings.max_depth));
-    if (settings.integrator != Integrator::pt && settings.max_depth > kBdptMaxDepth)
+    if (integrator_descriptor(settings.integrator).bidirectional() && settings.max_depth > kBdptMaxDepth)
         throw InputError("--max-depth", "", std::string(integrator_name(settings.integrator)) + " takes at most " +
                                                 std::to_string(kBdptMaxDepth) + " scattering events, got " + std::to_string(settings.max_depth));
-    if (settings.local_size < 0 || settings.local_size > 4096)
-        throw InputError("local size", "", "must be in [0, 4096], got " + std::to_string(settings.local_size));
+    if (settings.opencl.local_size < 0 || settings.opencl.local_size > 4096)
+        throw InputError("local size", "", "must be in [0, 4096], got " + std::to_string(settings.opencl.local_size));
     if (settings.max_steps < 1 || settings.max_steps > 1 << 20)
         throw InputError("--max-steps", "", "must be in [1, 1048576], got " + std::to_string(settings.max_steps));
     if (!(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f))

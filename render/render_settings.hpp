@@ -1,30 +1,28 @@
 // The settings every renderer takes (image size, path depth, how lights are found, the march and
-// the normals, the seed) and the words the command line gives them.
+// the normals, the seed) and the words the command line gives them; with them, the parts only some
+// readers take: the bidirectional integrators' (render/bdpt_settings.hpp) and the OpenCL
+// renderer's tuning (render/opencl_tuning.hpp).
 #pragma once
 
 #include <cstdint>
 #include <string>
 
+#include "render/bdpt_settings.hpp"
+#include "render/integrator.hpp"
+#include "render/opencl_tuning.hpp"
+
 namespace lab::render {
 
-// Which transport algorithm fills the film. `pt`: the path tracer with next-event estimation
-// (kernels/path_tracer.h); `bdpt`: bidirectional path tracing, every strategy (kernels/bdpt.h);
-// `lt`: light tracing, the same code with only its t = 1 strategies (docs/bdpt.md).
-enum class Integrator { pt, bdpt, lt };
-// BDPT's multiple importance sampling heuristic.
-enum class MisHeuristic { balance, power };
 // How paths find lights (kernels/render_settings.h): BSDF sampling alone, light sampling (next-event
 // estimation) alone, or both by multiple importance sampling.
 enum class LightSampling { bsdf, lights, mis };
 enum class NormalMethod { tetrahedral, central, analytic };
 
 // Parse the command-line words; errors are lab::InputError naming `option`.
-Integrator parse_integrator(const std::string& text, const std::string& option = "--integrator");
 MisHeuristic parse_mis_heuristic(const std::string& text, const std::string& option = "--mis");
 NormalMethod parse_normal_method(const std::string& text, const std::string& option = "--normals");
 // "bsdf" (or "brdf"), "lights" (or "env", the preview's word) and "mis".
 LightSampling parse_light_sampling(const std::string& text, const std::string& option);
-const char* integrator_name(Integrator integrator);
 const char* mis_heuristic_name(MisHeuristic heuristic);
 const char* light_sampling_name(LightSampling sampling);
 const char* normal_method_name(NormalMethod method);
@@ -37,10 +35,6 @@ struct RenderSettings {
     Integrator integrator = Integrator::pt;
     int max_depth = 16;      // scattering events per path, for every integrator (bdpt_max_vertices)
     int roulette_depth = 3;  // Russian roulette from this many events on
-    MisHeuristic mis_heuristic = MisHeuristic::balance;  // bdpt, lt
-    int strategies = 0;      // bdpt, lt: a STRATEGY_* mask of kernels/render_settings.h; 0: the integrator's own
-    int strategy_s = -1, strategy_t = -1;  // bdpt, lt: >= 0: only the strategy (s, t) (--strategies DIR)
-    bool strategy_unweighted = false;      // with strategy_s: without its MIS weight
     LightSampling light_sampling = LightSampling::mis;
     NormalMethod normals = NormalMethod::tetrahedral;
     float normal_step = 5e-4f;     // finite-difference step, scene units
@@ -53,15 +47,9 @@ struct RenderSettings {
     bool show_background = true;   // false: escaping camera rays see black (lighting unchanged)
     bool object_bounds = true;     // box tests skip far objects (scene::CompileOptions; the field is unchanged)
     uint64_t seed = 0;
-    int local_size = 0;               // OpenCL work-group size; 0: the renderer's default (64, or the kernel's maximum)
-    std::string extra_build_options;  // appended to the OpenCL build options (e.g. a -D forcing a cold build)
-    // OpenCL path tracer on a CPU device: the wavefront, whose packet kernels march eight rays at a
-    // time on the vector lanes (kernels/path_tracer_wavefront.h); false, or a GPU: every ray marched
-    // in its path's work-item (the same bits).
-    bool packets = true;
-    // Paths the wavefront keeps in flight: as many samples of every pixel as make up about this many
-    // (at least one); 0: the renderer's default (render/opencl_renderer.cpp). The same bits whatever it is.
-    int wavefront_paths = 0;
+    BdptSettings bdpt;                     // bdpt, lt
+    StrategyDebugSettings strategy_debug;  // bdpt, lt
+    OpenClTuning opencl;                   // the OpenCL renderer only
 };
 
 // The most scattering events a bidirectional path (bdpt, lt) may have: its host build's private

@@ -73,25 +73,7 @@ Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     }
     emission_ = emission_table(compiled_);
     rebuild_lights();
-    check_integrator_lights();
-}
-
-// What a bidirectional integrator cannot render is refused before anything is built or rendered,
-// instead of coming out black.
-void Renderer::check_integrator_lights() const {
-    const Integrator integrator = input_.settings.integrator;
-    if (integrator == Integrator::pt) return;
-    const std::string name = integrator_name(integrator);
-    if (lights_.lights.empty())
-        throw InputError(compiled_.file, "--integrator",
-                         name + " starts its light subpaths on the lights, and the scene has none (no emissive sphere, point light or "
-                                "environment): add one, or give --env");
-    // The lens is never hit from infinity, and light subpaths from the environment start on a disk
-    // of finite radius, which an endless surface outruns (docs/bdpt.md): t = 1 alone misses both.
-    if (integrator == Integrator::lt && input_.environment)
-        throw InputError(compiled_.file, "--integrator",
-                         "lt cannot render an environment light (light tracing never reaches the lens from infinity, nor an endless "
-                         "surface beyond the environment's light disk): use --integrator bdpt or pt");
+    check_integrator_lights(input_.settings.integrator, compiled_.file, !lights_.lights.empty(), input_.environment.has_value());
 }
 
 void Renderer::initialize() {
@@ -112,36 +94,37 @@ scene::CompileOptions Renderer::compile_options() const {
 
 kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int count) const {
     const RenderSettings& s = input_.settings;
-    kernel::RenderKernelSettings k{};
-    k.first_sample = first_sample;
-    k.sample_count = count;
-    k.max_depth = s.max_depth;
-    k.roulette_depth = s.roulette_depth;
-    k.light_sampling = light_sampling_code(s.light_sampling);
-    k.normal_method = normal_code(s.normals);
-    k.normal_step = s.normal_step;
-    k.seed_lo = unsigned(s.seed & 0xffffffffu);
-    k.seed_hi = unsigned(s.seed >> 32);
-    k.max_steps = s.max_steps;
-    k.max_distance = s.max_distance;
-    k.over_relaxation = s.over_relaxation;
-    k.lipschitz = std::max(compiled_.lipschitz, 1.0f);
-    k.light_count = int(lights_.lights.size());
-    k.show_background = s.show_background ? 1 : 0;
-    k.max_vertices = bdpt_max_vertices(s);
-    k.strategies = s.strategies != 0 ? s.strategies : s.integrator == Integrator::lt ? STRATEGY_T1 : STRATEGY_ALL;
-    k.mis_heuristic = s.mis_heuristic == MisHeuristic::power ? MIS_POWER : MIS_BALANCE;
-    k.strategy_only = s.strategy_s >= 0 ? s.strategy_s * 32 + s.strategy_t : -1;
-    k.unweighted = s.strategy_unweighted ? 1 : 0;
-    k.scene_center[0] = compiled_.bounds_center.x;
-    k.scene_center[1] = compiled_.bounds_center.y;
-    k.scene_center[2] = compiled_.bounds_center.z;
-    k.scene_radius = std::max(compiled_.bounds_radius, 1e-3f);
+    kernel::RenderKernelSettings launch_settings{};
+    launch_settings.first_sample = first_sample;
+    launch_settings.sample_count = count;
+    launch_settings.max_depth = s.max_depth;
+    launch_settings.roulette_depth = s.roulette_depth;
+    launch_settings.light_sampling = light_sampling_code(s.light_sampling);
+    launch_settings.normal_method = normal_code(s.normals);
+    launch_settings.normal_step = s.normal_step;
+    launch_settings.seed_lo = unsigned(s.seed & 0xffffffffu);
+    launch_settings.seed_hi = unsigned(s.seed >> 32);
+    launch_settings.max_steps = s.max_steps;
+    launch_settings.max_distance = s.max_distance;
+    launch_settings.over_relaxation = s.over_relaxation;
+    launch_settings.lipschitz = std::max(compiled_.lipschitz, 1.0f);
+    launch_settings.light_count = int(lights_.lights.size());
+    launch_settings.show_background = s.show_background ? 1 : 0;
+    launch_settings.bdpt.max_vertices = bdpt_max_vertices(s);
+    const StrategyDebugSettings& debug = s.strategy_debug;
+    launch_settings.bdpt.strategies = debug.strategies != 0 ? debug.strategies : integrator_descriptor(s.integrator).strategies;
+    launch_settings.bdpt.mis_heuristic = s.bdpt.mis_heuristic == MisHeuristic::power ? MIS_POWER : MIS_BALANCE;
+    launch_settings.bdpt.single_strategy = debug.strategy_s >= 0 ? kernel::bdpt_strategy_code(debug.strategy_s, debug.strategy_t) : -1;
+    launch_settings.bdpt.unweighted = debug.strategy_unweighted ? 1 : 0;
+    launch_settings.bdpt.scene_center[0] = compiled_.bounds_center.x;
+    launch_settings.bdpt.scene_center[1] = compiled_.bounds_center.y;
+    launch_settings.bdpt.scene_center[2] = compiled_.bounds_center.z;
+    launch_settings.bdpt.scene_radius = std::max(compiled_.bounds_radius, 1e-3f);
     for (int i = 0; i < 3; ++i) {
-        k.surface_lo[i] = compiled_.surface_lo[i];
-        k.surface_hi[i] = compiled_.surface_hi[i];
+        launch_settings.surface_lo[i] = compiled_.surface_lo[i];
+        launch_settings.surface_hi[i] = compiled_.surface_hi[i];
     }
-    return k;
+    return launch_settings;
 }
 
 const ibl::Environment& Renderer::bound_environment() const {

@@ -18,6 +18,7 @@
 #include "film/image.hpp"
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
+#include "render/film_readback.hpp"
 #include "render/light_set.hpp"
 #include "render/render_settings.hpp"
 #include "render/sample_ranges.hpp"
@@ -49,12 +50,6 @@ struct RenderStatistics {
 // unless it ends the image, so an OpenCL launch of whole work-groups covers it exactly.
 struct PixelRange {
     int first = 0, count = 0;
-};
-
-// The film as the device holds it (kernels/film.h), read back.
-struct FilmReadback {
-    std::vector<float> accumulation;  // 4 per pixel: sum of finite samples, count of non-finite ones
-    std::vector<float> splat;         // 3 per pixel
 };
 
 class Renderer {
@@ -141,8 +136,8 @@ protected:
     virtual void upload_scene() = 0;
     // A zeroed film (and ray counters) of the current size.
     virtual void clear_film() = 0;
-    // Adds k.sample_count samples to every pixel of the range, the first keyed by k.first_sample; blocks.
-    virtual void launch(const kernel::RenderKernelSettings& k, PixelRange pixels) = 0;
+    // Adds launch_settings.sample_count samples to every pixel of the range, the first keyed by its first_sample; blocks.
+    virtual void launch(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels) = 0;
     virtual FilmReadback read_film() const = 0;
     // Replaces the film's buffers (restore_film has checked their sizes).
     virtual void write_film(const FilmReadback& film) = 0;
@@ -162,7 +157,6 @@ protected:
 
 private:
     void rebuild_lights();
-    void check_integrator_lights() const;
 
     int first_sample_ = 0;    // where a reset film starts
     SampleRanges restored_;   // the samples restore_film put on the film

@@ -63,9 +63,9 @@ TEST_CASE("BDPT: each strategy alone converges to the same image", "[render][bdp
             bool splats = k - s == 1;  // light tracing's paths spread over the film: 16 times the paths for its error
             lab::render::RenderInput input = bdpt_input(c, lab::render::Integrator::bdpt, splats ? 16 : 8);
             input.settings.max_depth = k - 2;
-            input.settings.strategy_s = s;
-            input.settings.strategy_t = k - s;
-            input.settings.strategy_unweighted = true;
+            input.settings.strategy_debug.strategy_s = s;
+            input.settings.strategy_debug.strategy_t = k - s;
+            input.settings.strategy_debug.strategy_unweighted = true;
             input.settings.roulette_depth = 64;  // no Russian roulette: its noise is not the strategy's
             lab::render::HostRenderer renderer(input);
             RenderResult r = render_samples(renderer, splats ? 4096 : s <= 1 ? 64 : 1024);

@@ -22,22 +22,15 @@
 
 #include "kernels/host.hpp"
 #include "render/camera_setup.hpp"
+#include "render/host_kernels.hpp"
 #include "render/host_renderer.hpp"
 #include "render/light_set.hpp"
-#include "scene/field_for_kernel_headers.hpp"
 #include "tests/render_inputs.hpp"
 
-namespace bdpt_mis_test {
-using namespace ::kernel;
-using namespace lab::scene::field_for_kernel_headers;
-#include "sdf/march.h"
-#include "sdf/normals.h"
-#include "kernels/bdpt.h"
-}  // namespace bdpt_mis_test
 
 namespace {
 
-using namespace bdpt_mis_test;
+using namespace lab::render::host_kernels;
 using brdf::float3;
 
 const char* kScene = R"({
@@ -60,11 +53,12 @@ const char* kScene = R"({
 
 struct Fixture {
     lab::render::RenderInput input = render_input(std::nullopt, "constant:0.6,0.7,0.8", 32, lab::render::LightSampling::mis, 0, kScene);
+    lab::render::HostSceneScope scene_scope{input.scene};  // the kernels' distance field is this scene's
     lab::scene::CompiledScene compiled;
     lab::render::LightSet lights;
     std::vector<brdf::float4> emission;
     RenderScene scene{};
-    RenderKernelSettings k{};
+    RenderKernelSettings settings{};
     kernel::Camera camera{};
     MarchSettings march{};
 
@@ -72,7 +66,7 @@ struct Fixture {
         input.settings.integrator = lab::render::Integrator::bdpt;
         input.settings.max_depth = 6;
         input.settings.roulette_depth = 64;  // long paths survive
-        k = lab::render::HostRenderer(input, 1).kernel_settings(0, 1);
+        settings = lab::render::HostRenderer(input, 1).kernel_settings(0, 1);
         compiled = lab::scene::compile_scene(input.scene, lab::scene::CompileOptions{});
         for (brdf::Material& m : compiled.materials) m = brdf::material_clamped(&m);
         lights = lab::render::build_light_set(compiled, &*input.environment, lab::render::LightSelection::uniform);
@@ -81,19 +75,18 @@ struct Fixture {
         scene = render_scene_make(compiled.materials.data(), brdf::measured_tables(), emission.data(), lights.lights.data(),
                                   lights.selection_cdf.data(), lights.light_of_slot.data(), env.map(), env.texels().data(), env.alias().data());
         camera = lab::render::make_camera(compiled.camera, 32, 32, "test");
-        march = render_march_settings(&k);
-        current_scene = &input.scene;
+        march = render_march_settings(&settings);
     }
 };
 
 // Whether the environment's light disk (bdpt_light_subpath: radius R about the scene's centre c,
 // facing the scene from c + R w, rays running along -w up to the march's max distance) reaches p:
 // written out here from the disk's geometry, not taken from the kernel.
-bool disk_reaches(const RenderKernelSettings& k, float3 w, float3 p) {
-    glm::dvec3 d = glm::dvec3(p) - glm::dvec3(k.scene_center[0], k.scene_center[1], k.scene_center[2]);
+bool disk_reaches(const RenderKernelSettings& settings, float3 w, float3 p) {
+    glm::dvec3 d = glm::dvec3(p) - glm::dvec3(settings.bdpt.scene_center[0], settings.bdpt.scene_center[1], settings.bdpt.scene_center[2]);
     double along = glm::dot(d, glm::dvec3(w));
     double across = glm::length(d - along * glm::dvec3(w));
-    return across <= k.scene_radius && along <= k.scene_radius && k.scene_radius - along <= k.max_distance;
+    return across <= settings.bdpt.scene_radius && along <= settings.bdpt.scene_radius && settings.bdpt.scene_radius - along <= settings.max_distance;
 }
 
 // A path x_0 (on a light) .. x_{n-1} (the lens) as strategy (s, t) sees it: light[0..s-1] and
@@ -141,12 +134,12 @@ void split_off(const Fixture& f, const std::vector<PathVertex>& walked, int keep
     }
     // the far end's own densities: the other walk's start
     if (walked_is_camera) {
-        if (!other.empty()) other[0].pdf_fwd = vertex_pdf_light_origin(&f.k, &f.scene, &other[0]);
-        if (other.size() > 1) other[1].pdf_fwd = vertex_pdf_light(&f.k, &f.scene, &other[0], &other[1]);
+        if (!other.empty()) other[0].pdf_fwd = vertex_pdf_light_origin(&f.settings, &f.scene, &other[0]);
+        if (other.size() > 1) other[1].pdf_fwd = vertex_pdf_light(&f.settings, &f.scene, &other[0], &other[1]);
     } else {
-        if (other.size() > 1) other[1].pdf_fwd = vertex_pdf(&f.k, &f.camera, &f.scene, nullptr, &other[0], &other[1]);
+        if (other.size() > 1) other[1].pdf_fwd = vertex_pdf(&f.settings, &f.camera, &f.scene, nullptr, &other[0], &other[1]);
         // the light walk recorded the one before its last vertex for its own continuation, not the lens
-        if (other.size() > 2) other[2].pdf_fwd = vertex_pdf(&f.k, &f.camera, &f.scene, &other[0], &other[1], &other[2]);
+        if (other.size() > 2) other[2].pdf_fwd = vertex_pdf(&f.settings, &f.camera, &f.scene, &other[0], &other[1], &other[2]);
         if (!other.empty()) other[0].pdf_fwd = 0.0f;
         // a light vertex the camera subpath reaches is the emissive surface it hits
         if (!other.empty() && other.back().type == VERTEX_LIGHT) other.back() = as_surface_vertex(f, other.back());
@@ -159,7 +152,7 @@ bool can_make(const Fixture& f, const std::vector<PathVertex>& x, int s, int t) 
     const bool point_light = x0.type == VERTEX_LIGHT && f.scene.lights[x0.index].type == LIGHT_POINT;
     if (s == 1 && t == 1) return false;  // bdpt leaves (1, 1) to (0, 2); these paths are longer
     if (s == 0) return !point_light;
-    if (s >= 2 && x0.type == VERTEX_ENVIRONMENT && !disk_reaches(f.k, x0.p, x[1].p)) return false;
+    if (s >= 2 && x0.type == VERTEX_ENVIRONMENT && !disk_reaches(f.settings, x0.p, x[1].p)) return false;
     if (t == 1) return !x[size_t(s - 1)].delta && x[size_t(s - 1)].type != VERTEX_ENVIRONMENT;
     return !(s >= 2 && x[size_t(s - 1)].delta) && !x[size_t(s)].delta;
 }
@@ -201,8 +194,8 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
     for (const PathVertex& v : x) any_delta = any_delta || v.delta;
     for (int heuristic : {MIS_BALANCE, MIS_POWER})
         for (int mask : {STRATEGY_ALL, STRATEGY_S0 | STRATEGY_S1, STRATEGY_T1, STRATEGY_S1 | STRATEGY_S2 | STRATEGY_T1, STRATEGY_S0 | STRATEGY_S2}) {
-            f.k.mis_heuristic = heuristic;
-            f.k.strategies = mask;
+            f.settings.bdpt.mis_heuristic = heuristic;
+            f.settings.bdpt.strategies = mask;
             double sum = 0.0;
             bool any = false;
             for (int s = 0; s < n; ++s) {
@@ -215,7 +208,7 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
                 for (int i = std::max(0, s - 2); i < s; ++i) split.light[size_t(i)].pdf_rev = 123.0f;
                 for (int i = std::max(0, t - 2); i < t; ++i) split.cam[size_t(i)].pdf_rev = 321.0f;
                 PathVertex sampled = s == 1 ? split.light[0] : split.cam[0];
-                sum += bdpt_mis_weight(&f.k, &f.camera, &f.scene, split.light.data(), split.cam.data(), &sampled, s, t);
+                sum += bdpt_mis_weight(&f.settings, &f.camera, &f.scene, split.light.data(), split.cam.data(), &sampled, s, t);
                 any = true;
             }
             if (!any) continue;
@@ -229,7 +222,7 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
     totals->delta += any_delta ? 1 : 0;
     if (x[0].type == VERTEX_ENVIRONMENT) {
         totals->environment += 1;
-        if (!disk_reaches(f.k, x[0].p, x[1].p)) totals->environment_unreached += 1;
+        if (!disk_reaches(f.settings, x[0].p, x[1].p)) totals->environment_unreached += 1;
     } else if (x[0].type == VERTEX_LIGHT && f.scene.lights[x[0].index].type == LIGHT_POINT) {
         totals->point += 1;
     } else {
@@ -242,14 +235,14 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
 TEST_CASE("BDPT: the MIS weights of all strategies that can make a walked path sum to 1", "[render][bdpt][mis]") {
     Fixture f;
     PathCounters counters{};
-    const int max_vertices = f.k.max_vertices;
+    const int max_vertices = f.settings.bdpt.max_vertices;
     std::vector<PathVertex> cam(static_cast<size_t>(max_vertices)), light(static_cast<size_t>(max_vertices));
     Totals totals;
     for (int sample = 0; sample < 3000; ++sample) {
         const int pixel = (sample * 37) % (32 * 32);
         Rng rng = rng_make(uint(pixel), uint(sample), 5u, 0u);
-        const int n_cam = bdpt_camera_subpath(&f.k, f.march, &f.camera, &f.scene, pixel, &rng, cam.data(), max_vertices, &counters);
-        const int n_light = bdpt_light_subpath(&f.k, f.march, &f.scene, &rng, light.data(), max_vertices - 1, &counters);
+        const int n_cam = bdpt_camera_subpath(&f.settings, f.march, &f.camera, &f.scene, pixel, &rng, cam.data(), max_vertices, &counters);
+        const int n_light = bdpt_light_subpath(&f.settings, f.march, &f.scene, &rng, light.data(), max_vertices - 1, &counters);
         // camera subpaths that end on a light: every prefix that does
         for (int t = 2; t <= n_cam; ++t)
             if (vertex_emits(&f.scene, &cam[size_t(t - 1)])) check_path(f, std::vector<PathVertex>(cam.begin(), cam.begin() + t), true, &totals);

@@ -1,4 +1,4 @@
-// `bench breakdown`'s "environment twice" build (kernels/bench_standins.h, -DBENCH_TWICE_ENVIRONMENT)
+// `bench breakdown`'s "environment twice" build (bench/kernels/part_standins.h, -DBENCH_TWICE_ENVIRONMENT)
 // evaluates every environment sample and pdf a second time and adds it times 0: its figure is the
 // environment's share of the time only if it traces the default build's very paths, with the same
 // result. Checked on the film bits of a sphere under courtyard.exr.
@@ -26,7 +26,7 @@ BenchRender render_bench_build(const lab::scene::Scene& scene, const std::string
     environment.face_size = 32;
     input.environment = lab::ibl::load_environment("envmaps/courtyard.exr", environment);
     input.settings.width = input.settings.height = 16;
-    input.settings.extra_build_options = options;
+    input.settings.opencl.extra_build_options = options;
     const lab::opencl::Runtime runtime("");
     lab::render::OpenClRenderer renderer(runtime, input);
     renderer.add_samples(2);

@@ -27,10 +27,10 @@ private:
         film_.accumulation.assign(4 * pixels, 0.0f);
         film_.splat.assign(3 * pixels, 0.0f);
     }
-    void launch(const kernel::RenderKernelSettings& k, lab::render::PixelRange) override {
+    void launch(const kernel::RenderKernelSettings& settings, lab::render::PixelRange) override {
         if (++launches_ == fail_at_) throw std::runtime_error("clEnqueueNDRangeKernel failed: CL_OUT_OF_RESOURCES (-5)");
         for (size_t p = 0; p < film_.accumulation.size(); p += 4)
-            for (size_t c = 0; c < 3; ++c) film_.accumulation[p + c] += 0.25f * float(k.sample_count);
+            for (size_t c = 0; c < 3; ++c) film_.accumulation[p + c] += 0.25f * float(settings.sample_count);
     }
     lab::render::FilmReadback read_film() const override { return film_; }
     void write_film(const lab::render::FilmReadback& film) override { film_ = film; }

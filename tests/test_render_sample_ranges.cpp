@@ -94,7 +94,7 @@ struct SumTerms {
 SumTerms sum_terms(const lab::render::RenderSettings& s, int samples) {
     SumTerms terms;
     terms.own = samples;
-    if (s.integrator != lab::render::Integrator::pt) terms.splat = double(s.width) * s.height * samples * (lab::render::bdpt_max_vertices(s) - 1);
+    if (lab::render::integrator_descriptor(s.integrator).splats()) terms.splat = double(s.width) * s.height * samples * (lab::render::bdpt_max_vertices(s) - 1);
     return terms;
 }
 
@@ -315,11 +315,11 @@ TEST_CASE("Render metadata: BDPT's vertex limit, MIS heuristic and strategies ar
     CHECK(text(bdpt, "mis_heuristic") == "balance");
     CHECK(text(bdpt, "max_vertices") == std::to_string(lab::render::bdpt_max_vertices(input.settings)));
     CHECK(bdpt.find("strategy_s") == nullptr);  // every strategy of the integrator
-    input.settings.mis_heuristic = lab::render::MisHeuristic::power;
+    input.settings.bdpt.mis_heuristic = lab::render::MisHeuristic::power;
     CHECK(text(metadata_of(input), "mis_heuristic") == "power");
-    input.settings.strategy_s = 2;
-    input.settings.strategy_t = 1;
-    input.settings.strategy_unweighted = true;
+    input.settings.strategy_debug.strategy_s = 2;
+    input.settings.strategy_debug.strategy_t = 1;
+    input.settings.strategy_debug.strategy_unweighted = true;
     const lab::film::ImageMetadata one_strategy = metadata_of(input);
     CHECK(text(one_strategy, "strategy_s") == "2");
     CHECK(text(one_strategy, "strategy_t") == "1");

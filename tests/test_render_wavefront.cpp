@@ -1,5 +1,5 @@
 // The path tracer's CPU wavefront (kernels/path_tracer_wavefront.h) keeps several samples of every
-// pixel in flight on small images (RenderSettings::wavefront_paths) and adds each pixel's paths to
+// pixel in flight on small images (OpenClTuning::wavefront_paths) and adds each pixel's paths to
 // the film in sample order afterwards (render_pt_resolve). Whatever the number in flight, and with
 // the image split into parts (one sample in flight there), the film must hold the bits of the
 // work-item kernel, which traces each pixel's samples one after the other in one work-item, and the
@@ -15,6 +15,7 @@
 #include <cstring>
 #include <string>
 
+#include "bench/wavefront_launch_timer.hpp"
 #include "opencl/runtime.hpp"
 #include "render/opencl_renderer.hpp"
 #include "tests/render_inputs.hpp"
@@ -29,8 +30,8 @@ struct InFlightFilm {
 // `spp` samples in launches of `per_launch` samples (in parts of `part_pixels` pixels, 0: whole).
 InFlightFilm render_in_flight(const lab::opencl::Runtime& runtime, lab::render::RenderInput input, bool packets, int wavefront_paths, int spp, int per_launch,
             int part_pixels) {
-    input.settings.packets = packets;
-    input.settings.wavefront_paths = wavefront_paths;
+    input.settings.opencl.packets = packets;
+    input.settings.opencl.wavefront_paths = wavefront_paths;
     lab::render::OpenClRenderer renderer(runtime, input);
     renderer.set_samples_per_launch(per_launch);
     if (part_pixels > 0) renderer.set_launch_pixels(part_pixels);
@@ -92,7 +93,7 @@ TEST_CASE("Wavefront: any number of samples in flight gives the work-item kernel
     }
 }
 
-// `bench breakdown` times the wavefront's launches by kind (render::WavefrontLaunchTimes). Whatever
+// `bench breakdown` times the wavefront's launches by kind (bench::WavefrontLaunchTimer). Whatever
 // the scene, a launch of samples runs one march of its camera rays (begun in it for a pinhole, after
 // a camera step for a thin lens) and one last step (the one that leaves nothing to march), every
 // scatter step is followed by one march of what it left, and several samples in flight end with one
@@ -122,9 +123,10 @@ TEST_CASE("Wavefront: timed launches are counted by kind and keep the film's bit
         lab::render::OpenClRenderer renderer(runtime, c.input);
         REQUIRE(renderer.wavefront());
         renderer.set_samples_per_launch(per_launch);
-        renderer.time_wavefront_launches(true);
+        lab::bench::WavefrontLaunchTimer timer;
+        renderer.observe_wavefront_launches(&timer);
         renderer.add_samples(spp);
-        const lab::render::WavefrontLaunchTimes t = renderer.wavefront_launch_times();
+        const lab::bench::WavefrontLaunchTimes t = timer.times();
         INFO(c.what << ": camera steps " << t.camera_steps.launches << ", camera marches " << t.camera_marches.launches
                     << ", scatter steps " << t.scatter_steps.launches << ", marches " << t.marches.launches << ", last steps "
                     << t.last_steps.launches << ", resolves " << t.resolves.launches);
@@ -138,8 +140,8 @@ TEST_CASE("Wavefront: timed launches are counted by kind and keep the film's bit
         CHECK(t.scatter_steps.seconds > 0.0);
         CHECK(same_film_bits(renderer.film().accumulation, untimed.film.accumulation));
 
-        renderer.time_wavefront_launches(true);  // starts again at 0
-        CHECK(renderer.wavefront_launch_times().camera_marches.launches == 0);
-        CHECK(renderer.wavefront_launch_times().total() == 0.0);
+        timer.restart();  // starts again at 0
+        CHECK(timer.times().camera_marches.launches == 0);
+        CHECK(timer.times().total() == 0.0);
     }
 }

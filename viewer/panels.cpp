@@ -130,11 +130,11 @@ std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState
         std::snprintf(line, sizeof line, "radiance %.4g %.4g %.4g (%d samples)", L[0], L[1], L[2], frame.samples_per_pixel);
         lines.push_back(line);
     }
-    kernel::RenderKernelSettings k;
-    if (!worker.kernel_settings(&k)) return lines;
+    kernel::RenderKernelSettings launch_settings;
+    if (!worker.kernel_settings(&launch_settings)) return lines;
     try {
         kernel::Camera camera = render::make_camera(ui.view.camera, config.width, config.height, config.scene.file);
-        PixelProbe p = probe_pixel(config.scene, k, camera, x, y);
+        PixelProbe p = probe_pixel(config.scene, launch_settings, camera, x, y);
         if (!p.hit) {
             lines.push_back("no surface: the environment");
             return lines;

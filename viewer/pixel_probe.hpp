@@ -1,6 +1,6 @@
 // The pixel inspector's geometry: the camera ray through a pixel's centre traced on the host with
 // the render core's own single-source code (kernels/camera.h, sdf/march.h, sdf/normals.h through
-// the scene interpreter, as render/host_renderer does), giving what the film does not hold: depth,
+// the scene interpreter: render/host_kernels.hpp), giving what the film does not hold: depth,
 // normal and material slot. Radiance and sample count come from the film.
 #pragma once
 

@@ -158,114 +158,41 @@ void RenderWorker::apply(render::Renderer& renderer, const ViewState& s, const V
     if (!restarted) renderer.reset();  // a state equal to the applied one still restarts: the user asked for it
 }
 
-void RenderWorker::run() {
+struct RenderWorker::Loop {
     std::unique_ptr<render::Renderer> renderer;
-    try {
-        renderer = factory_();
-    } catch (const std::exception& e) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        status_ = "no renderer";
-        error_ = e.what();
-        return;
-    }
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        device_ = renderer->device_description();
-        kernel_settings_ = renderer->kernel_settings(0, 1);
-        status_ = "rendering on " + device_;
-    }
-    ready_.store(true);
-    renderer->set_samples_per_launch(1);  // small launches keep a chunk close to its budget
-
-    ViewState good;              // the last state the renderer accepted
+    ViewState good;  // the last state the renderer accepted
     bool have_good = false;
-    const int width = renderer->settings().width, height = renderer->settings().height;
-    int scale = 1;                // the renderer's size is 1/scale of the full one
-    double pixel_seconds = 0.0;   // one sample of one pixel, measured on the last launches; 0: not yet
-    film::ImageRgb first_pass;    // the last first pass, enlarged: shown where the full size has not reached
+    int width = 0, height = 0;   // the full size
+    int scale = 1;               // the renderer's size is 1/scale of the full one
+    double pixel_seconds = 0.0;  // one sample of one pixel, measured on the last launches; 0: not yet
+    film::ImageRgb first_pass;   // the last first pass, enlarged: shown where the full size has not reached
     int first_pass_scale_shown = 1;
     uint64_t generation = 0, sequence = 0;
-    std::vector<double> row_seconds(size_t(height), 0.0);  // per pixel and sample, by full-size row, as last measured
-    auto measured = [&](double seconds, int pixels) {
+    std::vector<double> row_seconds;  // per pixel and sample, by full-size row, as last measured
+
+    void measured(double seconds, int pixels) {
         if (pixels <= 0) return;
         const double m = seconds / double(pixels);
         // The cost differs across the image (the sky is cheap): follow a dearer launch at once.
         pixel_seconds = pixel_seconds > 0.0 ? std::max(m, 0.5 * (pixel_seconds + m)) : m;
-    };
+    }
+};
+
+void RenderWorker::run() {
+    Loop loop;
+    loop.renderer = make_renderer();
+    if (!loop.renderer) return;
+    loop.renderer->set_samples_per_launch(1);  // small launches keep a chunk close to its budget
+    loop.width = loop.renderer->settings().width;
+    loop.height = loop.renderer->settings().height;
+    loop.row_seconds.assign(size_t(loop.height), 0.0);
     while (!stop_.load()) {
         ViewState next;
         uint64_t next_generation = 0;
-        {
-            std::unique_lock<std::mutex> lock(mutex_);
-            // Rendered out: sleep until something changes.
-            if (generation == pending_generation_ && renderer->samples_per_pixel() >= max_samples_)
-                wake_.wait(lock, [&] { return stop_.load() || generation != pending_generation_; });
-            if (stop_.load()) break;
-            if (generation != pending_generation_) {
-                next = pending_;
-                next_generation = pending_generation_;
-            }
-        }
-        if (next_generation != 0) {
-            try {
-                apply(*renderer, next, have_good ? &good : nullptr);
-                good = next;
-                have_good = true;
-                std::lock_guard<std::mutex> lock(mutex_);
-                error_.clear();
-            } catch (const std::exception& e) {
-                // Keep what was shown: back to the last good state (or stop, when there is none).
-                std::lock_guard<std::mutex> lock(mutex_);
-                error_ = e.what();
-                if (!have_good) {
-                    status_ = "no renderer";
-                    return;
-                }
-                try {
-                    apply(*renderer, good, nullptr);
-                } catch (const std::exception&) {
-                    status_ = "no renderer";
-                    return;
-                }
-            }
-            generation = next_generation;
-            first_pass = film::ImageRgb();
-            const int wanted = first_pass_scale(pixel_seconds, kFirstPassShare * chunk_seconds_.load(), width, height);
-            if (wanted != scale) {
-                renderer->resize(width / wanted, height / wanted);  // resets
-                scale = wanted;
-            }
-        }
+        if (!wait_for_work(loop, &next, &next_generation)) break;
+        if (next_generation != 0 && !take_state(loop, next, next_generation)) return;
         try {
-            const auto chunk_start = std::chrono::steady_clock::now();
-            auto since = [](std::chrono::steady_clock::time_point t) {
-                return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-            };
-            if (scale > 1) {
-                // One whole sample of the small image (it was sized to take part of a chunk).
-                renderer->set_launch_pixels(0);
-                if (renderer->samples_per_pixel() < std::min(kFirstPassSamples, max_samples_)) {
-                    renderer->add_samples(1);
-                    measured(since(chunk_start), renderer->settings().width * renderer->settings().height);
-                }
-            } else {
-                // Launches of part of the image until the chunk is spent, a newer state waits, or the
-                // first full pass is complete; a newer state waits at most one launch.
-                const int first_spp = renderer->samples_per_pixel();
-                while (renderer->samples_per_pixel() < max_samples_) {
-                    const int before = renderer->pass_pixels();
-                    renderer->set_launch_pixels(launch_pixels(row_seconds, pixel_seconds, kLaunchShare * chunk_seconds_.load(), before, width));
-                    const auto launch_start = std::chrono::steady_clock::now();
-                    renderer->add_samples(max_samples_ - renderer->samples_per_pixel(), 0.0);  // one launch
-                    const int after = renderer->pass_pixels(), end = after > before ? after : width * height;
-                    const double seconds = since(launch_start);
-                    measured(seconds, end - before);
-                    for (int row = before / width; row <= (end - 1) / width; ++row) row_seconds[size_t(row)] = seconds / double(end - before);
-                    if (since(chunk_start) >= chunk_seconds_.load() || (first_spp == 0 && renderer->samples_per_pixel() > 0)) break;
-                    std::lock_guard<std::mutex> lock(mutex_);
-                    if (generation != pending_generation_ || stop_.load()) break;
-                }
-            }
+            render_chunk(loop);
         } catch (const std::exception& e) {
             std::lock_guard<std::mutex> lock(mutex_);
             error_ = std::string("render failed: ") + e.what();
@@ -274,36 +201,141 @@ void RenderWorker::run() {
         }
         {
             std::lock_guard<std::mutex> lock(mutex_);
-            if (generation != pending_generation_) continue;  // not worth showing: apply the newer state first
+            if (loop.generation != pending_generation_) continue;  // not worth showing: apply the newer state first
         }
-        film::ImageRgb image = renderer->image();  // outside the lock: the interface keeps drawing
-        int shown_scale = scale;
-        if (scale > 1) {
-            image = enlarged(image, width, height);
-            first_pass = image;
-            first_pass_scale_shown = scale;
-        } else if (renderer->samples_per_pixel() == 0 && first_pass.valid()) {
-            show_first_pass_beyond(&image, first_pass, renderer->pass_pixels());
-            shown_scale = first_pass_scale_shown;
-        }
-        render::RenderStatistics stats = renderer->statistics();
-        if (scale > 1 && stats.samples_per_pixel >= std::min(kFirstPassSamples, max_samples_)) {
-            try {
-                renderer->resize(width, height);  // the full size from the next chunk on, on a film of its own
-                scale = 1;
-            } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(mutex_);
-                error_ = e.what();
-            }
-        }
-        std::lock_guard<std::mutex> lock(mutex_);
-        published_.scale = shown_scale;
-        published_.image = std::move(image);
-        published_.samples_per_pixel = stats.samples_per_pixel;
-        published_.samples_per_second = stats.paths_per_second();
-        published_.generation = generation;
-        published_.sequence = ++sequence;
+        publish(loop);
     }
+}
+
+std::unique_ptr<render::Renderer> RenderWorker::make_renderer() {
+    std::unique_ptr<render::Renderer> renderer;
+    try {
+        renderer = factory_();
+    } catch (const std::exception& e) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        status_ = "no renderer";
+        error_ = e.what();
+        return nullptr;
+    }
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        device_ = renderer->device_description();
+        kernel_settings_ = renderer->kernel_settings(0, 1);
+        status_ = "rendering on " + device_;
+    }
+    ready_.store(true);
+    return renderer;
+}
+
+bool RenderWorker::wait_for_work(const Loop& loop, ViewState* next, uint64_t* next_generation) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    // Rendered out: sleep until something changes.
+    if (loop.generation == pending_generation_ && loop.renderer->samples_per_pixel() >= max_samples_)
+        wake_.wait(lock, [&] { return stop_.load() || loop.generation != pending_generation_; });
+    if (stop_.load()) return false;
+    if (loop.generation != pending_generation_) {
+        *next = pending_;
+        *next_generation = pending_generation_;
+    }
+    return true;
+}
+
+bool RenderWorker::take_state(Loop& loop, const ViewState& next, uint64_t next_generation) {
+    render::Renderer& renderer = *loop.renderer;
+    try {
+        apply(renderer, next, loop.have_good ? &loop.good : nullptr);
+        loop.good = next;
+        loop.have_good = true;
+        std::lock_guard<std::mutex> lock(mutex_);
+        error_.clear();
+    } catch (const std::exception& e) {
+        // Keep what was shown: back to the last good state (or stop, when there is none).
+        std::lock_guard<std::mutex> lock(mutex_);
+        error_ = e.what();
+        if (!loop.have_good) {
+            status_ = "no renderer";
+            return false;
+        }
+        try {
+            apply(renderer, loop.good, nullptr);
+        } catch (const std::exception&) {
+            status_ = "no renderer";
+            return false;
+        }
+    }
+    loop.generation = next_generation;
+    loop.first_pass = film::ImageRgb();
+    const int wanted = first_pass_scale(loop.pixel_seconds, kFirstPassShare * chunk_seconds_.load(), loop.width, loop.height);
+    if (wanted != loop.scale) {
+        renderer.resize(loop.width / wanted, loop.height / wanted);  // resets
+        loop.scale = wanted;
+    }
+    return true;
+}
+
+void RenderWorker::render_chunk(Loop& loop) {
+    render::Renderer& renderer = *loop.renderer;
+    const auto chunk_start = std::chrono::steady_clock::now();
+    auto since = [](std::chrono::steady_clock::time_point t) {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
+    if (loop.scale > 1) {
+        // One whole sample of the small image (it was sized to take part of a chunk).
+        renderer.set_launch_pixels(0);
+        if (renderer.samples_per_pixel() < std::min(kFirstPassSamples, max_samples_)) {
+            renderer.add_samples(1);
+            loop.measured(since(chunk_start), renderer.settings().width * renderer.settings().height);
+        }
+        return;
+    }
+    // Launches of part of the image until the chunk is spent, a newer state waits, or the first
+    // full pass is complete; a newer state waits at most one launch.
+    const int width = loop.width;
+    const int first_spp = renderer.samples_per_pixel();
+    while (renderer.samples_per_pixel() < max_samples_) {
+        const int before = renderer.pass_pixels();
+        renderer.set_launch_pixels(launch_pixels(loop.row_seconds, loop.pixel_seconds, kLaunchShare * chunk_seconds_.load(), before, width));
+        const auto launch_start = std::chrono::steady_clock::now();
+        renderer.add_samples(max_samples_ - renderer.samples_per_pixel(), 0.0);  // one launch
+        const int after = renderer.pass_pixels(), end = after > before ? after : width * loop.height;
+        const double seconds = since(launch_start);
+        loop.measured(seconds, end - before);
+        for (int row = before / width; row <= (end - 1) / width; ++row) loop.row_seconds[size_t(row)] = seconds / double(end - before);
+        if (since(chunk_start) >= chunk_seconds_.load() || (first_spp == 0 && renderer.samples_per_pixel() > 0)) break;
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (loop.generation != pending_generation_ || stop_.load()) break;
+    }
+}
+
+void RenderWorker::publish(Loop& loop) {
+    render::Renderer& renderer = *loop.renderer;
+    film::ImageRgb image = renderer.image();  // outside the lock: the interface keeps drawing
+    int shown_scale = loop.scale;
+    if (loop.scale > 1) {
+        image = enlarged(image, loop.width, loop.height);
+        loop.first_pass = image;
+        loop.first_pass_scale_shown = loop.scale;
+    } else if (renderer.samples_per_pixel() == 0 && loop.first_pass.valid()) {
+        show_first_pass_beyond(&image, loop.first_pass, renderer.pass_pixels());
+        shown_scale = loop.first_pass_scale_shown;
+    }
+    render::RenderStatistics stats = renderer.statistics();
+    if (loop.scale > 1 && stats.samples_per_pixel >= std::min(kFirstPassSamples, max_samples_)) {
+        try {
+            renderer.resize(loop.width, loop.height);  // the full size from the next chunk on, on a film of its own
+            loop.scale = 1;
+        } catch (const std::exception& e) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            error_ = e.what();
+        }
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    published_.scale = shown_scale;
+    published_.image = std::move(image);
+    published_.samples_per_pixel = stats.samples_per_pixel;
+    published_.samples_per_second = stats.paths_per_second();
+    published_.generation = loop.generation;
+    published_.sequence = ++loop.sequence;
 }
 
 }  // namespace lab::viewer

@@ -62,7 +62,22 @@ public:
     bool kernel_settings(kernel::RenderKernelSettings* out) const;
 
 private:
+    // What the worker's thread keeps between chunks (render_worker.cpp).
+    struct Loop;
+
     void run();
+    // Makes the renderer and tells the interface its device; null (with the error) on failure.
+    std::unique_ptr<render::Renderer> make_renderer();
+    // Sleeps while rendered out and nothing changes; a newer state into *next (its generation, or
+    // 0 when none waits). False: stop.
+    bool wait_for_work(const Loop& loop, ViewState* next, uint64_t* next_generation);
+    // Applies a newer state, back to the last good one when it fails, and picks the first pass's
+    // scale. False: no state can be rendered.
+    bool take_state(Loop& loop, const ViewState& next, uint64_t next_generation);
+    // A chunk of samples: one whole sample of the small first pass, or launches of part of the full image.
+    void render_chunk(Loop& loop);
+    // The image as it is now, and the statistics, for the interface; the full size after the first pass.
+    void publish(Loop& loop);
     void apply(render::Renderer& renderer, const ViewState& state, const ViewState* applied);
 
     RendererFactory factory_;

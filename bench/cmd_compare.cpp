@@ -4,7 +4,7 @@
 // writes into its EXR (dtoadq:spp and dtoadq:seconds, which every build with the render core
 // writes), so the other build needs no new option to be measured. The median of the repeats is
 // reported, and the median of each repeat's own ratio with its range.
-// Then the same for `bench objects`' grids of N objects (cli/bench_grid.hpp), written as scene
+// Then the same for `bench objects`' grids of N objects (bench/grid.hpp), written as scene
 // files for both builds: the cost per path of one more object in each build, fitted over N, and
 // their ratio.
 // Figures, not timed tests.
@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "cli/bench_grid.hpp"
+#include "bench/grid.hpp"
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
 #include "film/image_metadata.hpp"

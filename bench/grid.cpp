@@ -1,4 +1,4 @@
-#include "cli/bench_grid.hpp"
+#include "bench/grid.hpp"
 
 #include <string>
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/bench_convergence.hpp"
+#include "bench/convergence.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -38,7 +38,7 @@ void run_bench_preview(const BenchPreviewCommand& c) {
 
     // Cold: a source no cache has seen (a fresh -D); warm: the very same build again.
     render::RenderInput cold_input = job.input;
-    cold_input.settings.extra_build_options = "-DDTOADQ_BENCH_NONCE=" + std::to_string(std::random_device{}());
+    cold_input.settings.opencl.extra_build_options = "-DDTOADQ_BENCH_NONCE=" + std::to_string(std::random_device{}());
     double cold = make(cold_input)->build_seconds();
     double warm = make(cold_input)->build_seconds();
     std::printf("kernel build: cold %.3f s, warm %.3f s (PoCL kernel cache; cold/warm %.1fx)\n", cold, warm, cold / warm);

@@ -1,12 +1,12 @@
 // dtoadq bench breakdown: where the path tracer's time goes, per scene. (1) March work: rays per
-// path, march steps per ray, distance functions evaluated per step (render/march_work.hpp). (2) Parts:
+// path, march steps per ray, distance functions evaluated per step (bench/march_cost.hpp). (2) Parts:
 // paths/s with the random numbers, the environment's importance sampling or the BSDF replaced by a
-// nearly free stand-in (kernels/bench_standins.h), against the default build, interleaved in one
+// nearly free stand-in (bench/kernels/part_standins.h), against the default build, interleaved in one
 // run; 1 - default/stand-in is the part's share of the time, as far as the stand-in keeps the
 // paths alike (its rays per path are printed next to it); and the environment's part done twice,
 // on the very same paths: default/twice - 1 is its share without that proviso. (3) The wavefront's
 // launches (a CPU device): each kind's share of the time and microseconds per sample, the host
-// waiting for every launch (render/opencl_renderer.hpp, WavefrontLaunchTimes). (4) Work-group size:
+// waiting for every launch (bench/wavefront_launch_timer.hpp). (4) Work-group size:
 // paths/s per local size against the default 64. Figures, not timed tests: every ratio is measured
 // within the run.
 #include <algorithm>
@@ -17,8 +17,9 @@
 #include <utility>
 #include <vector>
 
-#include "cli/bench_convergence.hpp"
-#include "render/march_work.hpp"
+#include "bench/convergence.hpp"
+#include "bench/march_cost.hpp"
+#include "bench/wavefront_launch_timer.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -85,14 +86,16 @@ void print_launch_times(const opencl::Runtime& runtime, const render::RenderInpu
         return;
     }
     warm_up_launch_shapes(renderer);
-    renderer.time_wavefront_launches(true);
+    bench::WavefrontLaunchTimer timer;
+    renderer.observe_wavefront_launches(&timer);
     render_for(renderer, seconds, [](double) {});
-    const render::WavefrontLaunchTimes& t = renderer.wavefront_launch_times();
+    renderer.observe_wavefront_launches(nullptr);
+    const bench::WavefrontLaunchTimes& t = timer.times();
     const int samples = renderer.statistics().samples_per_pixel;
     const double total = t.total();
     if (samples <= 0 || !(total > 0.0)) return;
     std::printf("  launches, share of the time and us per sample (%d samples, the host waiting for each):\n", samples);
-    const std::pair<const char*, const render::WavefrontLaunchTimes::Kind*> kinds[] = {
+    const std::pair<const char*, const bench::WavefrontLaunchTimes::Kind*> kinds[] = {
         {"camera steps", &t.camera_steps}, {"camera rays' packets", &t.camera_marches}, {"scatter steps", &t.scatter_steps},
         {"rays' and shadow rays' packets", &t.marches}, {"last steps", &t.last_steps}, {"resolves", &t.resolves}};
     for (const auto& [name, kind] : kinds)
@@ -117,7 +120,7 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         if (!scene.environment && scene.emitters.empty() && scene.point_lights.empty()) o.default_env = "envmaps/courtyard.exr";
         RenderJob job = prepare_render_job(o);
         std::printf("\n%s\n", fs::path(file).filename().string().c_str());
-        render::MarchWork w = render::count_march_work(runtime, job.input, c.count_samples);
+        bench::MarchCost w = bench::measure_march_cost(runtime, job.input, c.count_samples);
         std::printf("  rays/path %.2f, march steps/ray %.1f, distance evaluations/step %.2f%s\n", w.rays_per_path, w.steps_per_ray,
                     w.evaluations_per_step, w.same_film ? "" : " (the counting build's film differs: figures doubtful)");
 
@@ -125,10 +128,10 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         std::vector<render::RenderInput> variants{job.input};
         for (const std::string& part : parts) {
             variants.push_back(job.input);
-            variants.back().settings.extra_build_options += std::string(" -DBENCH_STANDIN_") + part;
+            variants.back().settings.opencl.extra_build_options += std::string(" -DBENCH_STANDIN_") + part;
         }
         variants.push_back(job.input);
-        variants.back().settings.extra_build_options += " -DBENCH_TWICE_ENVIRONMENT";
+        variants.back().settings.opencl.extra_build_options += " -DBENCH_TWICE_ENVIRONMENT";
         std::vector<Speed> s = interleaved(runtime, variants, c);
         std::printf("  default: %.3g paths/s, %.2f rays/path\n", s[0].paths_per_second, s[0].rays_per_path);
         // the share from rays/s: a stand-in that changes the path length (the grey Lambert BSDF) changes paths/s for that too
@@ -147,7 +150,7 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         std::vector<render::RenderInput> sizes{job.input};
         for (int l : c.local_sizes) {
             sizes.push_back(job.input);
-            sizes.back().settings.local_size = l;
+            sizes.back().settings.opencl.local_size = l;
         }
         std::vector<Speed> t = interleaved(runtime, sizes, c);
         std::printf("  work-group size, paths/s against 64:");

@@ -1,4 +1,4 @@
-// dtoadq bench: performance figures (`bench preview`: cli/cmd_bench_preview.cpp). `bench brdf` times bsdf_eval, bsdf_pdf and bsdf_sample in the
+// dtoadq bench: performance figures (each subcommand in a file of bench/, registered here). `bench brdf` times bsdf_eval, bsdf_pdf and bsdf_sample in the
 // C++ build (one thread and all threads) and in the OpenCL build, and prints how much each preset's
 // own sampler reduces variance against cosine-weighted sampling.
 #include <algorithm>

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/bench_convergence.hpp"
-#include "cli/bench_grid.hpp"
+#include "bench/convergence.hpp"
+#include "bench/grid.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"

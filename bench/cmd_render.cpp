@@ -1,6 +1,6 @@
 // dtoadq bench render: the render core's figures per bundled scene. Paths/s and rays/s of the path
 // tracer on the OpenCL device and of the same integrator built as C++ on the host's threads, as a
-// ratio, with march steps per ray and distance evaluations per step (render/march_work.hpp); and
+// ratio, with march steps per ray and distance evaluations per step (bench/march_cost.hpp); and
 // on the scenes where the choice matters (the Cornell box, Veach's MIS scene) the equal-time error of next-event estimation with MIS against BSDF sampling alone (what the
 // preview did before the render core) and light sampling alone, against a long reference. Then,
 // on the scenes of --integrators (the Cornell box, the caustic), the equal-time error of bdpt and lt
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/bench_convergence.hpp"
-#include "render/march_work.hpp"
+#include "bench/convergence.hpp"
+#include "bench/march_cost.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -95,12 +95,12 @@ void run_bench_render(const BenchRenderCommand& c) {
         RenderJob job = scene_job(c.job, file);
         std::unique_ptr<render::Renderer> device = on_device(job.input);
         render::RenderStatistics d = measure(*device, c.throughput_seconds);
-        render::MarchWork work = render::count_march_work(runtime, job.input, 1);
+        bench::MarchCost work = bench::measure_march_cost(runtime, job.input, 1);
         render::HostRenderer host(job.input);
         render::RenderStatistics h = measure(host, c.throughput_seconds);
         double bidirectional[2] = {0.0, 0.0};
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt}) {
-            if (integrator == render::Integrator::lt && job.input.environment) continue;  // lt refuses an environment
+            if (!render::integrator_descriptor(integrator).renders_environment() && job.input.environment) continue;
             render::RenderInput input = job.input;
             input.settings.integrator = integrator;
             std::unique_ptr<render::Renderer> r = on_device(input);
@@ -132,7 +132,7 @@ void run_bench_render(const BenchRenderCommand& c) {
         std::string name = fs::path(file).stem().string();
         std::vector<EqualTimeRun> runs;
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::pt}) {
-            if (integrator == render::Integrator::lt && job.input.environment) continue;  // lt refuses an environment
+            if (!render::integrator_descriptor(integrator).renders_environment() && job.input.environment) continue;
             EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
             run.input.settings.integrator = integrator;
             runs.push_back(std::move(run));

@@ -6,8 +6,8 @@
  * parts it replaces, so only the path tracer's own calls are redirected. A stand-in changes the
  * random numbers or the light transport, so the paths differ (the bench prints rays per path of
  * each build next to its paths/s); never for images. */
-#ifndef KERNELS_BENCH_STANDINS_H
-#define KERNELS_BENCH_STANDINS_H
+#ifndef BENCH_KERNELS_PART_STANDINS_H
+#define BENCH_KERNELS_PART_STANDINS_H
 
 #include "single_source/vocabulary.h"
 #include "brdf/bsdf.h"

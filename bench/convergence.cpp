@@ -1,4 +1,4 @@
-#include "cli/bench_convergence.hpp"
+#include "bench/convergence.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -7,9 +7,9 @@
 #include "opencl/runtime.hpp"
 #include "render/renderer.hpp"
 
-namespace lab::render {
+namespace lab::bench {
 
-struct MarchWork {
+struct MarchCost {
     double rays_per_path = 0.0;
     double steps_per_ray = 0.0;         // distance-field evaluations of the marches (normals not included)
     double evaluations_per_step = 0.0;  // objects' and emitters' distance functions per march step
@@ -17,6 +17,6 @@ struct MarchWork {
 };
 
 // Renders `samples` samples per pixel of `input` twice (default and counting builds).
-MarchWork count_march_work(const opencl::Runtime& runtime, RenderInput input, int samples);
+MarchCost measure_march_cost(const opencl::Runtime& runtime, render::RenderInput input, int samples);
 
-}  // namespace lab::render
+}  // namespace lab::bench

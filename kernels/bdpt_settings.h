@@ -1,0 +1,57 @@
+/* What only the bidirectional kernels (kernels/bdpt.h) read: their part of the render settings, and
+ * their connection strategies. Strategy (s, t) joins s light-subpath vertices to t camera-subpath
+ * vertices. Which of them a render adds up is a mask of STRATEGY_* (BdptKernelSettings.strategies):
+ * bdpt takes them all, the light tracer `lt` only t = 1 (docs/bdpt.md; each integrator's mask is its
+ * entry of render/integrator.cpp). */
+#ifndef KERNELS_BDPT_SETTINGS_H
+#define KERNELS_BDPT_SETTINGS_H
+#include "single_source/vocabulary.h"
+
+#define STRATEGY_S0 1      /* s = 0: the camera subpath reaches a light */
+#define STRATEGY_S1 2      /* s = 1, t >= 2: a light sample joined to a camera vertex */
+#define STRATEGY_S2 4      /* s >= 2, t >= 2: two subpath vertices joined by a visibility march */
+#define STRATEGY_T1 8      /* t = 1: a light-subpath vertex joined to the lens, splatted */
+#define STRATEGY_ALL 15
+
+/* The most vertices of a bidirectional path (max_depth + 2): the size of the host build's private
+ * vertex arrays (kernels/bdpt_vertex.h); an OpenCL build sizes them to its own max_vertices. */
+#define BDPT_VERTEX_LIMIT 64
+
+#define MIS_BALANCE 0
+#define MIS_POWER 1
+
+/* Plain 4-byte scalars only: a member of RenderKernelSettings, which travels by value. */
+typedef struct BdptKernelSettings {
+    int max_vertices;     /* s + t at most: max_depth + 2, the lens, max_depth scattering events and the light */
+    int strategies;       /* STRATEGY_* mask */
+    int mis_heuristic;    /* MIS_* */
+    int single_strategy;  /* >= 0: add only the strategy of this bdpt_strategy_code, weighted by the mask's MIS
+                             (--strategies DIR); -1: every strategy of the mask */
+    int unweighted;       /* 1: with single_strategy, its contribution without the MIS weight */
+    float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
+    float scene_radius;
+} BdptKernelSettings;
+
+/* Whether strategy (s, t) belongs to the mask. */
+SS_FN bool bdpt_strategy_enabled(int mask, int s, int t) {
+    if (t == 1) return (mask & STRATEGY_T1) != 0;
+    if (t < 1) return false; /* the lens is never hit */
+    if (s == 0) return (mask & STRATEGY_S0) != 0;
+    if (s == 1) return (mask & STRATEGY_S1) != 0;
+    return (mask & STRATEGY_S2) != 0;
+}
+
+/* Whether a render with the mask adds strategy (s, t): (1, 1), the lens joined to a light, and
+ * (0, 2) make the same paths (a light seen directly) with weight 1 each, so (1, 1) only runs where
+ * (0, 2) cannot. */
+SS_FN bool bdpt_strategy_runs(int mask, int s, int t) {
+    if (s == 1 && t == 1 && bdpt_strategy_enabled(mask, 0, 2)) return false;
+    return bdpt_strategy_enabled(mask, s, t);
+}
+
+/* One number per strategy, s * 32 + t (t < 32: a path has at most BDPT_VERTEX_LIMIT vertices, and
+ * t = 0 never runs): BdptKernelSettings.single_strategy names the one strategy a render adds
+ * alone, and 1 + the code is the random-number stream of the strategy's own light and lens samples. */
+SS_FN int bdpt_strategy_code(int s, int t) { return s * 32 + t; }
+
+#endif

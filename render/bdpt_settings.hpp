@@ -1,0 +1,22 @@
+// The settings only the bidirectional integrators read (bdpt, lt: kernels/bdpt.h), and the views
+// into their strategies for looking at the estimator rather than rendering an image.
+#pragma once
+
+namespace lab::render {
+
+// BDPT's multiple importance sampling heuristic (its command-line words: render/render_settings.hpp).
+enum class MisHeuristic { balance, power };
+
+struct BdptSettings {
+    MisHeuristic mis_heuristic = MisHeuristic::balance;
+};
+
+// The strategies apart (--strategies DIR, the tests of the estimator): other masks than the
+// integrator's, one strategy alone, a strategy without its MIS weight.
+struct StrategyDebugSettings {
+    int strategies = 0;                    // a STRATEGY_* mask of kernels/bdpt_settings.h; 0: the integrator's own
+    int strategy_s = -1, strategy_t = -1;  // >= 0: only the strategy (s, t)
+    bool strategy_unweighted = false;      // with strategy_s: without its MIS weight
+};
+
+}  // namespace lab::render
