@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bench/convergence.hpp"
+#include "bench/part_build.hpp"
 #include "bench/march_cost.hpp"
 #include "bench/wavefront_launch_timer.hpp"
 #include "cli/commands.hpp"
@@ -128,10 +129,10 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
         std::vector<render::RenderInput> variants{job.input};
         for (const std::string& part : parts) {
             variants.push_back(job.input);
-            variants.back().settings.opencl.extra_build_options += std::string(" -DBENCH_STANDIN_") + part;
+            bench::use_part_build(variants.back().settings.opencl, "BENCH_STANDIN_" + part);
         }
         variants.push_back(job.input);
-        variants.back().settings.opencl.extra_build_options += " -DBENCH_TWICE_ENVIRONMENT";
+        bench::use_part_build(variants.back().settings.opencl, "BENCH_TWICE_ENVIRONMENT");
         std::vector<Speed> s = interleaved(runtime, variants, c);
         std::printf("  default: %.3g paths/s, %.2f rays/path\n", s[0].paths_per_second, s[0].rays_per_path);
         // the share from rays/s: a stand-in that changes the path length (the grey Lambert BSDF) changes paths/s for that too

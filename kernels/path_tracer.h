@@ -20,7 +20,6 @@
 #include "kernels/path.h"
 #include "kernels/render_scene.h"
 #include "kernels/rng.h"
-#include "bench/kernels/part_standins.h" /* nothing unless a BENCH_STANDIN_* measurement build */
 
 /* The MIS weight of a light reached by a ray sampled from the BSDF with solid-angle density
  * `bsdf_pdf`: 1 after a delta event (no light sample could have made it) or with BSDF sampling

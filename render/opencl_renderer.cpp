@@ -53,7 +53,8 @@ void OpenClRenderer::build_kernel() {
     // option); the lights keep their kinds once built (Renderer::rebuild_lights changes an
     // environment's rotation and exposure only)
     build_options_ = options + " -DSCENE_LIGHT_TYPES=" + std::to_string(light_type_mask(lights_));
-    opencl::Program program = runtime_.build(kernels::assemble_scene_kernel(integrator.program, compiled_), build_options_);
+    const std::string entry = s.opencl.program.empty() ? integrator.program : s.opencl.program;
+    opencl::Program program = runtime_.build(kernels::assemble_scene_kernel(entry, compiled_), build_options_);
     kernels::check_material_layout(runtime_, program);
     opencl::KernelHandle kernel = program.kernel(integrator.kernel);
     size_t kernel_max = 0;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 
+#include "bench/part_build.hpp"
 #include "opencl/runtime.hpp"
 #include "render/opencl_renderer.hpp"
 #include "scene/load_scene.hpp"
@@ -14,19 +15,20 @@
 
 namespace {
 
-// 2 samples of `scene` at 16x16 under courtyard.exr (face 32), with `options` added to the build.
+// 2 samples of `scene` at 16x16 under courtyard.exr (face 32): the default build, or with `define`, the
+// part build that defines it.
 struct BenchRender {
     lab::render::FilmReadback film;
     uint64_t rays = 0;
 };
-BenchRender render_bench_build(const lab::scene::Scene& scene, const std::string& options) {
+BenchRender render_bench_build(const lab::scene::Scene& scene, const std::string& define) {
     lab::render::RenderInput input;
     input.scene = scene;
     lab::ibl::EnvironmentOptions environment;
     environment.face_size = 32;
     input.environment = lab::ibl::load_environment("envmaps/courtyard.exr", environment);
     input.settings.width = input.settings.height = 16;
-    input.settings.opencl.extra_build_options = options;
+    if (!define.empty()) lab::bench::use_part_build(input.settings.opencl, define);
     const lab::opencl::Runtime runtime("");
     lab::render::OpenClRenderer renderer(runtime, input);
     renderer.add_samples(2);
@@ -37,7 +39,7 @@ BenchRender render_bench_build(const lab::scene::Scene& scene, const std::string
 
 TEST_CASE("Bench: the environment-twice build gives the default build's film bits", "[render][bench][opencl]") {
     const lab::scene::Scene sphere = lab::scene::load_scene("tools/bench_scenes/sphere.json");
-    const BenchRender plain = render_bench_build(sphere, ""), twice = render_bench_build(sphere, "-DBENCH_TWICE_ENVIRONMENT");
+    const BenchRender plain = render_bench_build(sphere, ""), twice = render_bench_build(sphere, "BENCH_TWICE_ENVIRONMENT");
     CHECK(plain.rays == twice.rays);
     CHECK(plain.film.accumulation == twice.film.accumulation);
     CHECK(plain.film.splat == twice.film.splat);
@@ -50,5 +52,5 @@ TEST_CASE("Bench: the environment-twice build gives the default build's film bit
 // Lambert, its film must differ; such a stand-in fails this check.
 TEST_CASE("Bench: the BSDF stand-in build replaces the path tracer's BSDF", "[render][bench][opencl]") {
     const lab::scene::Scene model = lab::scene::load_test_model();
-    CHECK(render_bench_build(model, "").film.accumulation != render_bench_build(model, "-DBENCH_STANDIN_BSDF").film.accumulation);
+    CHECK(render_bench_build(model, "").film.accumulation != render_bench_build(model, "BENCH_STANDIN_BSDF").film.accumulation);
 }

@@ -2,8 +2,9 @@
  * build with -DBENCH_STANDIN_RNG, _ENVIRONMENT or _BSDF replaces that part by something nearly free,
  * and the change in paths/s against the default build, in the same run, bounds the part's share of
  * the time. -DBENCH_TWICE_ENVIRONMENT instead does the environment's part twice, keeping the paths
- * (see there). The default build defines nothing here. Included by kernels/path_tracer.h after the
- * parts it replaces, so only the path tracer's own calls are redirected. A stand-in changes the
+ * (see there). Included only by the measurement builds' program, bench/kernels/path_tracer_standins.cl,
+ * before kernels/path_tracer.h: it first includes every header kernels/path_tracer.h includes, so
+ * that, by their include guards, only the path tracer's own calls are redirected. A stand-in changes the
  * random numbers or the light transport, so the paths differ (the bench prints rays per path of
  * each build next to its paths/s); never for images. */
 #ifndef BENCH_KERNELS_PART_STANDINS_H
@@ -12,7 +13,12 @@
 #include "single_source/vocabulary.h"
 #include "brdf/bsdf.h"
 #include "brdf/warp.h"
+#include "ibl/environment.h"
+#include "kernels/camera.h"
 #include "kernels/lights/light_selection.h"
+#include "kernels/mis.h"
+#include "kernels/path.h"
+#include "kernels/render_scene.h"
 #include "kernels/rng.h"
 
 #ifdef BENCH_STANDIN_RNG
