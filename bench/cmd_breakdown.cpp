@@ -18,8 +18,9 @@
 #include <vector>
 
 #include "bench/convergence.hpp"
-#include "bench/part_build.hpp"
 #include "bench/march_cost.hpp"
+#include "bench/part_build.hpp"
+#include "bench/timed_runs.hpp"
 #include "bench/wavefront_launch_timer.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
@@ -106,8 +107,8 @@ void print_launch_times(const opencl::Runtime& runtime, const render::RenderInpu
 }
 
 void run_bench_breakdown(const BenchBreakdownCommand& c) {
-    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
-    if (c.repeats < 1 || c.repeats > 100) throw InputError("--repeats", "", "must be in [1, 100]");
+    check_render_seconds(c.seconds);
+    check_repeats(c.repeats);
     for (int l : c.local_sizes)
         if (l < 1 || l > 4096) throw InputError("--local-sizes", "", "each size must be in [1, 4096]");
     opencl::Runtime runtime(c.job.device);

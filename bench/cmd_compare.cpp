@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "bench/grid.hpp"
+#include "bench/timed_runs.hpp"
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
 #include "film/image_metadata.hpp"
@@ -100,8 +101,8 @@ double median(std::vector<double> v) {
 
 void run_bench_compare(const BenchCompareCommand& c) {
     if (::access(c.other.c_str(), X_OK) != 0) throw InputError(c.other, "", "is not an executable file");
-    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
-    if (c.repeats < 1 || c.repeats > 100) throw InputError("--repeats", "", "must be in [1, 100]");
+    check_render_seconds(c.seconds);
+    check_repeats(c.repeats);
     for (int n : c.object_counts)
         if (n < 1 || n > 4096) throw InputError("--object-counts", "", "each count must be in [1, 4096]");
     std::string self = fs::read_symlink("/proc/self/exe").string();

@@ -14,6 +14,7 @@
 
 #include "bench/convergence.hpp"
 #include "bench/grid.hpp"
+#include "bench/timed_runs.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -54,8 +55,8 @@ void off_on(const opencl::Runtime& runtime, const render::RenderInput& input, co
 }
 
 void run_bench_objects(const BenchObjectsCommand& c) {
-    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
-    if (c.repeats < 1 || c.repeats > 100) throw InputError("--repeats", "", "must be in [1, 100]");
+    check_render_seconds(c.seconds);
+    check_repeats(c.repeats);
     for (int n : c.counts)
         if (n < 1 || n > 4096) throw InputError("--counts", "", "each count must be in [1, 4096]");
     opencl::Runtime runtime(c.job.device);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bench/convergence.hpp"
+#include "bench/timed_runs.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -27,7 +28,7 @@ struct BenchPreviewCommand {
 };
 
 void run_bench_preview(const BenchPreviewCommand& c) {
-    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
+    check_render_seconds(c.seconds);
     if (!(c.reference_seconds >= c.seconds && c.reference_seconds <= 36000.0))
         throw InputError("--reference-seconds", "", "must be at least --seconds and at most 36000");
     if (!c.chart.empty()) film::check_output_path(c.chart);

@@ -14,6 +14,7 @@
 
 #include "bench/convergence.hpp"
 #include "bench/march_cost.hpp"
+#include "bench/timed_runs.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
@@ -78,9 +79,8 @@ void compare_at_equal_time(const RendererFactory& on_device, const BenchRenderCo
 }
 
 void run_bench_render(const BenchRenderCommand& c) {
-    if (!(c.seconds > 0.0 && c.seconds <= 3600.0)) throw InputError("--seconds", "", "must be more than 0 and at most 3600");
-    if (!(c.throughput_seconds > 0.0 && c.throughput_seconds <= 3600.0))
-        throw InputError("--throughput-seconds", "", "must be more than 0 and at most 3600");
+    check_render_seconds(c.seconds);
+    check_render_seconds(c.throughput_seconds, "--throughput-seconds");
     if (!(c.reference_seconds >= c.seconds && c.reference_seconds <= 36000.0))
         throw InputError("--reference-seconds", "", "must be at least --seconds and at most 36000");
     if (!c.chart.empty()) film::check_output_path(c.chart);
