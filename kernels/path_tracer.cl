@@ -23,8 +23,8 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
 }
 
 /* The wavefront's camera step and its later steps (kernels/path_tracer_wavefront.h): render_pt's
- * arguments, then the wavefront's buffers, the same for both so that the host binds them alike;
- * work-item p steps path p. */
+ * arguments, then the wavefront's buffers, the same for both so that the host binds them alike
+ * (the step adds its `first` flag); work-item p steps path p. */
 #define WAVEFRONT_KERNEL_ARGUMENTS                                                                                                        \
     RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4 *env_texels,                                \
         __global const AliasEntry *env_alias, __global const Material *materials, __global const float *measured,                       \
@@ -34,19 +34,18 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
         __global const RayMarch *shadow_marches, __global volatile uint *unfinished, int slots, __global float4 *path_radiance,          \
         __global uint *path_rays, __global uint *path_lost_rays, __global uint *camera_rngs
 
-/* A step of every path, path_tracer_step; the first (iteration 1) begins the paths. */
-#define WAVEFRONT_STEP_KERNEL(name, first)                                                                                                 \
-    __kernel void name(WAVEFRONT_KERNEL_ARGUMENTS) {                                                                                       \
-        int path = (int)get_global_id(0);                                                                                                  \
-        if (path >= slots * camera.width * camera.height) return;                                                                          \
-        RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias); \
-        WavefrontFilm film = {slots, accumulation, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};                 \
-        (void)splat;                                                                                                                       \
-        path_tracer_step(&settings, &camera, &scene, path, states, stride, rays, shadow_rays, ray_marches, shadow_marches, camera_rngs,     \
-                         film, unfinished, first);                                                                                         \
-    }
-WAVEFRONT_STEP_KERNEL(render_pt_first_step, true)
-WAVEFRONT_STEP_KERNEL(render_pt_step, false)
+/* A step of every path, path_tracer_step; `first` (iteration 1) begins the paths. One kernel for
+ * both, the step's flag an argument: the scatter is most of the program's code, and a kernel of its
+ * own for the first step would have PoCL compile it twice for every scene and material. */
+__kernel void render_pt_step(WAVEFRONT_KERNEL_ARGUMENTS, int first) {
+    int path = (int)get_global_id(0);
+    if (path >= slots * camera.width * camera.height) return;
+    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
+    WavefrontFilm film = {slots, accumulation, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};
+    (void)splat;
+    path_tracer_step(&settings, &camera, &scene, path, states, stride, rays, shadow_rays, ray_marches, shadow_marches, camera_rngs, film,
+                     unfinished, first != 0);
+}
 
 /* The camera rays of a camera that the packets do not begin themselves (a thin lens). */
 __kernel void render_pt_camera(WAVEFRONT_KERNEL_ARGUMENTS) {

@@ -191,7 +191,7 @@ SS_FN void path_tracer_camera_step(const RenderKernelSettings* settings, const C
     store_camera_rng(camera_rngs, stride, path, rng);
 }
 
-/* A step of path `path` (render_pt_first_step at iteration 1, render_pt_step after it): the first
+/* A step of path `path` (render_pt_step; `first` at iteration 1): the first
  * begins the path with its camera ray (in the ray buffer) and the generator that ray left; a later
  * one resolves its pending shadow ray with its march. Then it takes the march of its ray and
  * scatters (path_scatter). */

@@ -31,7 +31,6 @@ int wavefront_slots(const RenderSettings& s) {
 }
 
 void WavefrontDriver::build(const opencl::Program& program, const scene::CompiledScene& compiled, const std::string& options) {
-    first_step_kernel_ = program.kernel("render_pt_first_step");
     step_kernel_ = program.kernel("render_pt_step");
     camera_kernel_ = program.kernel("render_pt_camera");
     resolve_kernel_ = program.kernel("render_pt_resolve");
@@ -99,8 +98,9 @@ void WavefrontDriver::launch_samples(const WavefrontTarget& target, const kernel
     if (r.slots > 1) launch_resolve(target, r.slots);
 }
 
-// the step kernels' arguments (kernels/path_tracer.cl, WAVEFRONT_KERNEL_ARGUMENTS)
-void WavefrontDriver::bind_step(const WavefrontTarget& target, const opencl::KernelHandle& step, const kernel::RenderKernelSettings& settings,
+// the step kernels' arguments (kernels/path_tracer.cl, WAVEFRONT_KERNEL_ARGUMENTS); returns the
+// index of the next argument (render_pt_step's `first`)
+cl_uint WavefrontDriver::bind_step(const WavefrontTarget& target, const opencl::KernelHandle& step, const kernel::RenderKernelSettings& settings,
                                 int slots) const {
     cl_uint a = target.bind_render_arguments(step, settings);
     opencl::set_kernel_arg(step, a++, stride_);
@@ -109,6 +109,7 @@ void WavefrontDriver::bind_step(const WavefrontTarget& target, const opencl::Ker
     opencl::set_kernel_arg(step, a++, slots);
     for (const opencl::BufferHandle* b : {&path_radiance_, &path_ray_counts_, &path_lost_counts_, &camera_rngs_})
         opencl::set_kernel_arg(step, a++, *b);
+    return a;
 }
 
 // march_rays' work-items: the rays' granules, then the shadow rays'.
@@ -151,9 +152,9 @@ void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::
         // max_depth scattering events, and the last shadow ray one step later
         if (iteration > settings.max_depth + 3) throw std::logic_error("path tracer wavefront: paths still unfinished after max_depth + 3 steps");
         runtime_.zero(unfinished_, 2 * sizeof(cl_uint));
-        const opencl::KernelHandle& step = iteration == 1 ? first_step_kernel_ : step_kernel_;
-        bind_step(target, step, settings, r.slots);
-        launch_range(runtime_, step, r.paths, target.local_size, size_t(r.path_count));
+        const cl_uint first_argument = bind_step(target, step_kernel_, settings, r.slots);
+        opencl::set_kernel_arg(step_kernel_, first_argument, cl_int(iteration == 1));
+        launch_range(runtime_, step_kernel_, r.paths, target.local_size, size_t(r.path_count));
         cl_uint unfinished[2] = {0, 0};
         runtime_.read(unfinished_, unfinished, sizeof(unfinished));  // blocking: the step is done
         const bool last = unfinished[0] == 0 && unfinished[1] == 0;

@@ -78,7 +78,7 @@ private:
     static Ranges ranges_of(int slots, int image_pixels, PixelRange pixels);
 
     void launch_samples(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, PixelRange pixels);
-    void bind_step(const WavefrontTarget& target, const opencl::KernelHandle& step, const kernel::RenderKernelSettings& settings, int slots) const;
+    cl_uint bind_step(const WavefrontTarget& target, const opencl::KernelHandle& step, const kernel::RenderKernelSettings& settings, int slots) const;
     void launch_camera_rays(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r);
     void launch_steps(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r);
     void launch_resolve(const WavefrontTarget& target, int slots);
@@ -88,7 +88,7 @@ private:
     void ended(WavefrontLaunch kind, Clock::time_point start, bool wait = true);
 
     const opencl::Runtime& runtime_;
-    opencl::KernelHandle first_step_kernel_, step_kernel_, camera_kernel_, resolve_kernel_, march_rays_, march_camera_rays_;
+    opencl::KernelHandle step_kernel_, camera_kernel_, resolve_kernel_, march_rays_, march_camera_rays_;
     std::optional<opencl::Program> packet_program_;
     std::string packet_source_, packet_options_;  // what packet_program_ was built from
     opencl::BufferHandle states_, path_rays_, shadow_rays_, ray_marches_, shadow_marches_, unfinished_;
