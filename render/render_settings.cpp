@@ -1,6 +1,6 @@
 #include "render/render_settings.hpp"
 
-#include <regex>
+#include <algorithm>
 #include <utility>
 
 #include "common/input_error.hpp"
@@ -53,12 +53,21 @@ void check_render_settings(const RenderSettings& settings) {
         throw InputError("--over-relaxation", "", "must be in [1, 2]");
 }
 
+namespace {
+
+// One to six decimal digits, the most an image side can be written with.
+bool is_side_digits(const std::string& text) {
+    return !text.empty() && text.size() <= 6 && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+}  // namespace
+
 void parse_image_size(const std::string& text, const std::string& option, int* width, int* height) {
-    static const std::regex pattern(R"((\d{1,6})x(\d{1,6}))");
-    std::smatch m;
-    if (!std::regex_match(text, m, pattern)) throw InputError(option, "", "expected WIDTHxHEIGHT, e.g. 512x512, got \"" + text + "\"");
-    *width = std::stoi(m[1].str());
-    *height = std::stoi(m[2].str());
+    const size_t x = text.find('x');
+    const std::string w = text.substr(0, x), h = x == std::string::npos ? std::string() : text.substr(x + 1);
+    if (!is_side_digits(w) || !is_side_digits(h)) throw InputError(option, "", "expected WIDTHxHEIGHT, e.g. 512x512, got \"" + text + "\"");
+    *width = std::stoi(w);
+    *height = std::stoi(h);
     if (*width < 1 || *height < 1 || *width > kMaxImageSide || *height > kMaxImageSide)
         throw InputError(option, "", text + " is outside 1 .. " + std::to_string(kMaxImageSide) + " pixels a side");
 }
