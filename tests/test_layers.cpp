@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,21 +17,46 @@ namespace {
 
 const char* const kArchitecture = "docs/architecture.md";
 
+// The quoted name of a line `#include "NAME"`, "" for any other line.
+std::string included_name(const std::string& line) {
+    size_t i = line.find_first_not_of(" \t");
+    if (i == std::string::npos || line[i] != '#') return "";
+    i = line.find_first_not_of(" \t", i + 1);
+    if (i == std::string::npos || line.compare(i, 7, "include") != 0) return "";
+    i = line.find_first_not_of(" \t", i + 7);
+    if (i == std::string::npos || line[i] != '"') return "";
+    const size_t close = line.find('"', i + 1);
+    return close == std::string::npos ? "" : line.substr(i + 1, close - i - 1);
+}
+
 // Folder ("kernels/host") -> layer, from the "## Layers" table's rows "| N | `a/`, `b/` | ... |".
 std::map<std::string, int> read_layers() {
     std::ifstream in(kArchitecture);
     REQUIRE(in);
     std::map<std::string, int> layers;
-    static const std::regex row(R"(^\|\s*(\d+)\s*\|([^|]*)\|)");
-    static const std::regex folder("`([^`]+)/`");
     bool in_section = false;
     for (std::string line; std::getline(in, line);) {
         if (line.rfind("## ", 0) == 0) in_section = line == "## Layers";
-        std::smatch match;
-        if (!in_section || !std::regex_search(line, match, row)) continue;
-        const int layer = std::stoi(match[1].str());
-        const std::string cell = match[2].str();
-        for (std::sregex_iterator f(cell.begin(), cell.end(), folder), end; f != end; ++f) layers[(*f)[1].str()] = layer;
+        if (!in_section || line.rfind("|", 0) != 0) continue;
+        const size_t second = line.find('|', 1), third = second == std::string::npos ? second : line.find('|', second + 1);
+        if (third == std::string::npos) continue;
+        const std::string number = line.substr(1, second - 1);
+        const size_t digits = number.find_first_of("0123456789");
+        if (digits == std::string::npos || number.find_first_not_of(" \t0123456789") != std::string::npos) continue;
+        const int layer = std::stoi(number.substr(digits));
+        // the cell's folders: `a/` between backticks
+        const std::string cell = line.substr(second + 1, third - second - 1);
+        for (size_t open = cell.find('`'); open != std::string::npos;) {
+            const size_t close = cell.find('`', open + 1);
+            if (close == std::string::npos) break;
+            const std::string quoted = cell.substr(open + 1, close - open - 1);
+            if (quoted.size() > 1 && quoted.back() == '/') {
+                layers[quoted.substr(0, quoted.size() - 1)] = layer;
+                open = cell.find('`', close + 1);
+            } else {
+                open = close;
+            }
+        }
     }
     return layers;
 }
@@ -81,7 +105,6 @@ TEST_CASE("every include points to its own folder or a lower layer of docs/archi
     const std::map<std::string, int> layers = read_layers();
     REQUIRE(layers.size() >= 10);  // the table was found and read
 
-    static const std::regex include_line(R"re(^\s*#\s*include\s*"([^"]+)")re");
     int includes = 0;
     for (const std::string& top : source_folders()) {
         {
@@ -97,9 +120,9 @@ TEST_CASE("every include points to its own folder or a lower layer of docs/archi
             int number = 0;
             for (std::string line; std::getline(in, line);) {
                 ++number;
-                std::smatch match;
-                if (!std::regex_search(line, match, include_line)) continue;
-                const std::string target = resolve(match[1].str(), file);
+                const std::string name = included_name(line);
+                if (name.empty()) continue;
+                const std::string target = resolve(name, file);
                 if (target.empty()) continue;
                 const std::string to = folder_of(target, layers);
                 ++includes;
