@@ -2,6 +2,8 @@
 # the ctest tests of its cases that SPEC selects, one per [sweep] case and one per source file for
 # the rest. Catch's -# gives each case the tag [#<file name>].
 
+cmake_policy(SET CMP0057 NEW) # if(... IN_LIST ...) in this -P script
+
 function(list_catch output_var)
   execute_process(COMMAND ${EXECUTABLE} "-#" ${ARGN} OUTPUT_VARIABLE out RESULT_VARIABLE rc WORKING_DIRECTORY ${WORKING_DIRECTORY})
   if(rc LESS 0 OR NOT rc MATCHES "^[0-9]+$")
@@ -40,10 +42,39 @@ foreach(name IN LISTS names)
 endforeach()
 
 # Then every file that has a selected case that is not a sweep: --list-tags prints "  <count>  [#file]".
+# The files of a batch (BATCHES: batches separated by "|", files by "+") share one test, which runs
+# them in one process, in the batch's place in the order; every other file is a test of its own.
 list_catch(lines "${SPEC}~[sweep]" --list-tags)
+set(files "")
 foreach(line IN LISTS lines)
   if(line MATCHES "^ *[0-9]+ +\\[#([A-Za-z0-9_]+)\\]$")
-    add_catch_test("${CMAKE_MATCH_1}" "[#${CMAKE_MATCH_1}]${SPEC}~[sweep]")
+    list(APPEND files "${CMAKE_MATCH_1}")
+  endif()
+endforeach()
+string(REPLACE "|" ";" batches "${BATCHES}")
+set(batched "")
+foreach(batch IN LISTS batches)
+  string(REPLACE "+" ";" members "${batch}")
+  set(present "")
+  set(spec "")
+  foreach(file IN LISTS members)
+    if(file IN_LIST files)
+      list(APPEND present "${file}")
+      list(APPEND batched "${file}")
+      if(spec)
+        string(APPEND spec ",")
+      endif()
+      string(APPEND spec "[#${file}]${SPEC}~[sweep]")
+    endif()
+  endforeach()
+  if(present)
+    list(JOIN present "+" name)
+    add_catch_test("${name}" "${spec}")
+  endif()
+endforeach()
+foreach(file IN LISTS files)
+  if(NOT file IN_LIST batched)
+    add_catch_test("${file}" "[#${file}]${SPEC}~[sweep]")
   endif()
 endforeach()
 file(WRITE ${OUTPUT} "${script}")
