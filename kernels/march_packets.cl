@@ -9,6 +9,7 @@
 #include "kernels/camera.h"
 #include "kernels/ray_march.h"
 #include "kernels/render_settings.h"
+#include "sdf/exact/with_march.h"
 #include "sdf/march_lanes.h"
 
 /* free lanes before a packet starts new rays (while the granule has rays left): half of them */
@@ -24,11 +25,15 @@ int lowest_lane(uint bits) { return 31 - (int)clz(bits & (0u - bits)); }
  * whose march is done stores it and takes the next ray, skipping those that are none (a path that
  * has ended), so the lanes stay busy however long each ray's march and however few rays are left.
  * A lane waits for company until half the lanes are free: starting a ray costs a few dozen scalar
- * operations. */
+ * operations. A ray's exact hits are found, one lane at a time, when it starts: its march stops
+ * there, and the exact hit is taken when the march finds nothing nearer (sdf/exact/with_march.h, as
+ * trace_ray in kernels/path.h). */
 SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int first, int end, int stride, __global const float* rays, __global RayMarch* marches) {
     uint evaluations = 0u;
     float field[RAY_FIELDS][8]; /* each lane's ray: origin, direction, max distance */
     int lane_ray[8];            /* the ray each lane marches; -1: none */
+    float exact_t[8];           /* each lane's nearest exact hit */
+    float ray_max[8];           /* each lane's max distance, before the march's is cut at that hit */
     for (int lane = 0; lane < 8; ++lane) {
         lane_ray[lane] = -1;
         for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = NO_RAY;
@@ -49,6 +54,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
             vstore8((int8)0, 0, started);
             for (uint done = lane_bits(free && holding); done != 0u; done &= done - 1u) {
                 const int lane = lowest_lane(done);
+                exact_or_march(exact_t[lane], ray_max[lane], &t[lane], &status[lane]);
                 marches[lane_ray[lane]].t = t[lane];
                 marches[lane_ray[lane]].status = status[lane];
                 marches[lane_ray[lane]].steps = steps[lane];
@@ -74,6 +80,13 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
             }
             holding = vload8(0, lane_ray) >= 0;
             const int8 start = vload8(0, started);
+            for (uint begun = lane_bits(start); begun != 0u; begun &= begun - 1u) {
+                const int lane = lowest_lane(begun);
+                ray_max[lane] = field[6][lane];
+                exact_t[lane] = scene_exact_hit(make_float3(field[0][lane], field[1][lane], field[2][lane]),
+                                                make_float3(field[3][lane], field[4][lane], field[5][lane]), ray_max[lane]);
+                field[6][lane] = exact_march_limit(ray_max[lane], exact_t[lane], scene_march_objects());
+            }
             if (any(start)) {
                 ox = vload8(0, field[0]);
                 oy = vload8(0, field[1]);

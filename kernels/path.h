@@ -1,7 +1,7 @@
 /* What every integrator's paths share: marching a ray with its counters, the surface a ray hit
  * (point, material slot, shading frame, the error scale of the point), offsetting rays off a
  * surface, and shadow rays. Needs the scene (scene_distance, scene_distance_material,
- * scene_analytic_normal) declared before it is included, like sdf/march.h: the generated scene
+ * scene_analytic_normal, scene_exact_normal, scene_exact_hit, scene_march_objects) declared before it is included, like sdf/march.h: the generated scene
  * source in a kernel, the host interpreter in render/host_renderer.cpp. */
 #ifndef KERNELS_PATH_H
 #define KERNELS_PATH_H
@@ -9,6 +9,7 @@
 #include "single_source/vocabulary.h"
 #include "brdf/frame.h"
 #include "kernels/render_settings.h"
+#include "sdf/exact/with_march.h"
 #include "sdf/march.h"
 #include "sdf/normals.h"
 
@@ -31,8 +32,14 @@ SS_FN void count_march(MarchResult r, PathCounters* counters) {
 #endif
 }
 
+/* A ray's nearest hit: the exact hits of the plain primitives and the march of the rest
+ * (sdf/exact/with_march.h). */
 SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings march_settings, PathCounters* counters) {
+    const float max_distance = march_settings.max_distance;
+    const float t_exact = scene_exact_hit(origin, direction, max_distance);
+    march_settings.max_distance = exact_march_limit(max_distance, t_exact, scene_march_objects());
     MarchResult r = march(origin, direction, 0.0f, march_settings);
+    exact_or_march(t_exact, max_distance, &r.t, &r.status);
     count_march(r, counters);
     return r;
 }
@@ -73,7 +80,9 @@ SS_FN SurfaceHit surface_hit(const RenderKernelSettings* settings, MarchSettings
     SurfaceHit h;
     h.p = origin + direction * t;
     scene_distance_material(h.p, &h.slot);
-    float3 outward = scene_normal(h.p, settings->normal_step, settings->normal_method);
+    /* an exactly intersected object's normal is its analytic one, whatever the normal method */
+    float3 outward;
+    if (!scene_exact_normal(h.p, &outward)) outward = scene_normal(h.p, settings->normal_step, settings->normal_method);
     h.frame = shading_frame(inside ? -facing_normal(-outward, -direction) : facing_normal(outward, -direction));
     h.wo = frame_to_local(h.frame, -direction);
     h.epsilon = march_epsilon(march_settings, t);

@@ -8,8 +8,9 @@
  * computes, the same operations in the same order, so both give the same t, status and steps to the
  * bit.
  *
- * Needs the scene's field declared before it is included: scene_distance(float3) for one lane
- * (the generated scene source in a kernel; on the host see sdf/sdf.hpp), scene_distance_xyz with
+ * Needs the scene's field declared before it is included: scene_march_distance(float3) for one lane,
+ * the objects that are not intersected exactly (sdf/exact/with_march.h; the generated scene source
+ * in a kernel; on the host see sdf/sdf.hpp), scene_distance_xyz with
  * SDF_FLOAT components and the mask of the lanes whose distance counts for a packet (the generated
  * source's packet form; a lane that is done gets a distance that may be too large, never used). */
 #ifndef SDF_MARCH_LANES_H
@@ -23,9 +24,9 @@
 #define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance_xyz(x, y, z, running)
 #elif defined(SCENE_COUNT_EVALUATIONS)
 /* a measurement build (`dtoadq bench breakdown`): the distance functions evaluated are counted */
-#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance_counted(make_float3(x, y, z), evaluations)
+#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_march_distance_counted(make_float3(x, y, z), evaluations)
 #else
-#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance(make_float3(x, y, z))
+#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_march_distance(make_float3(x, y, z))
 #endif
 
 typedef struct MarchLanes {
