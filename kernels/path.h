@@ -9,7 +9,7 @@
 #include "single_source/vocabulary.h"
 #include "brdf/frame.h"
 #include "kernels/render_settings.h"
-#include "sdf/exact/with_march.h"
+#include "sdf/exact/trace.h"
 #include "sdf/march.h"
 #include "sdf/normals.h"
 
@@ -33,13 +33,9 @@ SS_FN void count_march(MarchResult r, PathCounters* counters) {
 }
 
 /* A ray's nearest hit: the exact hits of the plain primitives and the march of the rest
- * (sdf/exact/with_march.h). */
+ * (march_scene_ray, sdf/exact/trace.h). */
 SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings march_settings, PathCounters* counters) {
-    const float max_distance = march_settings.max_distance;
-    const float t_exact = scene_exact_hit(origin, direction, max_distance);
-    march_settings.max_distance = exact_march_limit(max_distance, t_exact, scene_march_objects());
-    MarchResult r = march(origin, direction, 0.0f, march_settings);
-    exact_or_march(t_exact, max_distance, &r.t, &r.status);
+    MarchResult r = march_scene_ray(origin, direction, march_settings);
     count_march(r, counters);
     return r;
 }
@@ -65,6 +61,15 @@ SS_FN float3 facing_normal(float3 n, float3 toward) {
 /* Anisotropy follows the lines of latitude about +y: brushed metal on a shader ball is brushed round it. */
 SS_FN ShadingFrame shading_frame(float3 n) { return frame_from_normal_tangent(n, make_float3(n.z, 0.0f, -n.x)); }
 
+/* The outward normal at a hit point: an exactly intersected object's analytic one whatever the
+ * normal method (its hit is exact, so finite differences would only add their error), else the
+ * method's. */
+SS_FN float3 surface_normal(const RenderKernelSettings* settings, float3 p) {
+    float3 n;
+    if (scene_exact_normal(p, &n)) return n;
+    return scene_normal(p, settings->normal_step, settings->normal_method);
+}
+
 /* The surface a ray hit, as a path sees it. */
 typedef struct SurfaceHit {
     float3 p;           /* the hit point */
@@ -80,9 +85,7 @@ SS_FN SurfaceHit surface_hit(const RenderKernelSettings* settings, MarchSettings
     SurfaceHit h;
     h.p = origin + direction * t;
     scene_distance_material(h.p, &h.slot);
-    /* an exactly intersected object's normal is its analytic one, whatever the normal method */
-    float3 outward;
-    if (!scene_exact_normal(h.p, &outward)) outward = scene_normal(h.p, settings->normal_step, settings->normal_method);
+    float3 outward = surface_normal(settings, h.p);
     h.frame = shading_frame(inside ? -facing_normal(-outward, -direction) : facing_normal(outward, -direction));
     h.wo = frame_to_local(h.frame, -direction);
     h.epsilon = march_epsilon(march_settings, t);

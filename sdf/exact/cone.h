@@ -4,6 +4,7 @@
 #define SDF_EXACT_CONE_H
 
 #include "single_source/vocabulary.h"
+#include "sdf/exact/cylinder.h"
 #include "sdf/exact/interval.h"
 
 /* The solid is the half-space y >= 0 intersected with the nappe rho <= k (height - y), k = r / height,
@@ -13,10 +14,18 @@
  * the upper nappe only), and the two ends (-inf, t0] and [t1, inf) when A < 0 (a ray steeper than
  * the slant crosses both nappes), of which w >= 0 keeps one: the later when w grows along the ray
  * (b > 0), the earlier when it shrinks. A = 0 (a ray parallel to a generator) leaves the half-line
- * 2 B t + C <= 0. The discriminant B^2 - A C is computed directly: the cone's quadric has no
- * centre distance to take it from, and float keeps it to a few ulps of B^2 for the scene sizes the
- * marcher handles (docs/scenes.md). */
+ * 2 B t + C <= 0.
+ *
+ * B^2 - A C has no centre distance to be taken from, so it cancels when the terms are large: a ray
+ * from 1e4 units away has C ~ 1e8. The ray is therefore first clipped to a cylinder around the cone
+ * (sdf/exact/cylinder.h, robust), grown by 1 % so that its entry is never on the cone's own base,
+ * and the quadric solved from that entry, where A, B and C are of the cone's size. */
 SS_FN float xCone(float3 o, float3 v, float r, float height, float t_max) {
+    float bound_enter, bound_exit;
+    cylinder_interval(o - make_float3(0.0f, 0.5f * height, 0.0f), v, 1.01f * r, 0.505f * height, &bound_enter, &bound_exit);
+    if (!(bound_enter <= bound_exit) || !(bound_exit > 0.0f)) return EXACT_MISS;
+    const float lo = fmax(bound_enter, 0.0f);
+    o = o + v * lo;
     float k = r / height;
     float a = height - o.y, b = -v.y;
     float A = v.x * v.x + v.z * v.z - k * k * b * b;
@@ -37,7 +46,7 @@ SS_FN float xCone(float3 o, float3 v, float r, float height, float t_max) {
     }
     exact_clip_half_space(a, b, &enter, &exit);        /* w >= 0: below the apex */
     exact_clip_half_space(o.y, v.y, &enter, &exit);    /* y >= 0: above the base */
-    return exact_first_crossing(enter, exit, t_max);
+    return lo + exact_first_crossing(enter, exit, t_max - lo);
 }
 
 #endif

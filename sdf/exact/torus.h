@@ -13,7 +13,8 @@
  * Along a unit ray p = o + s v it is the monic quartic
  *   g(s) = s^4 + 4 b s^3 + c2 s^2 + c1 s + c0,  b = o.v, c2 = 4 b^2 + 2 k - 4 R^2 |v_xz|^2,
  *   k = |o|^2 + R^2 - r^2.
- * 1. The ray is clipped to the bounding cylinder rho <= R + r, |y| <= r (sdf/exact/cylinder.h), and
+ * 1. The ray is clipped to the bounding cylinder rho <= R + r, |y| <= r, grown by 1 % of r
+ *    (sdf/exact/cylinder.h), and
  *    the origin moved to where it enters it: s then runs over [0, L] with L <= 2 sqrt((R+r)^2 + r^2),
  *    and g's terms are of the torus's size, whatever the ray's distance (no cancellation of huge
  *    terms for a ray from far away; the float error of the moved origin, ~1e-7 of the distance
@@ -74,7 +75,9 @@ SS_FN void torus_add_cut(float s, float L, float cuts[5], int* count) {
 
 SS_FN float xTorus(float3 o, float3 v, float R, float r, float t_max) {
     float enter, exit;
-    cylinder_interval(o, v, R + r, r, &enter, &exit);
+    /* grown by 1 % of r: the cylinder touches the torus all round its outer equator, and a bracket
+     * that started on the surface would not see the sign change there */
+    cylinder_interval(o, v, R + 1.01f * r, 1.01f * r, &enter, &exit);
     float lo = fmax(enter, 0.0f), hi = fmin(exit, t_max);
     if (!(lo < hi)) return EXACT_MISS;
     float3 q = o + v * lo;
