@@ -34,12 +34,14 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
     int lane_ray[8];            /* the ray each lane marches; -1: none */
     float exact_t[8];           /* each lane's nearest exact hit */
     float ray_max[8];           /* each lane's max distance, before the march's is cut at that hit */
+    int exact_end[8];           /* -1 where the march's max distance is that hit */
     for (int lane = 0; lane < 8; ++lane) {
         lane_ray[lane] = -1;
+        exact_end[lane] = 0;
         for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = NO_RAY;
     }
     float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 1.0f, max_distance = NO_RAY;
-    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, march_settings);
+    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, (int8)0, march_settings);
     int next = first;
     int8 holding = 0; /* the lanes that have a ray, marched or marching */
     for (;;) {
@@ -86,6 +88,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
                 exact_t[lane] = scene_exact_hit(make_float3(field[0][lane], field[1][lane], field[2][lane]),
                                                 make_float3(field[3][lane], field[4][lane], field[5][lane]), ray_max[lane]);
                 field[6][lane] = exact_march_limit(ray_max[lane], exact_t[lane], scene_march_objects());
+                exact_end[lane] = exact_t[lane] <= ray_max[lane] ? -1 : 0;
             }
             if (any(start)) {
                 ox = vload8(0, field[0]);
@@ -95,7 +98,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
                 vy = vload8(0, field[4]);
                 vz = vload8(0, field[5]);
                 max_distance = vload8(0, field[6]);
-                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, march_settings);
+                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, vload8(0, exact_end), march_settings);
             }
         }
         if (!any(st.running)) {

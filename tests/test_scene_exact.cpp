@@ -48,11 +48,12 @@ RayHits opencl_rays(const lab::opencl::Runtime& runtime, const lab::scene::Compi
     return r;
 }
 
-lab::render::host_kernels::MarchResult host_ray(const Scene& scene, Vec3 o, Vec3 v, float max_distance) {
+lab::render::host_kernels::MarchResult host_ray(const Scene& scene, Vec3 o, Vec3 v, float max_distance, float over_relaxation = 1.0f) {
     using namespace lab::render::host_kernels;
     const lab::render::HostSceneScope scope(scene);
     MarchSettings s = march_settings_default(1.0f);
     s.max_distance = max_distance;
+    s.over_relaxation = over_relaxation;
     return march_scene_ray(o, v, s);
 }
 
@@ -182,5 +183,20 @@ TEST_CASE("Exact intersection: the combined rule's edge cases", "[scene][exact]"
         auto front = host_ray(scene, Vec3(4.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f);
         REQUIRE(front.status == MARCH_HIT);
         CHECK(front.t < 2.2f);
+    }
+    SECTION("an over-relaxed step that leaps past the exact hit is checked before the march ends") {
+        // from z = 5 the sphere's surface is 3.9 away: the first step of 1.5 x 3.9 ends past the wall
+        // at 5, and the sphere in between must still be found
+        Scene scene = lab::scene::parse_scene(R"({
+          "camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
+          "materials": {"m": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}},
+          "objects": [
+            {"name": "wall", "material": "m", "shape": {"type": "plane", "normal": [0, 0, 1], "offset": 0}},
+            {"name": "ball", "material": "m", "shape": {"type": "displace", "amplitude": 0.001, "frequency": 3,
+              "child": {"type": "translate", "offset": [0, 0, 0.6], "child": {"type": "sphere", "radius": 0.5}}}}
+          ]})", "leap.json");
+        auto r = host_ray(scene, Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f, 1.5f);
+        REQUIRE(r.status == MARCH_HIT);
+        CHECK(r.t < 3.95f);
     }
 }

@@ -13,6 +13,7 @@ SS_FN MarchResult march_scene_ray(float3 origin, float3 direction, MarchSettings
     const float max_distance = s.max_distance;
     const float t_exact = scene_exact_hit(origin, direction, max_distance);
     s.max_distance = exact_march_limit(max_distance, t_exact, scene_march_objects());
+    s.surface_at_max_distance = t_exact <= max_distance;
     MarchResult r = march(origin, direction, 0.0f, s);
     exact_or_march(t_exact, max_distance, &r.t, &r.status);
     return r;
