@@ -29,6 +29,23 @@ int lowest_lane(uint bits) { return 31 - (int)clz(bits & (0u - bits)); }
  * there, and the exact hit is taken when the march finds nothing nearer (sdf/exact/with_march.h, as
  * trace_ray in kernels/path.h). */
 SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int first, int end, int stride, __global const float* rays, __global RayMarch* marches) {
+    if (scene_march_objects() == 0) {
+        /* nothing to march: a ray's exact hit is all there is, without the lanes' bookkeeping; what
+         * a march that is done before its first step and its exact hit give (march_scene_ray) */
+        for (int ray = first; ray < end; ++ray) {
+            const float max_distance = rays[6 * stride + ray];
+            if (0.0f > max_distance) continue;
+            float3 origin, direction;
+            load_ray(rays, stride, ray, &origin, &direction);
+            float t = 0.0f;
+            int status = MARCH_MISS;
+            exact_or_march(scene_exact_hit(origin, direction, max_distance), max_distance, &t, &status);
+            marches[ray].t = t;
+            marches[ray].status = status;
+            marches[ray].steps = 0;
+        }
+        return;
+    }
     uint evaluations = 0u;
     float field[RAY_FIELDS][8]; /* each lane's ray: origin, direction, max distance */
     int lane_ray[8];            /* the ray each lane marches; -1: none */
