@@ -1,7 +1,7 @@
 /* What every integrator's paths share: marching a ray with its counters, the surface a ray hit
  * (point, material slot, shading frame, the error scale of the point), offsetting rays off a
  * surface, and shadow rays. Needs the scene (scene_distance, scene_distance_material,
- * scene_analytic_normal, scene_exact_normal, scene_exact_hit, scene_march_objects) declared before it is included, like sdf/march.h: the generated scene
+ * scene_analytic_normal, scene_surface, scene_exact_hit, scene_march_objects) declared before it is included, like sdf/march.h: the generated scene
  * source in a kernel, the host interpreter in render/host_renderer.cpp. */
 #ifndef KERNELS_PATH_H
 #define KERNELS_PATH_H
@@ -61,12 +61,12 @@ SS_FN float3 facing_normal(float3 n, float3 toward) {
 /* Anisotropy follows the lines of latitude about +y: brushed metal on a shader ball is brushed round it. */
 SS_FN ShadingFrame shading_frame(float3 n) { return frame_from_normal_tangent(n, make_float3(n.z, 0.0f, -n.x)); }
 
-/* The outward normal at a hit point: an exactly intersected object's analytic one whatever the
- * normal method (its hit is exact, so finite differences would only add their error), else the
- * method's. */
-SS_FN float3 surface_normal(const RenderKernelSettings* settings, float3 p) {
+/* The material slot and the outward normal at a hit point: an exactly intersected object's
+ * analytic normal whatever the normal method (its hit is exact, so finite differences would only
+ * add their error), else the method's. */
+SS_FN float3 surface_normal(const RenderKernelSettings* settings, float3 p, int* slot) {
     float3 n;
-    if (scene_exact_normal(p, &n)) return n;
+    if (scene_surface(p, slot, &n)) return n;
     return scene_normal(p, settings->normal_step, settings->normal_method);
 }
 
@@ -84,8 +84,7 @@ typedef struct SurfaceHit {
 SS_FN SurfaceHit surface_hit(const RenderKernelSettings* settings, MarchSettings march_settings, float3 origin, float3 direction, float t, bool inside) {
     SurfaceHit h;
     h.p = origin + direction * t;
-    scene_distance_material(h.p, &h.slot);
-    float3 outward = surface_normal(settings, h.p);
+    float3 outward = surface_normal(settings, h.p, &h.slot);
     h.frame = shading_frame(inside ? -facing_normal(-outward, -direction) : facing_normal(outward, -direction));
     h.wo = frame_to_local(h.frame, -direction);
     h.epsilon = march_epsilon(march_settings, t);

@@ -151,12 +151,14 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
         << " * uniform scales; 0 (no normal) elsewhere. */\n"
         << "SS_FN int scene_analytic_normal(float3 p, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
         << "    switch (k) {\n" << normal_cases.str() << "    default: return 0;\n    }\n}\n\n"
-        << "/* The nearest object's analytic normal where it is intersected exactly; 0 elsewhere. */\n";
+        << "/* At a hit point, one nearest-object search for both: the material slot and, where that object is\n"
+        << " * intersected exactly, its analytic normal (1; 0 elsewhere). */\n"
+        << "SS_FN int scene_surface(float3 p, int* slot, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
+        << "    *slot = scene_material_slot(k);\n";
     if (split)
-        out << "SS_FN int scene_exact_normal(float3 p, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
-            << "    switch (k) {\n" << exact_normal_cases.str() << "    default: return 0;\n    }\n}\n\n";
+        out << "    switch (k) {\n" << exact_normal_cases.str() << "    default: return 0;\n    }\n}\n\n";
     else
-        out << "SS_FN int scene_exact_normal(float3 p, float3* n) {\n    (void)p;\n    (void)n;\n    return 0;\n}\n\n";
+        out << "    (void)n;\n    return 0;\n}\n\n";
     out << "#endif /* SDF_LANES */\n\n#endif\n";
     return out.str();
 }

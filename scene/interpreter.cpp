@@ -161,10 +161,11 @@ float scene_exact_hit(const Scene& scene, Vec3 o, Vec3 v, float t_max) {
     return t;
 }
 
-int scene_exact_normal(const Scene& scene, Vec3 p, Vec3* n) {
+int scene_surface(const Scene& scene, Vec3 p, int* slot, Vec3* n) {
     int k;
     nearest_surface(scene, p, &k);
     int objects = int(scene.objects.size());
+    *slot = k < objects ? scene.objects[size_t(k)].material : scene.emitters[size_t(k - objects)].material;
     if (k < objects ? !object_is_exact(scene, scene.objects[size_t(k)]) : !emitters_are_exact(scene)) return 0;
     return scene_analytic_normal(scene, p, n);
 }

@@ -15,8 +15,7 @@ PixelProbe probe_pixel(const scene::Scene& scene, const kernel::RenderKernelSett
     p.hit = true;
     p.depth = r.t;
     p.position = origin + direction * r.t;
-    p.normal = surface_normal(&settings, p.position);
-    scene_distance_material(p.position, &p.material);
+    p.normal = surface_normal(&settings, p.position, &p.material);
     return p;
 }
 
