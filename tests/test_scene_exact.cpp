@@ -57,6 +57,12 @@ lab::render::host_kernels::MarchResult host_ray(const Scene& scene, Vec3 o, Vec3
     return march_scene_ray(o, v, s);
 }
 
+// A scene of the edge cases: a camera, one grey material "m" and these objects (JSON).
+Scene edge_scene(const std::string& objects, const std::string& name) {
+    return lab::scene::parse_scene(R"({"camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
+      "materials": {"m": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}}, "objects": [)" + objects + "]}", name);
+}
+
 // Every primitive under rotations, uniform scales and translations (all intersected exactly), and a
 // blend of two of them (marched), over a ground plane.
 const char* const kTransformedScene = R"({
@@ -129,14 +135,11 @@ TEST_CASE("Exact intersection: the combined rule's edge cases", "[scene][exact]"
     using namespace lab::render::host_kernels;
     const float eps_at_5 = march_epsilon(march_settings_default(1.0f), 5.0f);
     SECTION("an exact object inside a field object: the field's surface comes first from outside, the object from inside") {
-        Scene scene = lab::scene::parse_scene(R"({
-          "camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
-          "materials": {"m": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}},
-          "objects": [
+        Scene scene = edge_scene(R"(
             {"name": "blob", "material": "m", "shape": {"type": "smooth_union", "radius": 0.2, "children": [
               {"type": "sphere", "radius": 1}, {"type": "translate", "offset": [0.9, 0, 0], "child": {"type": "sphere", "radius": 0.6}}]}},
             {"name": "core", "material": "m", "shape": {"type": "box", "half_size": [0.2, 0.2, 0.2]}}
-          ]})", "inside.json");
+          )", "inside.json");
         auto outside = host_ray(scene, Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f);
         REQUIRE(outside.status == MARCH_HIT);
         CHECK(outside.t <= 4.0f);
@@ -146,30 +149,24 @@ TEST_CASE("Exact intersection: the combined rule's edge cases", "[scene][exact]"
         CHECK(std::fabs(within.t - 0.5f) <= 1e-6f);  // the box's face, exactly
     }
     SECTION("the camera inside an exact object: the ray leaves it where it should, and the field says inside") {
-        Scene scene = lab::scene::parse_scene(R"({
-          "camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
-          "materials": {"m": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}},
-          "objects": [
+        Scene scene = edge_scene(R"(
             {"name": "shell", "material": "m", "shape": {"type": "translate", "offset": [0.5, 0, 0], "child": {"type": "sphere", "radius": 2}}},
             {"name": "field", "material": "m", "shape": {"type": "displace", "amplitude": 0.05, "frequency": 3,
               "child": {"type": "translate", "offset": [6, 0, 0], "child": {"type": "sphere", "radius": 1}}}}
-          ]})", "camera_inside.json");
+          )", "camera_inside.json");
         auto r = host_ray(scene, Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f), 100.0f);
         REQUIRE(r.status == MARCH_HIT);
         CHECK(std::fabs(r.t - 2.5f) <= 1e-6f);
         CHECK(lab::scene::scene_distance(scene, Vec3(0.0f)) < 0.0f);  // what the integrators' `inside` reads
     }
     SECTION("a march that stops at an exact hit: it does not march on to the field behind the wall") {
-        Scene scene = lab::scene::parse_scene(R"({
-          "camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
-          "materials": {"m": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}},
-          "objects": [
+        Scene scene = edge_scene(R"(
             {"name": "wall", "material": "m", "shape": {"type": "plane", "normal": [0, 0, 1], "offset": 0}},
             {"name": "behind", "material": "m", "shape": {"type": "displace", "amplitude": 0.05, "frequency": 3,
               "child": {"type": "translate", "offset": [0, 0, -3], "child": {"type": "sphere", "radius": 1}}}},
             {"name": "front", "material": "m", "shape": {"type": "displace", "amplitude": 0.05, "frequency": 3,
               "child": {"type": "translate", "offset": [4, 0, 2], "child": {"type": "sphere", "radius": 1}}}}
-          ]})", "wall.json");
+          )", "wall.json");
         auto r = host_ray(scene, Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f);
         REQUIRE(r.status == MARCH_HIT);
         CHECK(std::fabs(r.t - 5.0f) <= 1e-6f);
@@ -187,14 +184,11 @@ TEST_CASE("Exact intersection: the combined rule's edge cases", "[scene][exact]"
     SECTION("an over-relaxed step that leaps past the exact hit is checked before the march ends") {
         // from z = 5 the sphere's surface is 3.9 away: the first step of 1.5 x 3.9 ends past the wall
         // at 5, and the sphere in between must still be found
-        Scene scene = lab::scene::parse_scene(R"({
-          "camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
-          "materials": {"m": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}},
-          "objects": [
+        Scene scene = edge_scene(R"(
             {"name": "wall", "material": "m", "shape": {"type": "plane", "normal": [0, 0, 1], "offset": 0}},
             {"name": "ball", "material": "m", "shape": {"type": "displace", "amplitude": 0.001, "frequency": 3,
               "child": {"type": "translate", "offset": [0, 0, 0.6], "child": {"type": "sphere", "radius": 0.5}}}}
-          ]})", "leap.json");
+          )", "leap.json");
         auto r = host_ray(scene, Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f, 1.5f);
         REQUIRE(r.status == MARCH_HIT);
         CHECK(r.t < 3.95f);
