@@ -112,6 +112,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
         compile.material_overrides[scene::kSampleMaterialSlot] = sample->material;
     }
     if (!parse_on_off(o.ground, "--ground")) compile.disabled_objects.push_back(scene::kGroundObject);
+    compile.march_everything = settings.march_everything;  // the scene as the renderer has it (the viewer's probe reads it)
     scene::Scene scene = scene::apply_options(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), compile);
 
     std::string env_name;
