@@ -27,6 +27,9 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
     cmd.add_option("--object-bounds", o->object_bounds,
                    "Box tests that skip objects far from the point being marched: on or off (same image; off to compare speed)")
         ->capture_default_str();
+    cmd.add_option("--geometry", o->geometry,
+                   "auto: plain primitives and emitters intersected exactly, the rest sphere-traced; march: sphere-trace everything (to compare)")
+        ->capture_default_str();
     cmd.add_option("--max-depth", o->max_depth, "Scattering events per path, for every integrator (bdpt and lt: paths of at most max-depth + 2 vertices, at most 62 events)")->capture_default_str();
     cmd.add_option("--max-steps", o->max_steps, "Sphere-tracing steps per ray before it counts as lost")->capture_default_str();
     cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain; a scene that is not a distance bound uses 1)")->capture_default_str();
@@ -91,6 +94,8 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     require_within(o.env_exposure, "--env-exposure", -64.0f, 64.0f);
     parse_on_off(o.ground, "--ground");
     settings.object_bounds = parse_on_off(o.object_bounds, "--object-bounds");
+    if (o.geometry != "auto" && o.geometry != "march") throw InputError("--geometry", "", "expected auto or march, got \"" + o.geometry + "\"");
+    settings.march_everything = o.geometry == "march";
     settings.seed = o.seed;
     return settings;
 }
@@ -107,6 +112,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
         compile.material_overrides[scene::kSampleMaterialSlot] = sample->material;
     }
     if (!parse_on_off(o.ground, "--ground")) compile.disabled_objects.push_back(scene::kGroundObject);
+    compile.march_everything = settings.march_everything;  // the scene as the renderer has it (the viewer's probe reads it)
     scene::Scene scene = scene::apply_options(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), compile);
 
     std::string env_name;
@@ -155,6 +161,7 @@ void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOption
     cmd.add_option("--tonemap", run->tone_map, "Tone map of the PNG: aces, reinhard or clamp")->capture_default_str();
     cmd.add_option("--exposure", run->exposure, "Exposure of the PNG in stops")->capture_default_str();
     cmd.add_flag("--quiet", run->quiet, "No progress bar or statistics");
+    cmd.add_flag("--verbose", run->verbose, "Also print which objects are intersected exactly and which are sphere-traced");
     cmd.add_option("--samples", run->samples,
                    "A:B renders exactly the sample indices A to B-1 of every pixel: a part of a render that dtoadq merge combines");
     cmd.add_option("--resume", run->resume, "An EXR this command wrote: continue it (to --spp samples per pixel in all, or for --time more)");
@@ -223,6 +230,9 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
                     renderer->build_seconds());
     std::fflush(stdout);
     for (const std::string& w : renderer->compiled_scene().warnings) std::fprintf(stderr, "dtoadq: note: %s\n", w.c_str());
+    if (run.verbose)
+        for (const std::string& line : renderer->compiled_scene().geometry_paths) std::printf("geometry: %s\n", line.c_str());
+    std::fflush(stdout);
 
     // Held past the render, across the writing: a Ctrl-C while the images are written ends the job as
     // interrupted once they are complete, and a second one stops at once with its message, instead of

@@ -33,6 +33,7 @@ struct RenderJobOptions {
     std::string light_selection = "power";
     std::string normals = "tetrahedral";
     std::string object_bounds = "on";
+    std::string geometry = "auto";
     int max_depth = 16;
     std::string mis_heuristic = "balance";  // bdpt, lt
     int max_steps = 1024;
@@ -78,6 +79,7 @@ struct RenderRunOptions {
     std::string tone_map = "aces";
     float exposure = 0.0f;
     bool quiet = false;
+    bool verbose = false;  // also print which objects are intersected exactly
     std::string samples;  // --samples A:B: exactly the sample indices A to B-1 (a part of a render to merge)
     std::string resume;   // --resume FILE.exr: continue that render (its film) up to --spp in all, or for --time more
 };

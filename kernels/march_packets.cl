@@ -9,6 +9,7 @@
 #include "kernels/camera.h"
 #include "kernels/ray_march.h"
 #include "kernels/render_settings.h"
+#include "sdf/exact/with_march.h"
 #include "sdf/march_lanes.h"
 
 /* free lanes before a packet starts new rays (while the granule has rays left): half of them */
@@ -24,17 +25,40 @@ int lowest_lane(uint bits) { return 31 - (int)clz(bits & (0u - bits)); }
  * whose march is done stores it and takes the next ray, skipping those that are none (a path that
  * has ended), so the lanes stay busy however long each ray's march and however few rays are left.
  * A lane waits for company until half the lanes are free: starting a ray costs a few dozen scalar
- * operations. */
+ * operations. A ray's exact hits are found, one lane at a time, when it starts: its march stops
+ * there, and the exact hit is taken when the march finds nothing nearer (sdf/exact/with_march.h, as
+ * trace_ray in kernels/path.h). */
 SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int first, int end, int stride, __global const float* rays, __global RayMarch* marches) {
+    if (scene_march_objects() == 0) {
+        /* nothing to march: a ray's exact hit is all there is, without the lanes' bookkeeping; what
+         * a march that is done before its first step and its exact hit give (march_scene_ray) */
+        for (int ray = first; ray < end; ++ray) {
+            const float max_distance = rays[6 * stride + ray];
+            if (0.0f > max_distance) continue;
+            float3 origin, direction;
+            load_ray(rays, stride, ray, &origin, &direction);
+            float t = 0.0f;
+            int status = MARCH_MISS;
+            exact_or_march(scene_exact_hit(origin, direction, max_distance), max_distance, &t, &status);
+            marches[ray].t = t;
+            marches[ray].status = status;
+            marches[ray].steps = 0;
+        }
+        return;
+    }
     uint evaluations = 0u;
     float field[RAY_FIELDS][8]; /* each lane's ray: origin, direction, max distance */
     int lane_ray[8];            /* the ray each lane marches; -1: none */
+    float exact_t[8];           /* each lane's nearest exact hit */
+    float ray_max[8];           /* each lane's max distance, before the march's is cut at that hit */
+    int exact_end[8];           /* -1 where the march's max distance is that hit */
     for (int lane = 0; lane < 8; ++lane) {
         lane_ray[lane] = -1;
+        exact_end[lane] = 0;
         for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = NO_RAY;
     }
     float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 1.0f, max_distance = NO_RAY;
-    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, march_settings);
+    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, (int8)0, march_settings);
     int next = first;
     int8 holding = 0; /* the lanes that have a ray, marched or marching */
     for (;;) {
@@ -49,6 +73,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
             vstore8((int8)0, 0, started);
             for (uint done = lane_bits(free && holding); done != 0u; done &= done - 1u) {
                 const int lane = lowest_lane(done);
+                exact_or_march(exact_t[lane], ray_max[lane], &t[lane], &status[lane]);
                 marches[lane_ray[lane]].t = t[lane];
                 marches[lane_ray[lane]].status = status[lane];
                 marches[lane_ray[lane]].steps = steps[lane];
@@ -74,6 +99,14 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
             }
             holding = vload8(0, lane_ray) >= 0;
             const int8 start = vload8(0, started);
+            for (uint begun = lane_bits(start); begun != 0u; begun &= begun - 1u) {
+                const int lane = lowest_lane(begun);
+                ray_max[lane] = field[6][lane];
+                exact_t[lane] = scene_exact_hit(make_float3(field[0][lane], field[1][lane], field[2][lane]),
+                                                make_float3(field[3][lane], field[4][lane], field[5][lane]), ray_max[lane]);
+                field[6][lane] = exact_march_limit(ray_max[lane], exact_t[lane], scene_march_objects());
+                exact_end[lane] = exact_t[lane] <= ray_max[lane] ? -1 : 0;
+            }
             if (any(start)) {
                 ox = vload8(0, field[0]);
                 oy = vload8(0, field[1]);
@@ -82,7 +115,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
                 vy = vload8(0, field[4]);
                 vz = vload8(0, field[5]);
                 max_distance = vload8(0, field[6]);
-                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, march_settings);
+                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, vload8(0, exact_end), march_settings);
             }
         }
         if (!any(st.running)) {

@@ -1,7 +1,7 @@
 /* What every integrator's paths share: marching a ray with its counters, the surface a ray hit
  * (point, material slot, shading frame, the error scale of the point), offsetting rays off a
  * surface, and shadow rays. Needs the scene (scene_distance, scene_distance_material,
- * scene_analytic_normal) declared before it is included, like sdf/march.h: the generated scene
+ * scene_analytic_normal, scene_surface, scene_exact_hit, scene_march_objects) declared before it is included, like sdf/march.h: the generated scene
  * source in a kernel, the host interpreter in render/host_renderer.cpp. */
 #ifndef KERNELS_PATH_H
 #define KERNELS_PATH_H
@@ -9,6 +9,7 @@
 #include "single_source/vocabulary.h"
 #include "brdf/frame.h"
 #include "kernels/render_settings.h"
+#include "sdf/exact/trace.h"
 #include "sdf/march.h"
 #include "sdf/normals.h"
 
@@ -31,8 +32,10 @@ SS_FN void count_march(MarchResult r, PathCounters* counters) {
 #endif
 }
 
+/* A ray's nearest hit: the exact hits of the plain primitives and the march of the rest
+ * (march_scene_ray, sdf/exact/trace.h). */
 SS_FN MarchResult trace_ray(float3 origin, float3 direction, MarchSettings march_settings, PathCounters* counters) {
-    MarchResult r = march(origin, direction, 0.0f, march_settings);
+    MarchResult r = march_scene_ray(origin, direction, march_settings);
     count_march(r, counters);
     return r;
 }
@@ -58,6 +61,15 @@ SS_FN float3 facing_normal(float3 n, float3 toward) {
 /* Anisotropy follows the lines of latitude about +y: brushed metal on a shader ball is brushed round it. */
 SS_FN ShadingFrame shading_frame(float3 n) { return frame_from_normal_tangent(n, make_float3(n.z, 0.0f, -n.x)); }
 
+/* The material slot and the outward normal at a hit point: an exactly intersected object's
+ * analytic normal whatever the normal method (its hit is exact, so finite differences would only
+ * add their error), else the method's. */
+SS_FN float3 surface_normal(const RenderKernelSettings* settings, float3 p, int* slot) {
+    float3 n;
+    if (scene_surface(p, slot, &n)) return n;
+    return scene_normal(p, settings->normal_step, settings->normal_method);
+}
+
 /* The surface a ray hit, as a path sees it. */
 typedef struct SurfaceHit {
     float3 p;           /* the hit point */
@@ -72,8 +84,7 @@ typedef struct SurfaceHit {
 SS_FN SurfaceHit surface_hit(const RenderKernelSettings* settings, MarchSettings march_settings, float3 origin, float3 direction, float t, bool inside) {
     SurfaceHit h;
     h.p = origin + direction * t;
-    scene_distance_material(h.p, &h.slot);
-    float3 outward = scene_normal(h.p, settings->normal_step, settings->normal_method);
+    float3 outward = surface_normal(settings, h.p, &h.slot);
     h.frame = shading_frame(inside ? -facing_normal(-outward, -direction) : facing_normal(outward, -direction));
     h.wo = frame_to_local(h.frame, -direction);
     h.epsilon = march_epsilon(march_settings, t);

@@ -86,6 +86,7 @@ film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatis
     m.set("over_relaxation", s.over_relaxation);
     m.set("show_background", s.show_background ? 1 : 0);
     m.set("object_bounds", s.object_bounds ? "on" : "off");
+    m.set("geometry", s.march_everything ? "march" : "auto");
     m.set("normals", normal_method_name(s.normals));
     m.set("normal_step", s.normal_step);
     m.set("seed", std::to_string(s.seed));

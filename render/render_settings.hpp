@@ -46,6 +46,7 @@ struct RenderSettings {
     float max_distance = 100.0f;
     bool show_background = true;   // false: escaping camera rays see black (lighting unchanged)
     bool object_bounds = true;     // box tests skip far objects (scene::CompileOptions; the field is unchanged)
+    bool march_everything = false; // --geometry march: no exact intersection (scene::CompileOptions)
     uint64_t seed = 0;
     BdptSettings bdpt;                     // bdpt, lt
     StrategyDebugSettings strategy_debug;  // bdpt, lt

@@ -61,6 +61,7 @@ std::vector<brdf::float4> emission_table(const scene::CompiledScene& scene) {
 
 Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     check_render_settings(input_.settings);
+    input_.scene.march_everything = input_.settings.march_everything;  // the host build evaluates input_.scene
     compiled_ = scene::compile_scene(input_.scene, compile_options());
     if (compiled_.materials.empty()) throw std::invalid_argument("Renderer: a scene has at least one material slot");
     clamp_materials(compiled_.materials);
@@ -89,6 +90,7 @@ void Renderer::rebuild_lights() {
 scene::CompileOptions Renderer::compile_options() const {
     scene::CompileOptions options;  // the scene's own options were applied to input_.scene already
     options.object_bounds = input_.settings.object_bounds;
+    options.march_everything = input_.settings.march_everything;
     return options;
 }
 

@@ -1,6 +1,7 @@
 #include "scene/compile.hpp"
 
 #include "scene/generated_source.hpp"
+#include "scene/geometry_paths.hpp"
 #include "scene/lipschitz.hpp"
 #include "scene/scene_bounds.hpp"
 
@@ -23,6 +24,7 @@ CompiledScene compile_scene(const Scene& input, const CompileOptions& options) {
     out.lipschitz = analysis.lipschitz;
     out.is_distance_bound = analysis.is_distance_bound;
     out.warnings = analysis.warnings;
+    out.geometry_paths = geometry_paths(scene);
     out.camera = scene.camera;
     out.environment = scene.environment;
     out.source = generate_source(scene, analysis, options.object_bounds);

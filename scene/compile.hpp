@@ -36,14 +36,16 @@ struct CompiledScene {
     // start on (docs/bdpt.md).
     Vec3 bounds_center{0.0f};
     float bounds_radius = 0.0f;
-    // A box that holds every surface, the objects' boxes (scene/lipschitz.hpp) and the emitters,
-    // -inf / inf along what is unbounded: rays that leave it stop marching (sdf/march_lanes.h).
+    // A box that holds every surface the march looks for, the boxes (scene/lipschitz.hpp) of the
+    // objects and emitters not intersected exactly, -inf / inf along what is unbounded: rays that
+    // leave it stop marching (sdf/march_lanes.h).
     // All of space when the object bounds are off.
     Vec3 surface_lo{-std::numeric_limits<float>::infinity()};
     Vec3 surface_hi{std::numeric_limits<float>::infinity()};
     float lipschitz = 1.0f;                      // SCENE_LIPSCHITZ
     bool is_distance_bound = true;               // false when a repetition breaks the bound
     std::vector<std::string> warnings;           // for the command line to print
+    std::vector<std::string> geometry_paths;     // which objects are intersected exactly (scene/geometry_paths.hpp)
     Camera camera;
     std::optional<EnvironmentSpec> environment;
 };

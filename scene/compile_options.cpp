@@ -38,6 +38,7 @@ Scene apply_options(const Scene& scene, const CompileOptions& options) {
             throw InputError(scene.file, "objects", "no object named \"" + name + "\" to disable (objects: " + list_names(objects) + ")");
         out.objects.erase(it);
     }
+    out.march_everything = options.march_everything;
     if (out.objects.empty() && out.emitters.empty())
         throw InputError(scene.file, "objects", "nothing is left to render once the disabled objects are left out");
     return out;

@@ -1,5 +1,5 @@
-// The options a scene is compiled with: materials replaced and objects left out by name, and the
-// object bounds switched on or off.
+// The options a scene is compiled with: materials replaced and objects left out by name, the
+// object bounds switched on or off, and everything marched or the plain primitives intersected.
 #pragma once
 
 #include <map>
@@ -19,6 +19,9 @@ struct CompileOptions {
     // so far (the field is unchanged; docs/scenes.md, "Object bounds"), and end a ray's march once
     // it has left the box of every surface (the same hits). Off for comparisons.
     bool object_bounds = true;
+    // Sphere-trace every object, the plain primitives too (scene/geometry_paths.hpp): the images of
+    // a field-only renderer, to compare. Off: plain primitives and emitters are intersected exactly.
+    bool march_everything = false;
 };
 
 // The scene with the options applied. Throws lab::InputError naming the scene file for a name the

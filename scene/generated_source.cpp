@@ -1,9 +1,11 @@
 #include "scene/generated_source.hpp"
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 
 #include "brdf/host/features.hpp"
+#include "scene/geometry_paths.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/nearest_writer.hpp"
 #include "scene/object_functions.hpp"
@@ -11,36 +13,77 @@
 
 namespace lab::scene {
 
+namespace {
+
+// The body of a nearest-object function (its name: `name`, and name_counted in a measurement build)
+// over what `writer` wrote.
+void write_nearest(std::ostringstream& out, const std::string& name, const NearestWriter& writer) {
+    out << "#ifdef SCENE_COUNT_EVALUATIONS\n#define SCENE_COUNT_EVALUATION (*evaluations += 1u)\n"
+        << "SS_FN float " << name << "_counted_xyz(float px, float py, float pz, int* nearest, uint* evaluations) {\n"
+        << "#else\n#define SCENE_COUNT_EVALUATION ((void)0)\n"
+        << "SS_FN float " << name << "_xyz(float px, float py, float pz, int* nearest) {\n#endif\n    int k = 0;\n    float d = INFINITY, e;\n";
+    if (writer.box_tests()) out << "    float b; /* a box test */\n";
+    out << writer.body() << "    *nearest = k;\n    return d;\n}\n#undef SCENE_COUNT_EVALUATION\n\n"
+        << "#ifdef SCENE_COUNT_EVALUATIONS\n"
+        << "SS_FN float " << name << "_xyz(float px, float py, float pz, int* nearest) {\n    uint n = 0u;\n"
+        << "    return " << name << "_counted_xyz(px, py, pz, nearest, &n);\n}\n#endif\n\n";
+}
+
+}  // namespace
+
 std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, bool object_bounds) {
     std::set<std::string> headers;
-    std::ostringstream functions;
-    std::ostringstream normals, slot_cases, normal_cases;
+    std::ostringstream functions, exact_functions;
+    std::ostringstream normals, slot_cases, normal_cases, exact_normal_cases, exact_hits;
+    std::vector<bool> marched;
     size_t index = 0;
     for (const Object& object : scene.objects) {
         FunctionWriter w(&headers);
         std::string d = emit_distance(object.shape, "p", &w);
         std::string name = "scene_object_" + std::to_string(index);
-        functions << "/* object \"" << object.name << "\" (" << object.shape.path << "), material slot " << object.material << " */\n"
+        const bool exact = object_is_exact(scene, object);
+        functions << "/* object \"" << object.name << "\" (" << object.shape.path << "), material slot " << object.material
+                  << (exact ? ", intersected exactly" : ", sphere-traced") << " */\n"
                   << "SS_FN SDF_FLOAT " << name << "(SDF_FLOAT px, SDF_FLOAT py, SDF_FLOAT pz) {\n" << w.body() << "    return " << d << ";\n}\n\n";
         if (has_analytic_normal(object.shape)) {
             FunctionWriter wn(&headers);
             std::string n = emit_normal(object.shape, "p", &wn);
             normals << "SS_FN float3 " << name << "_normal(float3 p) {\n" << wn.body() << "    return " << n << ";\n}\n\n";
             normal_cases << "    case " << index << ": *n = " << name << "_normal(p); return 1;\n";
+            if (exact) exact_normal_cases << "    case " << index << ": *n = " << name << "_normal(p); return 1;\n";
         }
+        if (exact) {
+            FunctionWriter wx(&headers);
+            std::string hit = emit_exact_hit(object.shape, "o", "v", "t_max", &wx);
+            exact_functions << "/* object \"" << object.name << "\" (" << object.shape.path << ") */\n"
+                            << "SS_FN float " << name << "_hit(float3 o, float3 v, float t_max) {\n" << wx.body() << "    return " << hit << ";\n}\n\n";
+            exact_hits << "    t = fmin(t, " << name << "_hit(o, v, fmin(t, t_max)));\n";
+        }
+        marched.push_back(!exact);
         slot_cases << "    case " << index << ": return " << object.material << ";\n";
         ++index;
     }
-    NearestWriter nearest(scene, object_bounds, false, &headers), packet(scene, object_bounds, true, &headers);
+    const bool exact_emitters = emitters_are_exact(scene);
+    const bool split = std::find(marched.begin(), marched.end(), false) != marched.end() || (exact_emitters && !scene.emitters.empty());
+    NearestWriter nearest(scene, object_bounds, false, &headers);
+    NearestWriter march(scene, object_bounds, false, &headers, marched), packet(scene, object_bounds, true, &headers, marched);
     for (size_t i = 0; i < scene.emitters.size(); ++i) {
         const EmitterSphere& e = scene.emitters[i];
         headers.insert("sdf/primitives/sphere.h");
         std::string local = "p - " + vec3_literal(e.center);
         std::string distance = "fSphere_xyz(" + offset_components(e.center) + ", " + float_literal(e.radius) + ")";
         nearest.candidate(distance, int(index), "    ");
-        packet.candidate(distance, int(index), "    ");
+        std::string normal = "    case " + std::to_string(index) + ": *n = nSphere(" + local + ", " + float_literal(e.radius) + "); return 1;\n";
+        if (exact_emitters) {
+            headers.insert("sdf/exact/sphere.h");
+            exact_hits << "    t = fmin(t, xSphere(o - " << vec3_literal(e.center) << ", v, " << float_literal(e.radius) << ", fmin(t, t_max)));\n";
+            exact_normal_cases << normal;
+        } else {
+            march.candidate(distance, int(index), "    ");
+            packet.candidate(distance, int(index), "    ");
+        }
         slot_cases << "    case " << index << ": return " << e.material << ";\n";
-        normal_cases << "    case " << index << ": *n = nSphere(" << local << ", " << float_literal(e.radius) << "); return 1;\n";
+        normal_cases << normal;
         ++index;
     }
 
@@ -48,32 +91,38 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
     out << "/* Generated by the dtoadq scene compiler from " << scene.file << "; do not edit.\n"
         << " * Objects: " << scene.objects.size() << ", emitters: " << scene.emitters.size()
         << " (" << nearest.box_tests() << " box tests). Lipschitz bound " << format_number(analysis.lipschitz)
-        << (analysis.is_distance_bound ? "" : "; NOT a distance bound (a repetition breaks it)") << ". */\n"
+        << (analysis.is_distance_bound ? "" : "; NOT a distance bound (a repetition breaks it)") << ".\n"
+        << " * Geometry paths (docs/scenes.md): intersected exactly, or sphere-traced in the march's field:\n";
+    for (const std::string& line : geometry_paths(scene)) out << " *   " << line << "\n";
+    out << " */\n"
         << "#ifndef SCENE_GENERATED_H\n#define SCENE_GENERATED_H\n\n"
         << "#define SCENE_LIPSCHITZ " << float_literal(analysis.lipschitz) << "\n"
         << "#define SCENE_EMITTER_COUNT " << scene.emitters.size() << "\n\n"
         << "#include \"single_source/vocabulary.h\"\n";
+    if (split) headers.insert("sdf/exact/interval.h");
     for (const std::string& h : headers) out << "#include \"" << h << "\"\n";
-    out << "\n" << functions.str();
+    out << "\n" << functions.str() << exact_functions.str();
+    // What every kernel, packet or not, calls per ray (sdf/exact/with_march.h).
+    out << "/* The objects in the march's field. */\n"
+        << "SS_FN int scene_march_objects(void) { return " << marched_count(scene) << "; }\n\n"
+        << "/* The nearest exact hit of the ray o + t v (v unit) with t in (0, t_max], INFINITY for none. */\n"
+        << "SS_FN float scene_exact_hit(float3 o, float3 v, float t_max) {\n";
+    if (split)
+        out << "    float t = EXACT_MISS;\n" << exact_hits.str() << "    return t;\n}\n\n";
+    else
+        out << "    (void)o;\n    (void)v;\n    (void)t_max;\n    return INFINITY;\n}\n\n";
     out << "#ifdef SDF_LANES\n"
-        << "/* The field at SDF_LANES points at once (a packet kernel, kernels/march_packets.cl): the nearest\n"
-        << " * distance only, exact in the lanes of `active`; a box test skips a group only when it may for\n"
-        << " * every one of them. */\n"
+        << "/* The march's field at SDF_LANES points at once (a packet kernel, kernels/march_packets.cl): the\n"
+        << " * nearest distance only, exact in the lanes of `active`; a box test skips a group only when it may\n"
+        << " * for every one of them. */\n"
         << "SS_FN SDF_FLOAT scene_distance_xyz(SDF_FLOAT px, SDF_FLOAT py, SDF_FLOAT pz, SDF_MASK active) {\n    SDF_FLOAT d = INFINITY;\n";
     out << (packet.box_tests() ? "    SDF_FLOAT b; /* a box test */\n" : "    (void)active;\n");
     out << packet.body() << "    return d;\n}\n\n#else /* one point at a time */\n\n" << normals.str();
     // A measurement build (-DSCENE_COUNT_EVALUATIONS, `dtoadq bench breakdown`) counts the distance
     // functions evaluated; the default build has no counter at all.
-    out << "/* The nearest object or emitter (index: objects, then emitters) and its distance. */\n"
-        << "#ifdef SCENE_COUNT_EVALUATIONS\n#define SCENE_COUNT_EVALUATION (*evaluations += 1u)\n"
-        << "SS_FN float scene_nearest_counted_xyz(float px, float py, float pz, int* nearest, uint* evaluations) {\n"
-        << "#else\n#define SCENE_COUNT_EVALUATION ((void)0)\n"
-        << "SS_FN float scene_nearest_xyz(float px, float py, float pz, int* nearest) {\n#endif\n    int k = 0;\n    float d = INFINITY, e;\n";
-    if (nearest.box_tests()) out << "    float b; /* a box test */\n";
-    out << nearest.body() << "    *nearest = k;\n    return d;\n}\n\n"
-        << "#ifdef SCENE_COUNT_EVALUATIONS\n"
-        << "SS_FN float scene_nearest_xyz(float px, float py, float pz, int* nearest) {\n    uint n = 0u;\n"
-        << "    return scene_nearest_counted_xyz(px, py, pz, nearest, &n);\n}\n\n"
+    out << "/* The nearest object or emitter (index: objects, then emitters) and its distance. */\n";
+    write_nearest(out, "scene_nearest", nearest);
+    out << "#ifdef SCENE_COUNT_EVALUATIONS\n"
         << "SS_FN float scene_distance_counted(float3 p, uint* evaluations) {\n    int k;\n"
         << "    return scene_nearest_counted_xyz(p.x, p.y, p.z, &k, evaluations);\n}\n#endif\n\n"
         << "SS_FN float scene_nearest(float3 p, int* nearest) { return scene_nearest_xyz(p.x, p.y, p.z, nearest); }\n\n"
@@ -81,15 +130,36 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
         << slot_cases.str() << "    default: return 0;\n    }\n}\n\n"
         << "/* The field at a point given as three floats: what a vectorised march calls. */\n"
         << "SS_FN float scene_distance_xyz(float px, float py, float pz) {\n    int k;\n    return scene_nearest_xyz(px, py, pz, &k);\n}\n\n"
-        << "SS_FN float scene_distance(float3 p) { return scene_distance_xyz(p.x, p.y, p.z); }\n\n"
-        << "/* The distance and the material slot of the nearest object. */\n"
+        << "SS_FN float scene_distance(float3 p) { return scene_distance_xyz(p.x, p.y, p.z); }\n\n";
+    if (split) {
+        out << "/* The march's field: the objects that are not intersected exactly. */\n";
+        write_nearest(out, "scene_march_nearest", march);
+        out << "#ifdef SCENE_COUNT_EVALUATIONS\n"
+            << "SS_FN float scene_march_distance_counted(float3 p, uint* evaluations) {\n    int k;\n"
+            << "    return scene_march_nearest_counted_xyz(p.x, p.y, p.z, &k, evaluations);\n}\n#endif\n\n"
+            << "SS_FN float scene_march_distance(float3 p) {\n    int k;\n    return scene_march_nearest_xyz(p.x, p.y, p.z, &k);\n}\n\n";
+    } else {
+        out << "/* The march's field: every object. */\n"
+            << "#ifdef SCENE_COUNT_EVALUATIONS\n"
+            << "SS_FN float scene_march_distance_counted(float3 p, uint* evaluations) { return scene_distance_counted(p, evaluations); }\n#endif\n\n"
+            << "SS_FN float scene_march_distance(float3 p) { return scene_distance(p); }\n\n";
+    }
+    out << "/* The distance and the material slot of the nearest object. */\n"
         << "SS_FN float scene_distance_material(float3 p, int* material) {\n    int k;\n"
         << "    float d = scene_nearest(p, &k);\n    *material = scene_material_slot(k);\n    return d;\n}\n\n"
         << "/* The nearest object's analytic normal where it is one primitive under rigid transforms and\n"
         << " * uniform scales; 0 (no normal) elsewhere. */\n"
         << "SS_FN int scene_analytic_normal(float3 p, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
         << "    switch (k) {\n" << normal_cases.str() << "    default: return 0;\n    }\n}\n\n"
-        << "#endif /* SDF_LANES */\n\n#endif\n";
+        << "/* At a hit point, one nearest-object search for both: the material slot and, where that object is\n"
+        << " * intersected exactly, its analytic normal (1; 0 elsewhere). */\n"
+        << "SS_FN int scene_surface(float3 p, int* slot, float3* n) {\n    int k;\n    scene_nearest(p, &k);\n"
+        << "    *slot = scene_material_slot(k);\n";
+    if (split)
+        out << "    switch (k) {\n" << exact_normal_cases.str() << "    default: return 0;\n    }\n}\n\n";
+    else
+        out << "    (void)n;\n    return 0;\n}\n\n";
+    out << "#endif /* SDF_LANES */\n\n#endif\n";
     return out.str();
 }
 

@@ -1,7 +1,10 @@
 #include "scene/interpreter.hpp"
 
+#include "scene/geometry_paths.hpp"
 #include "scene/rotation.hpp"
 #include "sdf/sdf.hpp"
+
+#include <cmath>
 
 namespace lab::scene {
 namespace {
@@ -29,6 +32,29 @@ bool primitive_normal(const NodeKind& kind, Vec3 p, Vec3* n) {
     else if (auto* c = std::get_if<Cone>(&kind)) *n = sdf::nCone(p, c->radius, c->height);
     else return false;
     return true;
+}
+
+float primitive_exact_hit(const NodeKind& kind, Vec3 o, Vec3 v, float t_max) {
+    if (auto* s = std::get_if<Sphere>(&kind)) return sdf::xSphere(o, v, s->radius, t_max);
+    if (auto* q = std::get_if<Plane>(&kind)) return sdf::xPlane(o, v, q->normal, q->offset, t_max);
+    if (auto* b = std::get_if<Box>(&kind)) return sdf::xBox(o, v, b->half_size, t_max);
+    if (auto* b = std::get_if<RoundBox>(&kind)) return sdf::xRoundBox(o, v, b->half_size, b->radius, t_max);
+    if (auto* t = std::get_if<Torus>(&kind)) return sdf::xTorus(o, v, t->major_radius, t->minor_radius, t_max);
+    if (auto* c = std::get_if<Cylinder>(&kind)) return sdf::xCylinder(o, v, c->radius, c->half_height, t_max);
+    if (auto* c = std::get_if<Capsule>(&kind)) return sdf::xCapsule(o, v, c->radius, c->half_height, t_max);
+    if (auto* c = std::get_if<Cone>(&kind)) return sdf::xCone(o, v, c->radius, c->height, t_max);
+    return EXACT_MISS;
+}
+
+// As the compiled hit functions (emit_exact_hit): the ray down to the primitive's frame.
+float shape_exact_hit(const Node& node, Vec3 o, Vec3 v, float t_max) {
+    if (node.children.empty()) return primitive_exact_hit(node.kind, o, v, t_max);
+    const Node& child = node.children[0];
+    if (auto* t = std::get_if<Translate>(&node.kind)) return shape_exact_hit(child, o - t->offset, v, t_max);
+    if (auto* r = std::get_if<Rotate>(&node.kind))
+        return shape_exact_hit(child, apply_rotation(r->rotation, o, true), apply_rotation(r->rotation, v, true), t_max);
+    auto* s = std::get_if<Scale>(&node.kind);
+    return s->factor * shape_exact_hit(child, o / s->factor, v, t_max / s->factor);
 }
 
 float combine(Combinator op, float a, float b, float r) {
@@ -63,18 +89,27 @@ bool shape_normal(const Node& node, Vec3 p, Vec3* n) {
 }
 
 // Objects in file order, then emitters; a tie keeps the earlier (as the generated scene_nearest).
-float nearest_surface(const Scene& scene, Vec3 p, int* nearest) {
-    float d = 0.0f;
+// march_only: the march's field, without what is intersected exactly (INFINITY when empty).
+float nearest_surface(const Scene& scene, Vec3 p, int* nearest, bool march_only = false) {
+    float d = INFINITY;
     int k = 0, index = 0;
+    bool first = true;
     auto consider = [&](float e) {
-        if (index == 0 || e < d) {
+        if (first || e < d) {
+            first = false;
             d = e;
             k = index;
         }
         ++index;
     };
-    for (const Object& o : scene.objects) consider(shape_distance(o.shape, p));
-    for (const EmitterSphere& e : scene.emitters) consider(sdf::fSphere(p - e.center, e.radius));
+    for (const Object& o : scene.objects) {
+        if (march_only && object_is_exact(scene, o)) ++index;
+        else consider(shape_distance(o.shape, p));
+    }
+    for (const EmitterSphere& e : scene.emitters) {
+        if (march_only && emitters_are_exact(scene)) ++index;
+        else consider(sdf::fSphere(p - e.center, e.radius));
+    }
     *nearest = k;
     return d;
 }
@@ -110,6 +145,29 @@ float scene_distance_material(const Scene& scene, Vec3 p, int* material) {
     int objects = int(scene.objects.size());
     *material = k < objects ? scene.objects[size_t(k)].material : scene.emitters[size_t(k - objects)].material;
     return d;
+}
+
+float scene_march_distance(const Scene& scene, Vec3 p) {
+    int k;
+    return nearest_surface(scene, p, &k, true);
+}
+
+float scene_exact_hit(const Scene& scene, Vec3 o, Vec3 v, float t_max) {
+    float t = EXACT_MISS;
+    for (const Object& object : scene.objects)
+        if (object_is_exact(scene, object)) t = std::fmin(t, shape_exact_hit(object.shape, o, v, std::fmin(t, t_max)));
+    if (emitters_are_exact(scene))
+        for (const EmitterSphere& e : scene.emitters) t = std::fmin(t, sdf::xSphere(o - e.center, v, e.radius, std::fmin(t, t_max)));
+    return t;
+}
+
+int scene_surface(const Scene& scene, Vec3 p, int* slot, Vec3* n) {
+    int k;
+    nearest_surface(scene, p, &k);
+    int objects = int(scene.objects.size());
+    *slot = k < objects ? scene.objects[size_t(k)].material : scene.emitters[size_t(k - objects)].material;
+    if (k < objects ? !object_is_exact(scene, scene.objects[size_t(k)]) : !emitters_are_exact(scene)) return 0;
+    return scene_analytic_normal(scene, p, n);
 }
 
 int scene_analytic_normal(const Scene& scene, Vec3 p, Vec3* n) {

@@ -16,4 +16,12 @@ float scene_distance(const Scene& scene, Vec3 p);
 float scene_distance_material(const Scene& scene, Vec3 p, int* material);
 int scene_analytic_normal(const Scene& scene, Vec3 p, Vec3* n);
 
+// The generated scene_march_distance (the field without what is intersected exactly, INFINITY when
+// that is everything), scene_exact_hit (the nearest exact hit with t in (0, t_max], INFINITY for
+// none) and scene_surface (the nearest object's material slot and, when it is intersected exactly,
+// 1 and its analytic normal, else 0); scene/geometry_paths.hpp says which objects are.
+float scene_march_distance(const Scene& scene, Vec3 p);
+float scene_exact_hit(const Scene& scene, Vec3 o, Vec3 v, float t_max);
+int scene_surface(const Scene& scene, Vec3 p, int* slot, Vec3* n);
+
 }  // namespace lab::scene

@@ -35,8 +35,9 @@ std::string box_distance(const ObjectTreeNode& n) {
 
 }  // namespace
 
-NearestWriter::NearestWriter(const Scene& scene, bool object_bounds, bool packet, std::set<std::string>* headers)
+NearestWriter::NearestWriter(const Scene& scene, bool object_bounds, bool packet, std::set<std::string>* headers, const std::vector<bool>& included)
     : headers_(headers), packet_(packet) {
+    auto takes_part = [&](size_t i) { return included.empty() || included[i]; };
     std::vector<ObjectBox> boxes;
     std::vector<ShapeAnalysis> analyses;
     for (const Object& object : scene.objects) analyses.push_back(analyse_shape(object.shape));
@@ -46,11 +47,12 @@ NearestWriter::NearestWriter(const Scene& scene, bool object_bounds, bool packet
     auto finite = [](const ShapeAnalysis& a) {
         return std::isfinite(a.box_half.x) && std::isfinite(a.box_half.y) && std::isfinite(a.box_half.z) && a.broken.empty();
     };
-    for (const ShapeAnalysis& a : analyses)
-        if (finite(a)) lo = glm::min(lo, a.box_center - a.box_half), hi = glm::max(hi, a.box_center + a.box_half);
+    for (size_t i = 0; i < analyses.size(); ++i)
+        if (const ShapeAnalysis& a = analyses[i]; takes_part(i) && finite(a)) lo = glm::min(lo, a.box_center - a.box_half), hi = glm::max(hi, a.box_center + a.box_half);
     float large = 0.5f * glm::length(hi - lo);
     std::vector<int> last;  // large objects with a box test of their own
     for (size_t i = 0; i < scene.objects.size(); ++i) {
+        if (!takes_part(i)) continue;
         const ShapeAnalysis& a = analyses[i];
         bool own = object_bounds && worth_bounding(scene.objects[i], a);
         if (object_bounds && finite(a) && 2.0f * glm::length(a.box_half) <= large)

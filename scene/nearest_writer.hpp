@@ -27,7 +27,9 @@ public:
     // nearest distance only; a box test skips a group only when it may for every active lane (the
     // march's running lanes: a lane that is done would keep its own object's group in every step),
     // and the guess goes down the child nearer to the active lanes on the whole.
-    NearestWriter(const Scene& scene, bool object_bounds, bool packet, std::set<std::string>* headers);
+    // Only the objects for which `included` is true (all when it is empty) take part: the march's
+    // field leaves out the objects intersected exactly.
+    NearestWriter(const Scene& scene, bool object_bounds, bool packet, std::set<std::string>* headers, const std::vector<bool>& included = {});
 
     // A surface at distance `expression`, index `index`.
     void candidate(const std::string& expression, int index, const std::string& indent);

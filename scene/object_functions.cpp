@@ -154,6 +154,24 @@ std::string emit_normal(const Node& node, const std::string& p, FunctionWriter* 
     return emit_normal(child, w->point(p + " / " + float_literal(s->factor)), w);
 }
 
+std::string emit_exact_hit(const Node& node, const std::string& o, const std::string& v, const std::string& t_max, FunctionWriter* w) {
+    if (auto call = primitive_call(node.kind)) {
+        std::string header = call->header;
+        w->use(header.replace(header.find("primitives"), std::string("primitives").size(), "exact"));
+        return std::string("x") + call->stem + "(" + o + ", " + v + ", " + call->arguments + ", " + t_max + ")";
+    }
+    const Node& child = node.children[0];
+    if (auto* t = std::get_if<Translate>(&node.kind)) return emit_exact_hit(child, w->point(o + " - " + vec3_literal(t->offset)), v, t_max, w);
+    if (auto* r = std::get_if<Rotate>(&node.kind)) {
+        std::string local_o = w->point(rotation_expression(r->rotation, o, true));
+        return emit_exact_hit(child, local_o, w->point(rotation_expression(r->rotation, v, true)), t_max, w);
+    }
+    auto* s = std::get_if<Scale>(&node.kind);
+    std::string local_o = w->point(o + " / " + float_literal(s->factor));
+    std::string hit = emit_exact_hit(child, local_o, v, w->scalar(t_max + " / " + float_literal(s->factor)), w);
+    return float_literal(s->factor) + " * (" + hit + ")";
+}
+
 float evaluation_cost(const Node& node) {
     if (primitive_call(node.kind)) return std::holds_alternative<Cone>(node.kind) ? 2.0f : 1.0f;
     float cost = 0.0f;

@@ -24,6 +24,7 @@ public:
     }
     std::string distance(const std::string& expression) { return local("SDF_FLOAT", "d", expression); }
     std::string normal(const std::string& expression) { return local("float3", "n", expression); }
+    std::string scalar(const std::string& expression) { return local("float", "t", expression); }
     void use(const std::string& header) { headers_->insert(header); }
     const std::string& body() const { return body_; }
 
@@ -48,6 +49,12 @@ bool has_analytic_normal(const Node& node);
 
 // The analytic normal of a node has_analytic_normal() accepts, at the float3 point p.
 std::string emit_normal(const Node& node, const std::string& p, FunctionWriter* w);
+
+// The exact hit (sdf/exact/) of the ray from the float3 o along the unit float3 v, with t in
+// (0, t_max] (t_max a float), of a node has_analytic_normal() accepts, EXACT_MISS without one: the
+// ray taken down to the primitive's frame (a rotation turns both o and v, a uniform scale s divides
+// o and t_max by s and multiplies the hit by s, v staying unit), as the host interpreter does.
+std::string emit_exact_hit(const Node& node, const std::string& o, const std::string& v, const std::string& t_max, FunctionWriter* w);
 
 // A rough cost of evaluating the node, in primitive evaluations: where an object costs more than its
 // box test (about one and a half primitives), the test pays when it skips the object.

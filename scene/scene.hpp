@@ -123,6 +123,9 @@ struct Scene {
     std::vector<EmitterSphere> emitters;
     std::vector<PointLight> point_lights;
     std::optional<EnvironmentSpec> environment;
+    // Sphere-trace every object and emitter, the plain primitives too (`--geometry march`, set by
+    // apply_options); otherwise they are intersected exactly (scene/geometry_paths.hpp).
+    bool march_everything = false;
 };
 
 }  // namespace lab::scene

@@ -1,5 +1,7 @@
 #include "scene/scene_bounds.hpp"
 
+#include "scene/geometry_paths.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -38,7 +40,9 @@ void surface_box(const Scene& scene, const SceneAnalysis& analysis, Vec3* lo, Ve
     const float inf = std::numeric_limits<float>::infinity();
     *lo = Vec3(inf);
     *hi = Vec3(-inf);
+    // what is intersected exactly is not marched, so the march need not look for it
     for (const Object& object : scene.objects) {
+        if (object_is_exact(scene, object)) continue;
         const ShapeAnalysis a = analyse_shape(object.shape);
         Vec3 a_lo = a.box_center - a.box_half, a_hi = a.box_center + a.box_half;
         // the solid of a plane is n.p + offset < 0 (sdf/primitives/plane.h)
@@ -51,6 +55,7 @@ void surface_box(const Scene& scene, const SceneAnalysis& analysis, Vec3* lo, Ve
         *hi = glm::max(*hi, a_hi);
     }
     for (const EmitterSphere& e : scene.emitters) {
+        if (emitters_are_exact(scene)) break;
         *lo = glm::min(*lo, e.center - Vec3(e.radius));
         *hi = glm::max(*hi, e.center + Vec3(e.radius));
     }

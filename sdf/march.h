@@ -1,5 +1,5 @@
 /* Sphere tracing of the scene, one ray at a time (the algorithm: sdf/march_lanes.h).
- * Needs `float scene_distance(float3 p)` declared before this header is included: the generated
+ * Needs `float scene_march_distance(float3 p)` declared before this header is included: the generated
  * scene source defines it in a kernel; on the host see sdf/sdf.hpp. */
 #ifndef SDF_MARCH_H
 #define SDF_MARCH_H

@@ -8,8 +8,9 @@
  * computes, the same operations in the same order, so both give the same t, status and steps to the
  * bit.
  *
- * Needs the scene's field declared before it is included: scene_distance(float3) for one lane
- * (the generated scene source in a kernel; on the host see sdf/sdf.hpp), scene_distance_xyz with
+ * Needs the scene's field declared before it is included: scene_march_distance(float3) for one lane,
+ * the objects that are not intersected exactly (sdf/exact/with_march.h; the generated scene source
+ * in a kernel; on the host see sdf/sdf.hpp), scene_distance_xyz with
  * SDF_FLOAT components and the mask of the lanes whose distance counts for a packet (the generated
  * source's packet form; a lane that is done gets a distance that may be too large, never used). */
 #ifndef SDF_MARCH_LANES_H
@@ -23,9 +24,9 @@
 #define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance_xyz(x, y, z, running)
 #elif defined(SCENE_COUNT_EVALUATIONS)
 /* a measurement build (`dtoadq bench breakdown`): the distance functions evaluated are counted */
-#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance_counted(make_float3(x, y, z), evaluations)
+#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_march_distance_counted(make_float3(x, y, z), evaluations)
 #else
-#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_distance(make_float3(x, y, z))
+#define MARCH_LANES_DISTANCE(x, y, z, running, evaluations) scene_march_distance(make_float3(x, y, z))
 #endif
 
 typedef struct MarchLanes {
@@ -77,13 +78,15 @@ typedef struct MarchLanesState {
     SDF_FLOAT step;   /* the length of that step */
     SDF_FLOAT omega;  /* the over-relaxation: s.over_relaxation, 1 after a failed step */
     SDF_FLOAT exit;   /* march_surface_exit of the ray */
+    SDF_MASK surface_at_end; /* a surface lies at the lane's max distance (MarchSettings) */
 } MarchLanesState;
 
 /* Each lane's march of o + t v from t_start, before its first step: running unless t_start is past
  * its max_distance or the ray's exit from the surface box (a miss with no step) or max_steps is 0
- * (out of steps). */
+ * (out of steps). surface_at_end: the lanes whose max distance is a surface's (MarchSettings'
+ * surface_at_max_distance, lane by lane). */
 SS_FN MarchLanesState march_lanes_start(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_start,
-                                        SDF_FLOAT max_distance, MarchSettings s) {
+                                        SDF_FLOAT max_distance, SDF_MASK surface_at_end, MarchSettings s) {
     MarchLanesState st;
     st.m.t = t_start;
     st.m.steps = (SDF_MASK)0;
@@ -96,13 +99,14 @@ SS_FN MarchLanesState march_lanes_start(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz
     st.r_prev = 0.0f;
     st.step = 0.0f;
     st.omega = s.over_relaxation;
+    st.surface_at_end = surface_at_end;
     return st;
 }
 
 /* The lanes of `lanes` begin again at t_start (march_lanes_start); the others keep their march. */
 SS_FN MarchLanesState march_lanes_restart(MarchLanesState st, SDF_MASK lanes, SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy,
-                                          SDF_FLOAT vz, SDF_FLOAT t_start, SDF_FLOAT max_distance, MarchSettings s) {
-    MarchLanesState fresh = march_lanes_start(ox, oy, oz, vx, vy, vz, t_start, max_distance, s);
+                                          SDF_FLOAT vz, SDF_FLOAT t_start, SDF_FLOAT max_distance, SDF_MASK surface_at_end, MarchSettings s) {
+    MarchLanesState fresh = march_lanes_start(ox, oy, oz, vx, vy, vz, t_start, max_distance, surface_at_end, s);
     st.m.t = select(st.m.t, fresh.m.t, lanes);
     st.m.status = select(st.m.status, fresh.m.status, lanes);
     st.m.steps = select(st.m.steps, fresh.m.steps, lanes);
@@ -113,6 +117,7 @@ SS_FN MarchLanesState march_lanes_restart(MarchLanesState st, SDF_MASK lanes, SD
     st.step = select(st.step, fresh.step, lanes);
     st.omega = select(st.omega, fresh.omega, lanes);
     st.exit = select(st.exit, fresh.exit, lanes);
+    st.surface_at_end = select(st.surface_at_end, fresh.surface_at_end, lanes);
     return st;
 }
 
@@ -161,7 +166,10 @@ SS_FN void march_lanes_advance(MarchLanesState* st, SDF_FLOAT ox, SDF_FLOAT oy, 
     st->r_prev = select(st->r_prev, r, advance);
     st->step = select(st->step, st->omega * r, advance);
     t = select(t, t + st->step, advance);
-    SDF_MASK miss = advance && (t > max_distance || st->t_prev + st->r_prev > st->exit);
+    /* past the max distance: where a surface lies there, only once the verified safe sphere reaches
+     * it (an over-relaxed step that leapt past it is checked first, as at the surface box's exit) */
+    SDF_MASK past_end = select((SDF_MASK)(t > max_distance), (SDF_MASK)(st->t_prev + st->r_prev > max_distance), st->surface_at_end);
+    SDF_MASK miss = advance && (past_end || st->t_prev + st->r_prev > st->exit);
     st->m.status = select(st->m.status, (SDF_MASK)MARCH_MISS, miss);
     running = running && !miss;
     st->m.t = t;
@@ -169,10 +177,11 @@ SS_FN void march_lanes_advance(MarchLanesState* st, SDF_FLOAT ox, SDF_FLOAT oy, 
 }
 
 /* Marches each lane from o + t_start v to its first surface (march_lanes_advance); a lane's
- * max_distance replaces s.max_distance (a shadow ray's ends at its light). */
+ * max_distance replaces s.max_distance (a shadow ray's ends at its light), and every lane takes
+ * s.surface_at_max_distance. */
 SS_FN MarchLanes march_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_start,
                              SDF_FLOAT max_distance, MarchSettings s, uint* evaluations) {
-    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, t_start, max_distance, s);
+    MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, t_start, max_distance, (SDF_MASK)(s.surface_at_max_distance != 0 ? -1 : 0), s);
     while (SDF_ANY(st.running)) march_lanes_advance(&st, ox, oy, oz, vx, vy, vz, max_distance, s, evaluations);
     return st.m;
 }

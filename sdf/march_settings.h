@@ -14,6 +14,10 @@ typedef struct MarchSettings {
     float epsilon_min;
     int max_steps;          /* distance evaluations */
     float max_distance;     /* along the ray, from the origin */
+    /* non-0: a surface lies at max_distance (the ray's exact hit, sdf/exact/with_march.h), so the
+     * march ends as a miss only once a step it has verified reaches it, never on an over-relaxed
+     * step that leaps past it unchecked (sdf/march_lanes.h) */
+    int surface_at_max_distance;
     float over_relaxation;  /* omega: 1 = plain sphere tracing; 1.2..1.6 Keinert et al. 2014 */
     float lipschitz;        /* distances are divided by this (the scene's bound, >= 1) */
     /* A box holding every surface (the scene compiler's surface box), -INFINITY / INFINITY where
@@ -27,7 +31,7 @@ typedef struct MarchSettings {
  *  - epsilon_min 1e-5: the threshold near the origin, where epsilon_relative * t vanishes;
  *  - max_steps 256: plain tracing reaches most surfaces in tens of steps; rays grazing a surface
  *    take many small steps and end as MARCH_OUT_OF_STEPS rather than loop for ever;
- *  - max_distance 100: rays that leave it see the environment;
+ *  - max_distance 100: rays that leave it see the environment, and no surface lies there;
  *  - over_relaxation 1 (plain): safe for any bound; 1.2..1.6 saves steps on grazing rays, at the
  *    price of a step back when a step overshoots (see march());
  *  - no surface box: the whole of space may hold surfaces. */
@@ -37,6 +41,7 @@ SS_FN MarchSettings march_settings_default(float lipschitz) {
     s.epsilon_min = 1e-5f;
     s.max_steps = 256;
     s.max_distance = 100.0f;
+    s.surface_at_max_distance = 0;
     s.over_relaxation = 1.0f;
     s.lipschitz = lipschitz;
     /* without a loop, as render_march_settings (kernels/render_settings.h) */

@@ -1,8 +1,9 @@
 // The single-source SDF library compiled as C++ for the host: namespace sdf.
 //
-// Primitives, domain operators, combinators and Lipschitz bounds are here. The marcher and the
-// normals (sdf/march.h, sdf/normals.h) call the scene's `scene_distance` (and
-// `scene_analytic_normal`), which must be declared before them, so they are NOT included here:
+// Primitives, their exact ray intersections (sdf/exact/), domain operators, combinators and
+// Lipschitz bounds are here. The marcher and the normals (sdf/march.h, sdf/normals.h) call the
+// scene's `scene_march_distance` (the field the march sees), `scene_distance` and
+// `scene_analytic_normal`, which must be declared before them, so they are NOT included here:
 // a host translation unit that marches declares its scene in a namespace of its own and includes
 // them after it:
 //
@@ -10,6 +11,7 @@
 //     namespace my_scene {            // one namespace per scene (the headers have include guards,
 //     using namespace sdf;            // so one scene per translation unit; a scene that dispatches
 //     inline float scene_distance(float3 p) { return fSphere(p, 1.0f); }   // at run time can
+//     inline float scene_march_distance(float3 p) { return scene_distance(p); }
 //     inline int scene_analytic_normal(float3 p, float3* n) {              // serve several)
 //         *n = nSphere(p, 1.0f);
 //         return 1;
@@ -37,6 +39,14 @@ using namespace single_source;
 #include "sdf/primitives/round_box.h"
 #include "sdf/primitives/sphere.h"
 #include "sdf/primitives/torus.h"
+#include "sdf/exact/box.h"
+#include "sdf/exact/capsule.h"
+#include "sdf/exact/cone.h"
+#include "sdf/exact/cylinder.h"
+#include "sdf/exact/plane.h"
+#include "sdf/exact/round_box.h"
+#include "sdf/exact/sphere.h"
+#include "sdf/exact/torus.h"
 #include "sdf/domain/mirror.h"
 #include "sdf/domain/mod3.h"
 #include "sdf/domain/mod_interval3.h"

@@ -11,12 +11,15 @@
 
 namespace {
 
-lab::bench::MarchCost work_of(const lab::opencl::Runtime& runtime, const char* file, bool object_bounds) {
+// march_everything: the plain primitives marched too (--geometry march), so that the counters see
+// the field of every object; otherwise they are intersected exactly and march nothing.
+lab::bench::MarchCost work_of(const lab::opencl::Runtime& runtime, const char* file, bool object_bounds, bool march_everything = true) {
     lab::render::RenderInput input;
     input.scene = lab::scene::load_scene(file);
     input.environment = lab::ibl::Environment::constant(brdf::float3(0.5f), "grey", lab::ibl::EnvironmentOptions{});
     input.settings.width = input.settings.height = 16;
     input.settings.object_bounds = object_bounds;
+    input.settings.march_everything = march_everything;
     return lab::bench::measure_march_cost(runtime, input, 1);
 }
 
@@ -41,4 +44,10 @@ TEST_CASE("March work: the counting build traces the same paths and counts every
     lab::bench::MarchCost ball = work_of(runtime, "scenes/shader_ball.json", true);
     CHECK(ball.same_film);
     CHECK(ball.evaluations_per_step < 3.0);
+
+    // intersected exactly, the sphere is never marched
+    lab::bench::MarchCost exact = work_of(runtime, "tools/bench_scenes/sphere.json", true, false);
+    CHECK(exact.same_film);
+    CHECK(exact.rays_per_path > 1.0);
+    CHECK(exact.steps_per_ray == 0.0);
 }

@@ -51,7 +51,9 @@ std::string error_of(const Scene& scene, const lab::scene::CompileOptions& optio
 TEST_CASE("scene compiler: a sphere-only scene's kernel holds no other sdf code", "[scene]") {
     CompiledScene c = lab::scene::compile_scene(lab::scene::parse_scene(kSphereOnly, "sphere.json"));
     lab::opencl::AssembledSource source = lab::kernels::assemble_scene_kernel("kernels/scene_probe.cl", c);
-    CHECK(origin_files(source) == std::set<std::string>{"kernels/scene_probe.cl", "scene/generated.h", "single_source/vocabulary.h", "sdf/primitives/sphere.h"});
+    // the sphere is intersected exactly (sdf/exact/), and its field kept for normals and materials
+    CHECK(origin_files(source) == std::set<std::string>{"kernels/scene_probe.cl", "scene/generated.h", "single_source/vocabulary.h", "sdf/primitives/sphere.h",
+                                                        "sdf/exact/sphere.h", "sdf/exact/interval.h"});
     CHECK(source.text.find("fSphere_xyz(px, py, pz, 1.0f)") != std::string::npos);
     for (const char* absent : {"fTorus", "fBox", "fRoundBox", "fCylinder", "fCapsule", "fCone", "fPlane", "pMod3", "pModInterval3", "fOpUnion",
                                "fOpIntersection", "fOpSubtraction", "fOpDisplaceSine", "lipschitz_"}) {
@@ -88,10 +90,12 @@ TEST_CASE("scene compiler: the shader ball includes exactly the headers it uses"
     std::set<std::string> included;
     for (size_t at = c.source.find("#include \"sdf/"); at != std::string::npos; at = c.source.find("#include \"sdf/", at + 1))
         included.insert(c.source.substr(at + 10, c.source.find('"', at + 10) - at - 10));
+    // the core (a sphere) and the ground (a plane) are intersected exactly, the body is marched
     CHECK(included == std::set<std::string>{"sdf/primitives/sphere.h", "sdf/primitives/plane.h", "sdf/primitives/box.h",
                                             "sdf/primitives/round_box.h", "sdf/primitives/torus.h", "sdf/primitives/cylinder.h",
                                             "sdf/combinators/union_smooth.h", "sdf/combinators/subtraction.h",
-                                            "sdf/combinators/intersection.h"});
+                                            "sdf/combinators/intersection.h", "sdf/exact/interval.h", "sdf/exact/sphere.h",
+                                            "sdf/exact/plane.h"});
     // ... and what those pull in is no more than their own helpers.
     std::set<std::string> assembled = origin_files(lab::kernels::assemble_scene_kernel("kernels/scene_probe.cl", c));
     for (const char* unused : {"sdf/primitives/cone.h", "sdf/primitives/capsule.h", "sdf/domain/mod3.h", "sdf/domain/mod_interval3.h",

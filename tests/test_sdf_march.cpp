@@ -16,6 +16,7 @@ namespace sdf_test_march {
 using namespace sdf;
 static std::function<float(float3)> current_distance;
 inline float scene_distance(float3 p) { return current_distance(p); }
+inline float scene_march_distance(float3 p) { return scene_distance(p); }
 inline int scene_analytic_normal(float3, float3*) { return 0; }
 #include "sdf/march.h"
 #include "sdf/normals.h"

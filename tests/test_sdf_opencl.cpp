@@ -34,6 +34,7 @@ SS_FN float scene_distance(float3 p) {
                                          make_float3(0.0f, 0.0f, -1.0f), make_float3(0.0f, 0.0f, 1.0f)), 0.5f, 0.2f));
     return d;
 }
+SS_FN float scene_march_distance(float3 p) { return scene_distance(p); }
 SS_FN int scene_analytic_normal(float3 p, float3* n) {
     if (p.x > 1.5f) return 0;
     *n = nSphere(p - make_float3(0.0f, 0.2f, 0.0f), 0.9f);

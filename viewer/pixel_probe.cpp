@@ -9,14 +9,13 @@ PixelProbe probe_pixel(const scene::Scene& scene, const kernel::RenderKernelSett
     const render::HostSceneScope scene_scope(scene);
     float3 origin, direction;
     camera_generate_ray(&camera, float(x) + 0.5f, float(y) + 0.5f, make_float2(0.5f, 0.5f), &origin, &direction);
-    MarchResult r = march(origin, direction, 0.0f, render_march_settings(&settings));
+    MarchResult r = march_scene_ray(origin, direction, render_march_settings(&settings));
     PixelProbe p;
     if (r.status != MARCH_HIT) return p;
     p.hit = true;
     p.depth = r.t;
     p.position = origin + direction * r.t;
-    p.normal = scene_normal(p.position, settings.normal_step, settings.normal_method);
-    scene_distance_material(p.position, &p.material);
+    p.normal = surface_normal(&settings, p.position, &p.material);
     return p;
 }
 

@@ -1,0 +1,65 @@
+/* What every exact intersection (sdf/exact/) shares. A ray o + t v (v unit) meets a convex solid in
+ * one interval [enter, exit] of t; its first crossing of the surface after the origin is `enter`
+ * from outside and `exit` from inside (a ray that leaves a solid, for refraction). Every xShape
+ * function returns that crossing when it lies in (0, t_max], else EXACT_MISS. */
+#ifndef SDF_EXACT_INTERVAL_H
+#define SDF_EXACT_INTERVAL_H
+
+#include "single_source/vocabulary.h"
+
+#define EXACT_MISS INFINITY
+
+/* The first crossing of a convex solid's surface, given its interval (empty when enter > exit or a
+ * bound is NaN). */
+SS_FN float exact_first_crossing(float enter, float exit, float t_max) {
+    if (!(enter <= exit)) return EXACT_MISS;
+    float t = enter > 0.0f ? enter : exit;
+    return t > 0.0f && t <= t_max ? t : EXACT_MISS;
+}
+
+/* The roots t0 <= t1 of a t^2 + 2 b t + c, given disc = b^2 - a c computed by the caller in a form
+ * that keeps its precision (Haines et al. 2019, "Precision Improvements for Ray/Sphere
+ * Intersection": from the distance of the axis or centre to the ray, not from b^2 - a c). The root
+ * of larger magnitude is q / a with q = -(b + sign(b) sqrt(disc)), the other c / q: no difference
+ * of nearly equal numbers. 0 when disc < 0 (no real root). a > 0. */
+SS_FN int exact_quadratic_roots(float a, float b, float c, float disc, float* t0, float* t1) {
+    if (!(disc >= 0.0f)) return 0;
+    float s = sqrt(disc);
+    float q = -(b + (b >= 0.0f ? s : -s));
+    if (q == 0.0f) { /* b = 0 and disc = 0: a double root at 0 */
+        *t0 = *t1 = 0.0f;
+        return 1;
+    }
+    float r0 = q / a, r1 = c / q;
+    *t0 = fmin(r0, r1);
+    *t1 = fmax(r0, r1);
+    return 1;
+}
+
+/* Narrows [*enter, *exit] to where c0 + c1 t >= 0 (a half-space along the ray). */
+SS_FN void exact_clip_half_space(float c0, float c1, float* enter, float* exit) {
+    if (c1 > 0.0f) *enter = fmax(*enter, -c0 / c1);
+    else if (c1 < 0.0f) *exit = fmin(*exit, -c0 / c1);
+    else if (c0 < 0.0f) *enter = INFINITY; /* parallel and outside */
+}
+
+/* Narrows [*enter, *exit] to the slab lo <= o + t v <= hi of one axis (Kay and Kajiya 1986). A
+ * component v = 0 divides to +-INFINITY, which fmin / fmax take as they should; 0 / 0 (the ray in
+ * the slab's face) is a NaN they drop, so such a ray counts as outside. */
+SS_FN void exact_clip_slab(float lo, float hi, float o, float v, float* enter, float* exit) {
+    float t0 = (lo - o) / v, t1 = (hi - o) / v;
+    *enter = fmax(*enter, fmin(t0, t1));
+    *exit = fmin(*exit, fmax(t0, t1));
+}
+
+/* The union of a convex piece's interval with the one so far, for a convex solid made of
+ * overlapping convex pieces (capsule, rounded box): the ray meets a convex union in one interval,
+ * which is the union of the pieces' intervals, so its ends are the least entry and the greatest
+ * exit of the pieces it meets. */
+SS_FN void exact_union_interval(float enter, float exit, float* union_enter, float* union_exit) {
+    if (!(enter <= exit)) return;
+    *union_enter = fmin(*union_enter, enter);
+    *union_exit = fmax(*union_exit, exit);
+}
+
+#endif

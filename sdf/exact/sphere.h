@@ -1,0 +1,23 @@
+/* Exact ray intersection of sdf/primitives/sphere.h: the sphere |p| = r. */
+#ifndef SDF_EXACT_SPHERE_H
+#define SDF_EXACT_SPHERE_H
+
+#include "single_source/vocabulary.h"
+#include "sdf/exact/interval.h"
+
+/* The interval of t where |o + t v| <= r (v unit): t^2 + 2 b t + c <= 0 with b = o.v and
+ * c = |o|^2 - r^2. The discriminant b^2 - c = r^2 - |o - b v|^2 is taken from the distance of the
+ * centre to the line (Haines et al. 2019), exact where b^2 - c would cancel (far or grazing rays). */
+SS_FN int sphere_interval(float3 o, float3 v, float r, float* enter, float* exit) {
+    float b = dot(o, v);
+    float3 f = o - v * b;
+    return exact_quadratic_roots(1.0f, b, dot(o, o) - r * r, r * r - dot(f, f), enter, exit);
+}
+
+SS_FN float xSphere(float3 o, float3 v, float r, float t_max) {
+    float enter, exit;
+    if (!sphere_interval(o, v, r, &enter, &exit)) return EXACT_MISS;
+    return exact_first_crossing(enter, exit, t_max);
+}
+
+#endif

@@ -1,0 +1,196 @@
+// Exact intersection in whole scenes: the OpenCL build of the exact hits and of the rule that
+// combines them with the march (sdf/exact/trace.h) against the host build; the rule's edge cases;
+// and two images whose geometry has a closed form: an emissive sphere's projected area and a box
+// edge's place.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kernels/host/scene_kernel_source.hpp"
+#include "opencl/runtime.hpp"
+#include "render/host_kernels.hpp"
+#include "render/opencl_renderer.hpp"
+#include "scene/compile.hpp"
+#include "scene/load_scene.hpp"
+#include "tests/render_inputs.hpp"
+
+using lab::scene::Scene;
+using lab::scene::Vec3;
+
+namespace {
+
+struct RayHits {
+    std::vector<float> exact_t, hit_t;
+    std::vector<int> status;
+};
+
+RayHits opencl_rays(const lab::opencl::Runtime& runtime, const lab::scene::CompiledScene& scene, const std::vector<float>& rays, float max_distance) {
+    lab::opencl::Program program = runtime.build(lab::kernels::assemble_scene_kernel("kernels/scene_ray_probe.cl", scene),
+                                                 lab::kernels::kSceneBuildOptions);
+    lab::opencl::KernelHandle kernel = program.kernel("scene_ray_probe");
+    const size_t n = rays.size() / 6;
+    lab::opencl::BufferHandle in = runtime.buffer(rays.size() * sizeof(float), CL_MEM_READ_ONLY);
+    lab::opencl::BufferHandle exact_t = runtime.buffer(n * sizeof(float), CL_MEM_WRITE_ONLY);
+    lab::opencl::BufferHandle hit_t = runtime.buffer(n * sizeof(float), CL_MEM_WRITE_ONLY);
+    lab::opencl::BufferHandle status = runtime.buffer(n * sizeof(int), CL_MEM_WRITE_ONLY);
+    runtime.write(in, rays.data(), rays.size() * sizeof(float));
+    lab::opencl::set_kernel_args(kernel, int(n), max_distance, in, exact_t, hit_t, status);
+    runtime.launch_1d(kernel, n, 64);
+    runtime.finish();
+    RayHits r{std::vector<float>(n), std::vector<float>(n), std::vector<int>(n)};
+    runtime.read(exact_t, r.exact_t.data(), n * sizeof(float));
+    runtime.read(hit_t, r.hit_t.data(), n * sizeof(float));
+    runtime.read(status, r.status.data(), n * sizeof(int));
+    return r;
+}
+
+lab::render::host_kernels::MarchResult host_ray(const Scene& scene, Vec3 o, Vec3 v, float max_distance, float over_relaxation = 1.0f) {
+    using namespace lab::render::host_kernels;
+    const lab::render::HostSceneScope scope(scene);
+    MarchSettings s = march_settings_default(1.0f);
+    s.max_distance = max_distance;
+    s.over_relaxation = over_relaxation;
+    return march_scene_ray(o, v, s);
+}
+
+// A scene of the edge cases: a camera, one grey material "m" and these objects (JSON).
+Scene edge_scene(const std::string& objects, const std::string& name) {
+    return lab::scene::parse_scene(R"({"camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
+      "materials": {"m": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}}, "objects": [)" + objects + "]}", name);
+}
+
+// Every primitive under rotations, uniform scales and translations (all intersected exactly), and a
+// blend of two of them (marched), over a ground plane.
+const char* const kTransformedScene = R"({
+  "camera": {"type": "pinhole", "position": [0, 3, 9], "look_at": [0, 0.5, 0], "fov_degrees": 40},
+  "materials": {"m": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}}},
+  "objects": [
+    {"name": "ground", "material": "m", "shape": {"type": "plane", "normal": [0.1, 1, 0], "offset": 0.5}},
+    {"name": "torus", "material": "m", "shape": {"type": "translate", "offset": [-2, 1, 0], "child": {"type": "rotate", "axis": [1, 0.3, 0], "degrees": 70,
+      "child": {"type": "scale", "factor": 1.5, "child": {"type": "torus", "major_radius": 0.6, "minor_radius": 0.2}}}}},
+    {"name": "cone", "material": "m", "shape": {"type": "translate", "offset": [0, 0.2, -1], "child": {"type": "rotate", "axis": [0, 0, 1], "degrees": 30,
+      "child": {"type": "cone", "radius": 0.5, "height": 1.2}}}},
+    {"name": "capsule", "material": "m", "shape": {"type": "translate", "offset": [2, 1, 0], "child": {"type": "rotate", "axis": [1, 1, 0], "degrees": 45,
+      "child": {"type": "capsule", "radius": 0.3, "half_height": 0.6}}}},
+    {"name": "round_box", "material": "m", "shape": {"type": "translate", "offset": [0, 1.5, 1.5], "child": {"type": "scale", "factor": 0.7,
+      "child": {"type": "round_box", "half_size": [0.6, 0.4, 0.5], "radius": 0.15}}}},
+    {"name": "cylinder", "material": "m", "shape": {"type": "translate", "offset": [-1, 0.5, 2], "child": {"type": "rotate", "axis": [0, 1, 1], "degrees": 80,
+      "child": {"type": "cylinder", "radius": 0.35, "half_height": 0.5}}}},
+    {"name": "blend", "material": "m", "shape": {"type": "smooth_union", "radius": 0.3, "children": [
+      {"type": "translate", "offset": [1.5, 0.5, 2], "child": {"type": "sphere", "radius": 0.4}},
+      {"type": "translate", "offset": [1.5, 0.5, 2.5], "child": {"type": "box", "half_size": [0.3, 0.3, 0.3]}}]}}
+  ],
+  "emitters": [{"center": [0, 3, 0], "radius": 0.3, "radiance": [5, 5, 5]}]
+})";
+
+}  // namespace
+
+TEST_CASE("Exact intersection: the OpenCL build's hits and combined rays agree with the host build's", "[scene][exact][opencl]") {
+    lab::opencl::Runtime runtime;
+    std::mt19937 rng(3535);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    const float max_distance = 100.0f;
+    std::vector<Scene> scenes = {lab::scene::load_scene("scenes/primitives.json"), lab::scene::load_scene("scenes/cornell_box.json"),
+                                 lab::scene::load_scene("scenes/shader_ball.json"), lab::scene::parse_scene(kTransformedScene, "transformed.json")};
+    for (const Scene& scene : scenes) {
+        // rays from the camera into its view, and from points in and around the objects
+        std::vector<float> rays;
+        for (int i = 0; i < 3000; ++i) {
+            Vec3 o = i % 2 ? scene.camera.position : Vec3(u(rng) * 3.0f, 0.5f + u(rng) * 2.0f, u(rng) * 3.0f);
+            Vec3 v = i % 2 ? glm::normalize(scene.camera.look_at - scene.camera.position + Vec3(u(rng), u(rng), u(rng)) * 0.6f * glm::length(scene.camera.look_at - scene.camera.position))
+                           : glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(0.0f, 0.0f, 1e-3f));
+            rays.insert(rays.end(), {o.x, o.y, o.z, v.x, v.y, v.z});
+        }
+        const RayHits cl = opencl_rays(runtime, lab::scene::compile_scene(scene), rays, max_distance);
+        size_t exact_hits = 0, exact_failures = 0, combined_failures = 0;
+        for (size_t i = 0; i < cl.exact_t.size(); ++i) {
+            const Vec3 o(rays[6 * i], rays[6 * i + 1], rays[6 * i + 2]), v(rays[6 * i + 3], rays[6 * i + 4], rays[6 * i + 5]);
+            const float exact = lab::scene::scene_exact_hit(scene, o, v, max_distance);
+            // the two builds round alike but for the compilers' choices: a few ulps of the scene's size
+            const float tolerance = 1e-5f * std::fmax(1.0f, exact);
+            if (std::isfinite(exact)) ++exact_hits;
+            if (!(std::isinf(exact) && std::isinf(cl.exact_t[i])) && !(std::fabs(exact - cl.exact_t[i]) <= tolerance)) {
+                ++exact_failures;
+                UNSCOPED_INFO(scene.file << " ray " << i << ": exact hit host " << exact << ", OpenCL " << cl.exact_t[i]);
+            }
+            const auto host = host_ray(scene, o, v, max_distance);
+            if (host.status != cl.status[i] || (host.status == MARCH_HIT && !(std::fabs(host.t - cl.hit_t[i]) <= 1e-4f * std::fmax(1.0f, host.t))))
+                ++combined_failures;
+        }
+        std::printf("exact OpenCL agreement: %-28s %zu rays, %zu exact hits, %zu exact and %zu combined disagreements\n", scene.file.c_str(),
+                    cl.exact_t.size(), exact_hits, exact_failures, combined_failures);
+        INFO(scene.file);
+        CHECK(exact_failures == 0);
+        CHECK(exact_hits >= cl.exact_t.size() / 4);
+        // a march may flip a branch on a grazing ray (the rounding of the two compilers)
+        CHECK(combined_failures <= cl.exact_t.size() / 500);
+    }
+}
+
+TEST_CASE("Exact intersection: the combined rule's edge cases", "[scene][exact]") {
+    using namespace lab::render::host_kernels;
+    const float eps_at_5 = march_epsilon(march_settings_default(1.0f), 5.0f);
+    SECTION("an exact object inside a field object: the field's surface comes first from outside, the object from inside") {
+        Scene scene = edge_scene(R"(
+            {"name": "blob", "material": "m", "shape": {"type": "smooth_union", "radius": 0.2, "children": [
+              {"type": "sphere", "radius": 1}, {"type": "translate", "offset": [0.9, 0, 0], "child": {"type": "sphere", "radius": 0.6}}]}},
+            {"name": "core", "material": "m", "shape": {"type": "box", "half_size": [0.2, 0.2, 0.2]}}
+          )", "inside.json");
+        auto outside = host_ray(scene, Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f);
+        REQUIRE(outside.status == MARCH_HIT);
+        CHECK(outside.t <= 4.0f);
+        CHECK(outside.t >= 4.0f - 2.0f * eps_at_5);  // the march's hit threshold, not the box at 4.8
+        auto within = host_ray(scene, Vec3(0.0f, 0.0f, 0.7f), Vec3(0.0f, 0.0f, -1.0f), 100.0f);
+        REQUIRE(within.status == MARCH_HIT);
+        CHECK(std::fabs(within.t - 0.5f) <= 1e-6f);  // the box's face, exactly
+    }
+    SECTION("the camera inside an exact object: the ray leaves it where it should, and the field says inside") {
+        Scene scene = edge_scene(R"(
+            {"name": "shell", "material": "m", "shape": {"type": "translate", "offset": [0.5, 0, 0], "child": {"type": "sphere", "radius": 2}}},
+            {"name": "field", "material": "m", "shape": {"type": "displace", "amplitude": 0.05, "frequency": 3,
+              "child": {"type": "translate", "offset": [6, 0, 0], "child": {"type": "sphere", "radius": 1}}}}
+          )", "camera_inside.json");
+        auto r = host_ray(scene, Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f), 100.0f);
+        REQUIRE(r.status == MARCH_HIT);
+        CHECK(std::fabs(r.t - 2.5f) <= 1e-6f);
+        CHECK(lab::scene::scene_distance(scene, Vec3(0.0f)) < 0.0f);  // what the integrators' `inside` reads
+    }
+    SECTION("a march that stops at an exact hit: it does not march on to the field behind the wall") {
+        Scene scene = edge_scene(R"(
+            {"name": "wall", "material": "m", "shape": {"type": "plane", "normal": [0, 0, 1], "offset": 0}},
+            {"name": "behind", "material": "m", "shape": {"type": "displace", "amplitude": 0.05, "frequency": 3,
+              "child": {"type": "translate", "offset": [0, 0, -3], "child": {"type": "sphere", "radius": 1}}}},
+            {"name": "front", "material": "m", "shape": {"type": "displace", "amplitude": 0.05, "frequency": 3,
+              "child": {"type": "translate", "offset": [4, 0, 2], "child": {"type": "sphere", "radius": 1}}}}
+          )", "wall.json");
+        auto r = host_ray(scene, Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f);
+        REQUIRE(r.status == MARCH_HIT);
+        CHECK(std::fabs(r.t - 5.0f) <= 1e-6f);
+        // the march alone, not stopped at the wall, goes on to the sphere behind it: more steps
+        const lab::render::HostSceneScope scope(scene);
+        MarchResult unstopped = march(Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 0.0f, march_settings_default(1.0f));
+        REQUIRE(unstopped.status == MARCH_HIT);
+        CHECK(unstopped.t > 6.9f);
+        CHECK(r.steps < unstopped.steps);
+        // a field object in front of the wall is hit first
+        auto front = host_ray(scene, Vec3(4.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f);
+        REQUIRE(front.status == MARCH_HIT);
+        CHECK(front.t < 2.2f);
+    }
+    SECTION("an over-relaxed step that leaps past the exact hit is checked before the march ends") {
+        // from z = 5 the sphere's surface is 3.9 away: the first step of 1.5 x 3.9 ends past the wall
+        // at 5, and the sphere in between must still be found
+        Scene scene = edge_scene(R"(
+            {"name": "wall", "material": "m", "shape": {"type": "plane", "normal": [0, 0, 1], "offset": 0}},
+            {"name": "ball", "material": "m", "shape": {"type": "displace", "amplitude": 0.001, "frequency": 3,
+              "child": {"type": "translate", "offset": [0, 0, 0.6], "child": {"type": "sphere", "radius": 0.5}}}}
+          )", "leap.json");
+        auto r = host_ray(scene, Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -1.0f), 100.0f, 1.5f);
+        REQUIRE(r.status == MARCH_HIT);
+        CHECK(r.t < 3.95f);
+    }
+}
