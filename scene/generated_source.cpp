@@ -29,6 +29,14 @@ void write_nearest(std::ostringstream& out, const std::string& name, const Neare
         << "    return " << name << "_counted_xyz(px, py, pz, nearest, &n);\n}\n#endif\n\n";
 }
 
+// A measurement build's counting distance `distance`_counted over the nearest-object function
+// `nearest` (write_nearest).
+void write_counted_distance(std::ostringstream& out, const std::string& distance, const std::string& nearest) {
+    out << "#ifdef SCENE_COUNT_EVALUATIONS\n"
+        << "SS_FN float " << distance << "_counted(float3 p, uint* evaluations) {\n    int k;\n"
+        << "    return " << nearest << "_counted_xyz(p.x, p.y, p.z, &k, evaluations);\n}\n#endif\n\n";
+}
+
 }  // namespace
 
 std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, bool object_bounds) {
@@ -122,10 +130,8 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
     // functions evaluated; the default build has no counter at all.
     out << "/* The nearest object or emitter (index: objects, then emitters) and its distance. */\n";
     write_nearest(out, "scene_nearest", nearest);
-    out << "#ifdef SCENE_COUNT_EVALUATIONS\n"
-        << "SS_FN float scene_distance_counted(float3 p, uint* evaluations) {\n    int k;\n"
-        << "    return scene_nearest_counted_xyz(p.x, p.y, p.z, &k, evaluations);\n}\n#endif\n\n"
-        << "SS_FN float scene_nearest(float3 p, int* nearest) { return scene_nearest_xyz(p.x, p.y, p.z, nearest); }\n\n"
+    write_counted_distance(out, "scene_distance", "scene_nearest");
+    out << "SS_FN float scene_nearest(float3 p, int* nearest) { return scene_nearest_xyz(p.x, p.y, p.z, nearest); }\n\n"
         << "SS_FN int scene_material_slot(int nearest) {\n    switch (nearest) {\n"
         << slot_cases.str() << "    default: return 0;\n    }\n}\n\n"
         << "/* The field at a point given as three floats: what a vectorised march calls. */\n"
@@ -134,10 +140,8 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
     if (split) {
         out << "/* The march's field: the objects that are not intersected exactly. */\n";
         write_nearest(out, "scene_march_nearest", march);
-        out << "#ifdef SCENE_COUNT_EVALUATIONS\n"
-            << "SS_FN float scene_march_distance_counted(float3 p, uint* evaluations) {\n    int k;\n"
-            << "    return scene_march_nearest_counted_xyz(p.x, p.y, p.z, &k, evaluations);\n}\n#endif\n\n"
-            << "SS_FN float scene_march_distance(float3 p) {\n    int k;\n    return scene_march_nearest_xyz(p.x, p.y, p.z, &k);\n}\n\n";
+        write_counted_distance(out, "scene_march_distance", "scene_march_nearest");
+        out << "SS_FN float scene_march_distance(float3 p) {\n    int k;\n    return scene_march_nearest_xyz(p.x, p.y, p.z, &k);\n}\n\n";
     } else {
         out << "/* The march's field: every object. */\n"
             << "#ifdef SCENE_COUNT_EVALUATIONS\n"
