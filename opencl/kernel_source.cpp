@@ -180,10 +180,7 @@ public:
     bool keep(const std::string& line, const std::string& next_line) {
         const std::optional<Directive> d = directive_of(line);
         const bool shown = active();
-        if (!d) {
-            if (blocks_.empty() || shown) record_define(line);
-            return blocks_.empty() || shown;
-        }
+        if (!d) return shown;  // not a directive: shown where every enclosing block is
         if (const std::optional<Switch> sw = switch_of(*d, line)) {
             Block block;
             if (sw->is_ifdef && sw->negate && is_guard(sw->name, next_line)) {
