@@ -55,17 +55,21 @@ std::string read(const fs::path& p) {
 TEST_CASE("a newer job cancels the running one, and only the newest pending job runs", "[viewer]") {
     std::atomic<int> first_state{0};  // 1 running, 2 saw cancelled
     std::atomic<int> ran{0}, last{0};
+    std::atomic<bool> both_submitted{false};
     {
         lab::viewer::LatestJob jobs;
+        // The first job returns only once both later jobs are in: were it to return at the first
+        // cancellation, the worker could start job 2 before job 3 replaced it.
         jobs.submit([&](const lab::viewer::LatestJob::Cancelled& cancelled) {
             first_state = 1;
-            while (!cancelled()) std::this_thread::yield();
+            while (!cancelled() || !both_submitted.load()) std::this_thread::yield();
             first_state = 2;
         });
         REQUIRE(eventually([&] { return first_state.load() == 1; }));
         // Two submissions while the first runs: the second replaces the first of them before it starts.
         jobs.submit([&](const lab::viewer::LatestJob::Cancelled&) { ran += 1; last = 2; });
         jobs.submit([&](const lab::viewer::LatestJob::Cancelled&) { ran += 1; last = 3; });
+        both_submitted = true;
         REQUIRE(eventually([&] { return first_state.load() == 2 && !jobs.busy(); }));
     }
     CHECK(ran.load() == 1);
