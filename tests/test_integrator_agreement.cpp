@@ -77,7 +77,8 @@ lab::render::RenderInput case_input(const Case& c) {
 }
 
 // `count` renders of `spp` samples each, from the disjoint sample ranges [b spp, (b + 1) spp):
-// independent estimates of the same image.
+// independent estimates of the same image. Every sample of every batch is finite: the renderer
+// counts (and leaves out) a path whose radiance is not.
 std::vector<ImageRgb> render_batches(lab::render::RenderInput input, Integrator integrator, uint64_t seed, int count, int spp) {
     static const lab::opencl::Runtime runtime("");
     input.settings.integrator = integrator;
@@ -89,6 +90,7 @@ std::vector<ImageRgb> render_batches(lab::render::RenderInput input, Integrator 
         renderer.set_first_sample(b * spp);
         renderer.add_samples(spp);
         batches.push_back(renderer.image());
+        CHECK(renderer.statistics().nonfinite_samples == 0);
     }
     return batches;
 }
