@@ -9,12 +9,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include "common/input_error.hpp"
 #include "film/atomic_file.hpp"
+#include "common/image_codec.hpp"
 
 namespace lab::film {
 
@@ -66,42 +65,64 @@ void check_key(const std::string& key) {
     if (!ok) throw std::invalid_argument("image metadata: bad key \"" + key + "\" (letters, digits, _ - . only)");
 }
 
+codec::Attribute text_attribute(const std::string& name, const std::string& text) {
+    codec::Attribute a;
+    a.name = name;
+    a.text = text;
+    return a;
+}
+
 // as_text: PNG text chunks hold strings only
-void add_metadata(OIIO::ImageSpec& spec, const ImageMetadata& metadata, bool as_text) {
-    spec.attribute("Software", metadata.software);
+void add_metadata(codec::Encoding& encoding, const ImageMetadata& metadata, bool as_text) {
+    encoding.attributes.push_back(text_attribute("Software", metadata.software));
     for (const auto& [key, value] : metadata.values) {
         check_key(key);
-        const std::string name = kPrefix + key;
-        if (as_text || std::holds_alternative<std::string>(value))
-            spec.attribute(name, metadata_text(value));
-        else if (const int* i = std::get_if<int>(&value))
-            spec.attribute(name, *i);
-        else
-            spec.attribute(name, std::get<float>(value));
+        codec::Attribute a = text_attribute(kPrefix + key, metadata_text(value));
+        if (!as_text && std::holds_alternative<int>(value)) {
+            a.kind = codec::Attribute::Kind::integer;
+            a.integer = std::get<int>(value);
+        } else if (!as_text && std::holds_alternative<float>(value)) {
+            a.kind = codec::Attribute::Kind::real;
+            a.real = std::get<float>(value);
+        }
+        encoding.attributes.push_back(std::move(a));
     }
 }
 
-// Encodes the image in memory with OpenImageIO (format "openexr" or "png"), then writes the bytes
-// atomically, so every failure of the disk is seen by write_file_atomically.
-void encode_and_write(const std::string& path, const char* format, const OIIO::ImageSpec& spec, const void* pixels) {
+// Encodes the image in memory (format "openexr" or "png"), then writes the bytes atomically, so
+// every failure of the disk is seen by write_file_atomically.
+void encode_and_write(const std::string& path, const codec::Encoding& encoding) {
     std::vector<unsigned char> bytes;
-    OIIO::Filesystem::IOVecOutput memory(bytes);
-    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(format);
-    if (!out) throw std::runtime_error(std::string("OpenImageIO has no ") + format + " writer: " + OIIO::geterror());
-    bool ok = out->set_ioproxy(&memory) && out->open(path, spec) && out->write_image(spec.format, pixels);
-    ok = out->close() && ok;
-    if (!ok) throw InputError(path, "", "cannot encode " + std::string(format) + ": " + out->geterror());
+    std::string error;
+    if (!codec::image_codec().encode(path, encoding, &bytes, &error))
+        throw InputError(path, "", "cannot encode " + encoding.format + ": " + error);
     write_file_atomically(path, bytes.data(), bytes.size());
 }
 
-std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path) {
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+std::unique_ptr<codec::ImageFile> open_image(const std::string& path) {
+    std::string error;
+    std::unique_ptr<codec::ImageFile> in = codec::image_codec().open(path, &error);
     if (!in) {
         std::error_code ec;
         if (!fs::exists(path, ec)) throw InputError(path, "", "cannot read: no such file");
-        throw InputError(path, "", "cannot read: " + OIIO::geterror());
+        throw InputError(path, "", "cannot read: " + error);
     }
     return in;
+}
+
+int channel_index(const codec::Header& header, const std::string& name) {
+    for (size_t c = 0; c < header.channel_names.size(); ++c)
+        if (header.channel_names[c] == name) return int(c);
+    return -1;
+}
+
+// All of the file's channels, as floats.
+std::vector<float> read_all_channels(const std::string& path, codec::ImageFile& in) {
+    const codec::Header& h = in.header();
+    std::vector<float> all(size_t(h.width) * size_t(h.height) * size_t(h.channels));
+    std::string error;
+    if (!in.read(h.channels, all.data(), &error)) throw InputError(path, "", "cannot read: " + error);
+    return all;
 }
 
 }  // namespace
@@ -113,6 +134,7 @@ void check_output_path(const std::string& path) {
         throw InputError(path, "", "unsupported image format \"" + ext + "\": " + kFormats);
     }
     check_writable(path);
+    (void)codec::image_codec();  // a codec that cannot be loaded fails here too, before the render
 }
 
 void write_image(const std::string& path, const ImageRgb& image, ToneMap tone_map, float exposure_stops, const ImageMetadata& metadata) {
@@ -131,96 +153,102 @@ void write_exr(const std::string& path, const ImageRgb& image, const ImageMetada
         if (c.values.size() != pixels || c.name.empty())
             throw std::invalid_argument("write_exr: channel \"" + c.name + "\" has " + std::to_string(c.values.size()) + " values for " +
                                         std::to_string(pixels) + " pixels");
-    OIIO::ImageSpec spec(image.width, image.height, int(channels), OIIO::TypeDesc::FLOAT);
-    spec.channelnames.resize(3);  // the constructor names them R, G, B, A, channel4...
-    spec.alpha_channel = -1;
-    for (const ImageChannel& c : extra) spec.channelnames.push_back(c.name);
-    spec.attribute("oiio:ColorSpace", "Linear");
-    spec.attribute("compression", "zip");
-    add_metadata(spec, metadata, false);
-    if (extra.empty()) return encode_and_write(path, "openexr", spec, image.rgb.data());
+    codec::Encoding encoding;
+    encoding.format = "openexr";
+    encoding.width = image.width;
+    encoding.height = image.height;
+    encoding.channels = int(channels);
+    encoding.channel_names = {"R", "G", "B"};
+    for (const ImageChannel& c : extra) encoding.channel_names.push_back(c.name);
+    encoding.attributes = {text_attribute("oiio:ColorSpace", "Linear"), text_attribute("compression", "zip")};
+    add_metadata(encoding, metadata, false);
+    if (extra.empty()) {
+        encoding.pixels = image.rgb.data();
+        return encode_and_write(path, encoding);
+    }
     std::vector<float> interleaved(pixels * channels);
     for (size_t p = 0; p < pixels; ++p) {
         for (size_t c = 0; c < 3; ++c) interleaved[p * channels + c] = image.rgb[p * 3 + c];
         for (size_t c = 0; c < extra.size(); ++c) interleaved[p * channels + 3 + c] = extra[c].values[p];
     }
-    encode_and_write(path, "openexr", spec, interleaved.data());
+    encoding.pixels = interleaved.data();
+    encode_and_write(path, encoding);
 }
 
 void write_png(const std::string& path, const ImageRgb& image, ToneMap tone_map, float exposure_stops, const ImageMetadata& metadata) {
     check_image(image, "write_png");
     check_writable(path);
     const std::vector<uint8_t> pixels = to_srgb8(image, tone_map, exposure_stops);
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");  // an sRGB chunk: viewers apply no other gamma
-    add_metadata(spec, metadata, true);
-    encode_and_write(path, "png", spec, pixels.data());
+    codec::Encoding encoding;
+    encoding.format = "png";
+    encoding.width = image.width;
+    encoding.height = image.height;
+    encoding.channels = 3;
+    encoding.bytes = true;
+    encoding.pixels = pixels.data();
+    encoding.attributes = {text_attribute("oiio:ColorSpace", "sRGB")};  // an sRGB chunk: viewers apply no other gamma
+    add_metadata(encoding, metadata, true);
+    encode_and_write(path, encoding);
 }
 
 ImageRgb read_image(const std::string& path, ImageMetadata* metadata) {
-    std::unique_ptr<OIIO::ImageInput> in = open_image(path);
-    const std::string format = in->format_name();
-    if (format != "openexr" && format != "png") throw InputError(path, "", "is a " + format + " image; only OpenEXR and PNG are read");
-    const OIIO::ImageSpec& spec = in->spec();
-    int channels[3] = {spec.channelindex("R"), spec.channelindex("G"), spec.channelindex("B")};
+    std::unique_ptr<codec::ImageFile> in = open_image(path);
+    const codec::Header& h = in->header();
+    if (h.format != "openexr" && h.format != "png") throw InputError(path, "", "is a " + h.format + " image; only OpenEXR and PNG are read");
+    int channels[3] = {channel_index(h, "R"), channel_index(h, "G"), channel_index(h, "B")};
     if (channels[0] < 0 || channels[1] < 0 || channels[2] < 0) {
-        if (spec.nchannels != 1) throw InputError(path, "", "has no R, G, B channels");
+        if (h.channels != 1) throw InputError(path, "", "has no R, G, B channels");
         channels[0] = channels[1] = channels[2] = 0;  // grey
     }
-    if (spec.width <= 0 || spec.height <= 0) throw InputError(path, "", "is empty");
+    if (h.width <= 0 || h.height <= 0) throw InputError(path, "", "is empty");
 
-    std::vector<float> all(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
-        throw InputError(path, "", "cannot read: " + in->geterror());
-    ImageRgb image(spec.width, spec.height);
-    const bool srgb = format == "png";
+    const std::vector<float> all = read_all_channels(path, *in);
+    ImageRgb image(h.width, h.height);
+    const bool srgb = h.format == "png";
     for (size_t p = 0; p < image.pixel_count(); ++p)
         for (int c = 0; c < 3; ++c) {
-            const float v = all[p * size_t(spec.nchannels) + size_t(channels[c])];
+            const float v = all[p * size_t(h.channels) + size_t(channels[c])];
             image.rgb[p * 3 + size_t(c)] = srgb ? srgb_decode(v) : v;
         }
 
     if (metadata) {
         *metadata = ImageMetadata{};
-        metadata->software = spec.get_string_attribute("Software");
         const std::string prefix = kPrefix;
-        for (const OIIO::ParamValue& p : spec.extra_attribs) {
-            const std::string name = p.name().string();
-            if (name.compare(0, prefix.size(), prefix) != 0) continue;
-            const std::string key = name.substr(prefix.size());
-            if (p.type() == OIIO::TypeDesc::INT)
-                metadata->set(key, p.get_int());
-            else if (p.type() == OIIO::TypeDesc::FLOAT)
-                metadata->set(key, p.get_float());
+        for (const codec::Attribute& a : h.attributes) {
+            if (a.name == "Software" && a.kind == codec::Attribute::Kind::text) metadata->software = a.text;
+            if (a.name.compare(0, prefix.size(), prefix) != 0) continue;
+            const std::string key = a.name.substr(prefix.size());
+            if (a.kind == codec::Attribute::Kind::integer)
+                metadata->set(key, a.integer);
+            else if (a.kind == codec::Attribute::Kind::real)
+                metadata->set(key, a.real);
             else
-                metadata->set(key, p.get_string());
+                metadata->set(key, a.text);
         }
     }
     return image;
 }
 
 std::vector<ImageChannel> read_exr_channels(const std::string& path, const std::vector<std::string>& names, int* width, int* height) {
-    std::unique_ptr<OIIO::ImageInput> in = open_image(path);
-    if (std::string(in->format_name()) != "openexr") throw InputError(path, "", "is not an OpenEXR file");
-    const OIIO::ImageSpec& spec = in->spec();
+    std::unique_ptr<codec::ImageFile> in = open_image(path);
+    const codec::Header& h = in->header();
+    if (h.format != "openexr") throw InputError(path, "", "is not an OpenEXR file");
     std::vector<int> index;
     for (const std::string& name : names) {
-        index.push_back(spec.channelindex(name));
+        index.push_back(channel_index(h, name));
         if (index.back() < 0) throw InputError(path, name, "no such channel");
     }
-    if (spec.width <= 0 || spec.height <= 0) throw InputError(path, "", "is empty");
-    const size_t pixels = size_t(spec.width) * size_t(spec.height), channels = size_t(spec.nchannels);
-    std::vector<float> all(pixels * channels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
-        throw InputError(path, "", "cannot read: " + in->geterror());
+    if (h.width <= 0 || h.height <= 0) throw InputError(path, "", "is empty");
+    const size_t pixels = size_t(h.width) * size_t(h.height), channels = size_t(h.channels);
+    const std::vector<float> all = read_all_channels(path, *in);
     std::vector<ImageChannel> out;
     for (size_t c = 0; c < names.size(); ++c) {
         ImageChannel channel{names[c], std::vector<float>(pixels)};
         for (size_t p = 0; p < pixels; ++p) channel.values[p] = all[p * channels + size_t(index[c])];
         out.push_back(std::move(channel));
     }
-    *width = spec.width;
-    *height = spec.height;
+    *width = h.width;
+    *height = h.height;
     return out;
 }
 

@@ -13,7 +13,8 @@ namespace lab::film {
 
 // Called before rendering, so a bad path fails in a second, not after the render. Throws
 // lab::InputError(path, "", ...) when the extension is not .exr or .png (any case), the folder
-// does not exist or cannot be written, the path is a folder, or an existing file there is read-only.
+// does not exist or cannot be written, the path is a folder, or an existing file there is read-only;
+// std::runtime_error when the image codec (common/image_codec.hpp) cannot be loaded.
 void check_output_path(const std::string& path);
 
 // Writes PATH as .exr or .png by its extension (as check_output_path accepts); the PNG is

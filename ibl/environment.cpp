@@ -10,8 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include <OpenImageIO/imageio.h>
-
+#include "common/image_codec.hpp"
 #include "common/input_error.hpp"
 #include "ibl/distribution.hpp"
 
@@ -169,17 +168,15 @@ LatLongImage read_latlong_image(const std::string& path) {
     if (ext != ".exr" && ext != ".hdr")
         throw InputError(path, "", "unsupported image format \"" + ext + "\" (expected .exr or .hdr)");
 
-    auto input = OIIO::ImageInput::open(path);
-    if (!input) {
-        (void)OIIO::geterror();  // drop OpenImageIO's own text: its wording varies with the version
-        throw InputError(path, "", "cannot be read as an OpenEXR or Radiance HDR image");
-    }
-    const std::string format = input->format_name();
-    if (format != "openexr" && format != "hdr")
-        throw InputError(path, "", "holds a " + format + " image, not OpenEXR or Radiance HDR");
-    const OIIO::ImageSpec& spec = input->spec();
-    if (spec.deep) throw InputError(path, "", "deep image (expected flat pixels)");
-    const int width = spec.width, height = spec.height, channels = spec.nchannels;
+    std::string error;
+    std::unique_ptr<codec::ImageFile> input = codec::image_codec().open(path, &error);
+    // OpenImageIO's own text is left out: its wording varies with the version
+    if (!input) throw InputError(path, "", "cannot be read as an OpenEXR or Radiance HDR image");
+    const codec::Header& header = input->header();
+    if (header.format != "openexr" && header.format != "hdr")
+        throw InputError(path, "", "holds a " + header.format + " image, not OpenEXR or Radiance HDR");
+    if (header.deep) throw InputError(path, "", "deep image (expected flat pixels)");
+    const int width = header.width, height = header.height, channels = header.channels;
     check_latlong_size(path, width, height);
     if (channels != 1 && channels < 3)
         throw InputError(path, "channels",
@@ -187,13 +184,8 @@ LatLongImage read_latlong_image(const std::string& path) {
 
     const int used = channels == 1 ? 1 : 3;
     std::vector<float> pixels(size_t(width) * height * used);
-    if (!input->read_image(0, 0, 0, used, OIIO::TypeDesc::FLOAT, pixels.data())) {
-        (void)input->geterror();
-        throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
-    }
-    input->close();
-    std::vector<std::string> names;
-    for (int c = 0; c < used; ++c) names.push_back(spec.channel_name(c));
+    if (!input->read(used, pixels.data(), &error)) throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
+    std::vector<std::string> names(header.channel_names.begin(), header.channel_names.begin() + used);
     return latlong_from_pixels(path, width, height, pixels, names);
 }
 

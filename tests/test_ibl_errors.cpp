@@ -1,5 +1,5 @@
 // Bad environments are refused with one exact line naming the file (or the --env spec) and the
-// problem; images written with OpenImageIO for the purpose, in a scratch folder.
+// problem; images written with the lab's image codec for the purpose, in a scratch folder.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,8 +10,7 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
+#include "common/image_codec.hpp"
 #include "common/input_error.hpp"
 #include "ibl/environment.hpp"
 
@@ -27,19 +26,31 @@ fs::path scratch_folder() {
     return folder;
 }
 
-// A float image of width x height x channels, every value `fill`, written with OpenImageIO.
+// A float image of width x height x channels, every value `fill`, encoded by the lab's image codec
+// (OpenImageIO) in the format of the name's extension: 8-bit for .png, float otherwise.
 std::string write_image(const std::string& name, int width, int height, int channels, float fill,
                         const std::vector<std::pair<size_t, float>>& overrides = {}) {
     const std::string path = (scratch_folder() / name).string();
     std::vector<float> pixels(size_t(width) * height * channels, fill);
     for (const auto& [index, value] : overrides) pixels[index] = value;
-    auto out = OIIO::ImageOutput::create(path);
-    REQUIRE(out);
-    const OIIO::TypeDesc type = fs::path(path).extension() == ".png" ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
-    OIIO::ImageSpec spec(width, height, channels, type);
-    REQUIRE(out->open(path, spec));
-    REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
-    REQUIRE(out->close());
+    lab::codec::Encoding encoding;
+    encoding.width = width;
+    encoding.height = height;
+    encoding.channels = channels;
+    std::vector<uint8_t> bytes;
+    if (fs::path(path).extension() == ".png") {
+        for (float v : pixels) bytes.push_back(uint8_t(std::lround(255.0f * std::fmin(std::fmax(v, 0.0f), 1.0f))));
+        encoding.bytes = true;
+        encoding.pixels = bytes.data();
+    } else {
+        encoding.pixels = pixels.data();
+    }
+    std::vector<unsigned char> file;
+    std::string error;
+    const bool encoded = lab::codec::image_codec().encode(path, encoding, &file, &error);
+    INFO(error);
+    REQUIRE(encoded);
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(file.data()), std::streamsize(file.size()));
     return path;
 }
 

@@ -1,11 +1,15 @@
 #include "viewer/gl_image.hpp"
 
 #include <GLFW/glfw3.h>
-#include <OpenImageIO/imageio.h>
 
-#include "common/input_error.hpp"
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
+
+#include "common/image_codec.hpp"
+#include "common/input_error.hpp"
+#include "film/atomic_file.hpp"
 
 namespace lab::viewer {
 
@@ -41,13 +45,18 @@ void write_screenshot(const std::string& path, int width, int height) {
     for (int y = 0; y < height; ++y)
         std::copy(pixels.begin() + ptrdiff_t(size_t(height - 1 - y) * row), pixels.begin() + ptrdiff_t(size_t(height - y) * row),
                   flipped.begin() + ptrdiff_t(size_t(y) * row));
-    // Written beside the target first, then renamed over it: a failure leaves any old file whole.
-    const std::string temporary = path + ".tmp.png";
-    auto out = OIIO::ImageOutput::create(temporary);
-    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-    if (!out || !out->open(temporary, spec) || !out->write_image(OIIO::TypeDesc::UINT8, flipped.data()) || !out->close())
-        throw InputError(path, "", "cannot write screenshot");
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) throw InputError(path, "", "cannot write screenshot");
+    codec::Encoding encoding;
+    encoding.format = "png";
+    encoding.width = width;
+    encoding.height = height;
+    encoding.channels = 3;
+    encoding.bytes = true;
+    encoding.pixels = flipped.data();
+    std::vector<unsigned char> file;
+    std::string error;
+    if (!codec::image_codec().encode(path, encoding, &file, &error)) throw InputError(path, "", "cannot write screenshot: " + error);
+    // written beside the target first, then renamed over it: a failure leaves any old file whole
+    film::write_file_atomically(path, file.data(), file.size());
 }
 
 }  // namespace lab::viewer
