@@ -68,12 +68,14 @@ TEST_CASE("BDPT: each strategy alone converges to the same image", "[render][bdp
             input.settings.strategy_debug.strategy_unweighted = true;
             input.settings.roulette_depth = 64;  // no Russian roulette: its noise is not the strategy's
             lab::render::HostRenderer renderer(input);
-            RenderResult r = render_samples(renderer, splats ? 4096 : s <= 1 ? 64 : 1024);
+            // the splats' error is close to its bound at the full budget: the sanitized build keeps it
+            const int divisor = splats ? 1 : kPathDivisor;
+            RenderResult r = render_samples(renderer, (splats ? 4096 : s <= 1 ? 64 : 1024) / divisor);
             Mean m = image_mean(r.image);
             INFO(c.name << ", strategy (" << s << ", " << k - s << "): mean " << m.value << " +- " << m.standard_error << ", exact "
                         << c.expected);
-            REQUIRE(m.standard_error < 0.005 * c.expected);
-            CHECK(std::fabs(m.value - c.expected) < 0.02 * c.expected);
+            REQUIRE(m.standard_error < 0.005 * std::sqrt(double(divisor)) * c.expected);
+            CHECK(std::fabs(m.value - c.expected) < 0.02 * std::sqrt(double(divisor)) * c.expected);
         }
     }
 }
