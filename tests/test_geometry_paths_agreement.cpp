@@ -25,6 +25,7 @@
 #include "render/scene_environment.hpp"
 #include "scene/geometry_paths.hpp"
 #include "scene/load_scene.hpp"
+#include "tests/sample_batches.hpp"
 #include "validation/region_t_test.hpp"
 
 namespace {
@@ -77,28 +78,14 @@ const std::vector<SceneCase> kScenes = {
 std::vector<ImageRgb> render_batches(lab::render::RenderInput input, bool march_everything) {
     input.settings.march_everything = march_everything;
     lab::render::HostRenderer renderer(input);
-    renderer.set_samples_per_launch(kSpp);
-    std::vector<ImageRgb> batches;
-    for (int b = 0; b < kBatches; ++b) {
-        renderer.set_first_sample(b * kSpp);
-        renderer.add_samples(kSpp);
-        batches.push_back(renderer.image());
-    }
-    return batches;
-}
-
-double channel_mean(const std::vector<ImageRgb>& batches, int c) {
-    double sum = 0.0;
-    for (const ImageRgb& image : batches)
-        for (size_t p = 0; p < image.pixel_count(); ++p) sum += image.rgb[3 * p + c];
-    return sum / double(batches.size() * batches[0].pixel_count());
+    return render_sample_batches(renderer, kBatches, kSpp);
 }
 
 // The largest relative difference any region not dark can detect, every region printed.
 double check_agreement(const std::string& name, const std::vector<ImageRgb>& exact, const std::vector<ImageRgb>& marched) {
     const lab::validation::RegionComparison comparison =
         lab::validation::compare_by_region(exact, marched, kRegions, kRegions, kSignificance, lab::validation::Pairing::paired);
-    const double means[3] = {channel_mean(marched, 0), channel_mean(marched, 1), channel_mean(marched, 2)};
+    const double means[3] = {batches_channel_mean(marched, 0), batches_channel_mean(marched, 1), batches_channel_mean(marched, 2)};
     double power = 0.0;
     for (const lab::validation::RegionTest& r : comparison.regions) {
         const double detectable = lab::validation::detectable_difference(r, comparison.level);

@@ -38,6 +38,7 @@
 #include "render/scene_environment.hpp"
 #include "scene/load_scene.hpp"
 #include "tests/render_inputs.hpp"
+#include "tests/sample_batches.hpp"
 #include "validation/region_t_test.hpp"
 
 namespace {
@@ -76,31 +77,13 @@ lab::render::RenderInput case_input(const Case& c) {
     return input;
 }
 
-// `count` renders of `spp` samples each, from the disjoint sample ranges [b spp, (b + 1) spp):
-// independent estimates of the same image. Every sample of every batch is finite: the renderer
-// counts (and leaves out) a path whose radiance is not.
+// The batches (tests/sample_batches.hpp) of one integrator on the OpenCL device.
 std::vector<ImageRgb> render_batches(lab::render::RenderInput input, Integrator integrator, uint64_t seed, int count, int spp) {
     static const lab::opencl::Runtime runtime("");
     input.settings.integrator = integrator;
     input.settings.seed = seed;
     lab::render::OpenClRenderer renderer(runtime, input);
-    renderer.set_samples_per_launch(spp);
-    std::vector<ImageRgb> batches;
-    for (int b = 0; b < count; ++b) {
-        renderer.set_first_sample(b * spp);
-        renderer.add_samples(spp);
-        batches.push_back(renderer.image());
-        CHECK(renderer.statistics().nonfinite_samples == 0);
-    }
-    return batches;
-}
-
-// The mean of channel c over every pixel of every batch.
-double image_mean(const std::vector<ImageRgb>& batches, int c) {
-    double sum = 0.0;
-    for (const ImageRgb& image : batches)
-        for (size_t p = 0; p < image.pixel_count(); ++p) sum += image.rgb[3 * p + c];
-    return sum / double(batches.size() * batches[0].pixel_count());
+    return render_sample_batches(renderer, count, spp);
 }
 
 struct Verdict {
@@ -111,7 +94,7 @@ struct Verdict {
 // `a` against the path tracer's batches, every region printed; `pairing` as compare_by_region.
 Verdict compare(const char* integrator, const std::vector<ImageRgb>& a, const std::vector<ImageRgb>& pt, Pairing pairing) {
     Verdict v{lab::validation::compare_by_region(a, pt, kRegions, kRegions, kSignificance, pairing)};
-    const double means[3] = {image_mean(pt, 0), image_mean(pt, 1), image_mean(pt, 2)};
+    const double means[3] = {batches_channel_mean(pt, 0), batches_channel_mean(pt, 1), batches_channel_mean(pt, 2)};
     for (const RegionTest& r : v.comparison.regions) {
         const double detectable = lab::validation::detectable_difference(r, v.comparison.level);
         const bool dark = r.result.mean_b < kDarkRegion * means[r.channel];
