@@ -66,7 +66,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
         for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = NO_RAY;
     }
     float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 1.0f, max_distance = NO_RAY;
-    float8 exact_t = EXACT_MISS; /* each lane's nearest exact hit */
+    float8 exact_t = INFINITY; /* each lane's nearest exact hit, none yet */
     float8 ray_max = NO_RAY;     /* each lane's max distance, before the march's is cut at that hit */
     MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, (int8)0, march_settings);
     int next = first;
