@@ -171,10 +171,14 @@ TEST_CASE("Exact intersection: the packet kernels' lane form gives the scalar fo
     for (const Scene& scene : scenes) {
         const std::vector<float> aos = probe_rays(scene, rng);
         const int n = int(aos.size() / 6), stride = (n + 7) / 8 * 8;
-        // seven arrays of `stride` floats; every third ray's t_max short enough to cut some hits off
+        // seven arrays of `stride` floats; every third ray's t_max short enough to cut some hits off,
+        // and every fifth ray along an axis (the branches of rays parallel to a slab, a plane or a
+        // cylinder's axis)
         std::vector<float> rays(size_t(7) * stride, 0.0f);
         for (int i = 0; i < stride; ++i) {
             for (int f = 0; f < 6; ++f) rays[size_t(f) * stride + i] = aos[6 * size_t(i % n) + f];
+            if (i % 5 == 0)
+                for (int f = 3; f < 6; ++f) rays[size_t(f) * stride + i] = f - 3 == (i / 5) % 3 ? ((i / 15) % 2 ? 1.0f : -1.0f) : 0.0f;
             rays[size_t(6) * stride + i] = i % 3 ? 100.0f : 4.0f * u01(rng);
         }
         lab::opencl::Program program =

@@ -81,6 +81,12 @@ SS_FN SDF_MASK exact_quadratic_roots_lanes(SDF_FLOAT a, SDF_FLOAT b, SDF_FLOAT c
     return disc >= 0.0f;
 }
 
+SS_FN void exact_union_interval_lanes(SDF_FLOAT enter, SDF_FLOAT exit, SDF_FLOAT* union_enter, SDF_FLOAT* union_exit) {
+    SDF_MASK met = enter <= exit;
+    *union_enter = select(*union_enter, fmin(*union_enter, enter), met);
+    *union_exit = select(*union_exit, fmax(*union_exit, exit), met);
+}
+
 SS_FN void exact_clip_slab_lanes(float lo, float hi, SDF_FLOAT o, SDF_FLOAT v, SDF_FLOAT* enter, SDF_FLOAT* exit) {
     SDF_FLOAT t0 = (lo - o) / v, t1 = (hi - o) / v;
     *enter = fmax(*enter, fmin(t0, t1));
