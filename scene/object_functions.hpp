@@ -58,7 +58,7 @@ std::string emit_normal(const Node& node, const std::string& p, FunctionWriter* 
 std::string emit_exact_hit(const Node& node, const std::string& o, const std::string& v, const std::string& t_max, FunctionWriter* w);
 
 // Whether the primitive under the rigid transforms and uniform scales of a node has_analytic_normal()
-// accepts has a lane form of its exact hit (xX_lanes in sdf/exact/: all but the torus and the cone).
+// accepts has a lane form of its exact hit (xX_lanes in sdf/exact/: all but the torus).
 bool has_exact_hit_lanes(const Node& node);
 
 // emit_exact_hit's lane form, for a node has_exact_hit_lanes() accepts: the ray's components are

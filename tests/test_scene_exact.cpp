@@ -1,16 +1,21 @@
 // Exact intersection in whole scenes: the OpenCL build of the exact hits and of the rule that
-// combines them with the march (sdf/exact/trace.h) against the host build; the rule's edge cases;
+// combines them with the march (sdf/exact/trace.h) against the host build; the packet kernels' lane
+// form of the exact hits against the scalar form (checked once by hand: a plane whose lane form adds
+// its dot product's terms in the other order differs on 115 of lane_transformed's rays, a first
+// crossing that takes exit from outside on rays of every scene, a cylinder's axis branch with the
+// inside test inverted on 133 of the primitives' rays); the rule's edge cases;
 // and two images whose geometry has a closed form: an emissive sphere's projected area and a box
 // edge's place.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <iomanip>
-#include <cstdio>
 #include <random>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "kernels/host/scene_kernel_source.hpp"
@@ -171,14 +176,27 @@ TEST_CASE("Exact intersection: the packet kernels' lane form gives the scalar fo
     for (const Scene& scene : scenes) {
         const std::vector<float> aos = probe_rays(scene, rng);
         const int n = int(aos.size() / 6), stride = (n + 7) / 8 * 8;
+        // where the objects are placed (their outermost translation, else the origin)
+        std::vector<Vec3> anchors;
+        for (const lab::scene::Object& object : scene.objects) {
+            const auto* t = std::get_if<lab::scene::Translate>(&object.shape.kind);
+            anchors.push_back(t ? t->offset : Vec3(0.0f));
+        }
         // seven arrays of `stride` floats; every third ray's t_max short enough to cut some hits off,
-        // and every fifth ray along an axis (the branches of rays parallel to a slab, a plane or a
-        // cylinder's axis)
+        // every fifth ray along an axis (the branches of rays parallel to a slab, a plane or a
+        // cylinder's axis), and every seventh aimed at an object from any side (a cone's steep rays)
         std::vector<float> rays(size_t(7) * stride, 0.0f);
         for (int i = 0; i < stride; ++i) {
             for (int f = 0; f < 6; ++f) rays[size_t(f) * stride + i] = aos[6 * size_t(i % n) + f];
             if (i % 5 == 0)
                 for (int f = 3; f < 6; ++f) rays[size_t(f) * stride + i] = f - 3 == (i / 5) % 3 ? ((i / 15) % 2 ? 1.0f : -1.0f) : 0.0f;
+            if (i % 7 == 3) {
+                const Vec3 target = anchors[size_t(i / 7) % anchors.size()] + 0.3f * Vec3(u01(rng) - 0.5f, u01(rng) - 0.5f, u01(rng) - 0.5f);
+                const Vec3 from = target + 2.5f * glm::normalize(Vec3(u01(rng) - 0.5f, u01(rng) - 0.5f, u01(rng) - 0.5f) + Vec3(0.0f, 0.0f, 1e-3f));
+                const Vec3 v = glm::normalize(target - from);
+                const float ray[6] = {from.x, from.y, from.z, v.x, v.y, v.z};
+                for (int f = 0; f < 6; ++f) rays[size_t(f) * stride + i] = ray[f];
+            }
             rays[size_t(6) * stride + i] = i % 3 ? 100.0f : 4.0f * u01(rng);
         }
         lab::opencl::Program program =

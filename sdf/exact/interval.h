@@ -81,6 +81,13 @@ SS_FN SDF_MASK exact_quadratic_roots_lanes(SDF_FLOAT a, SDF_FLOAT b, SDF_FLOAT c
     return disc >= 0.0f;
 }
 
+SS_FN void exact_clip_half_space_lanes(SDF_FLOAT c0, SDF_FLOAT c1, SDF_FLOAT* enter, SDF_FLOAT* exit) {
+    SDF_FLOAT t = -c0 / c1;
+    *enter = select(*enter, fmax(*enter, t), c1 > 0.0f);
+    *exit = select(*exit, fmin(*exit, t), c1 < 0.0f);
+    *enter = select(*enter, (SDF_FLOAT)INFINITY, !(c1 > 0.0f) && !(c1 < 0.0f) && c0 < 0.0f);
+}
+
 SS_FN void exact_union_interval_lanes(SDF_FLOAT enter, SDF_FLOAT exit, SDF_FLOAT* union_enter, SDF_FLOAT* union_exit) {
     SDF_MASK met = enter <= exit;
     *union_enter = select(*union_enter, fmin(*union_enter, enter), met);
