@@ -67,7 +67,7 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
     }
     float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 1.0f, max_distance = NO_RAY;
     float8 exact_t = INFINITY; /* each lane's nearest exact hit, none yet */
-    float8 ray_max = NO_RAY;     /* each lane's max distance, before the march's is cut at that hit */
+    float8 ray_max = NO_RAY;   /* each lane's max distance, before the march's is cut at that hit */
     MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, (int8)0, march_settings);
     int next = first;
     int8 holding = 0; /* the lanes that have a ray, marched or marching */
@@ -112,8 +112,8 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
             holding = vload8(0, lane_ray) >= 0;
             const int8 start = vload8(0, started);
             if (any(start)) {
-                /* the new rays' exact hits, on every lane (a lane form costs less than the scalar
-                 * form of four lanes), kept in those that start */
+                /* the new rays' exact hits: one lane-form call for every lane (at least four
+                 * start while rays are left), kept in those that start */
                 ox = select(ox, vload8(0, field[0]), start);
                 oy = select(oy, vload8(0, field[1]), start);
                 oz = select(oz, vload8(0, field[2]), start);

@@ -173,10 +173,7 @@ std::string emit_exact_hit(const Node& node, const std::string& o, const std::st
 }
 
 bool has_exact_hit_lanes(const Node& node) {
-    if (std::holds_alternative<Plane>(node.kind) || std::holds_alternative<Box>(node.kind) || std::holds_alternative<Sphere>(node.kind) ||
-        std::holds_alternative<Cylinder>(node.kind) || std::holds_alternative<Capsule>(node.kind) || std::holds_alternative<RoundBox>(node.kind) ||
-        std::holds_alternative<Cone>(node.kind))
-        return true;
+    if (primitive_call(node.kind)) return !std::holds_alternative<Torus>(node.kind);
     if (std::holds_alternative<Translate>(node.kind) || std::holds_alternative<Rotate>(node.kind) ||
         std::holds_alternative<Scale>(node.kind))
         return has_exact_hit_lanes(node.children[0]);
