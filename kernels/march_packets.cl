@@ -25,39 +25,49 @@ int lowest_lane(uint bits) { return 31 - (int)clz(bits & (0u - bits)); }
  * whose march is done stores it and takes the next ray, skipping those that are none (a path that
  * has ended), so the lanes stay busy however long each ray's march and however few rays are left.
  * A lane waits for company until half the lanes are free: starting a ray costs a few dozen scalar
- * operations. A ray's exact hits are found, one lane at a time, when it starts: its march stops
- * there, and the exact hit is taken when the march finds nothing nearer (sdf/exact/with_march.h, as
- * trace_ray in kernels/path.h). */
+ * operations. A ray's exact hits are found when it starts, on the lanes (the generated
+ * scene_exact_hit_lanes, to the bit the scalar scene_exact_hit): its march stops there, and the exact
+ * hit is taken when the march finds nothing nearer (sdf/exact/with_march.h, as trace_ray in
+ * kernels/path.h). */
 SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int first, int end, int stride, __global const float* rays, __global RayMarch* marches) {
     if (scene_march_objects() == 0) {
         /* nothing to march: a ray's exact hit is all there is, without the lanes' bookkeeping; what
-         * a march that is done before its first step and its exact hit give (march_scene_ray) */
-        for (int ray = first; ray < end; ++ray) {
-            const float max_distance = rays[6 * stride + ray];
-            if (0.0f > max_distance) continue;
-            float3 origin, direction;
-            load_ray(rays, stride, ray, &origin, &direction);
-            float t = 0.0f;
-            int status = MARCH_MISS;
-            exact_or_march(scene_exact_hit(origin, direction, max_distance), max_distance, &t, &status);
-            marches[ray].t = t;
-            marches[ray].status = status;
-            marches[ray].steps = 0;
+         * a march that is done before its first step and its exact hit give (march_scene_ray), eight
+         * rays at a time (the granule starts at a multiple of 8 and the stride is a multiple of 8, so
+         * a packet's loads stay in the buffer; the lanes past `end` are not stored) */
+        for (int packet = first; packet < end; packet += 8) {
+            const float8 max_distance = vload8(0, rays + 6 * stride + packet);
+            const int8 ray = (int8)(0, 1, 2, 3, 4, 5, 6, 7) < (int8)(end - packet) && !(0.0f > max_distance);
+            if (!any(ray)) continue;
+            float8 t = 0.0f;
+            int8 status = MARCH_MISS;
+            exact_or_march_lanes(scene_exact_hit_lanes(vload8(0, rays + packet), vload8(0, rays + stride + packet), vload8(0, rays + 2 * stride + packet),
+                                                       vload8(0, rays + 3 * stride + packet), vload8(0, rays + 4 * stride + packet),
+                                                       vload8(0, rays + 5 * stride + packet), max_distance),
+                                 max_distance, &t, &status);
+            float lane_t[8];
+            int lane_status[8];
+            vstore8(t, 0, lane_t);
+            vstore8(status, 0, lane_status);
+            for (uint stored = lane_bits(ray); stored != 0u; stored &= stored - 1u) {
+                const int lane = lowest_lane(stored);
+                marches[packet + lane].t = lane_t[lane];
+                marches[packet + lane].status = lane_status[lane];
+                marches[packet + lane].steps = 0;
+            }
         }
         return;
     }
     uint evaluations = 0u;
     float field[RAY_FIELDS][8]; /* each lane's ray: origin, direction, max distance */
     int lane_ray[8];            /* the ray each lane marches; -1: none */
-    float exact_t[8];           /* each lane's nearest exact hit */
-    float ray_max[8];           /* each lane's max distance, before the march's is cut at that hit */
-    int exact_end[8];           /* -1 where the march's max distance is that hit */
     for (int lane = 0; lane < 8; ++lane) {
         lane_ray[lane] = -1;
-        exact_end[lane] = 0;
         for (int f = 0; f < RAY_FIELDS; ++f) field[f][lane] = NO_RAY;
     }
     float8 ox = 0.0f, oy = 0.0f, oz = 0.0f, vx = 0.0f, vy = 0.0f, vz = 1.0f, max_distance = NO_RAY;
+    float8 exact_t = INFINITY; /* each lane's nearest exact hit, none yet */
+    float8 ray_max = NO_RAY;   /* each lane's max distance, before the march's is cut at that hit */
     MarchLanesState st = march_lanes_start(ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, (int8)0, march_settings);
     int next = first;
     int8 holding = 0; /* the lanes that have a ray, marched or marching */
@@ -67,13 +77,15 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
         if (next < end ? -SDF_SUM(free) >= MARCH_REFILL_LANES : any(holding && free)) {
             int started[8], status[8], steps[8];
             float t[8];
-            vstore8(st.m.t, 0, t);
-            vstore8(st.m.status, 0, status);
+            float8 ray_t = st.m.t;
+            int8 ray_status = st.m.status;
+            exact_or_march_lanes(exact_t, ray_max, &ray_t, &ray_status);
+            vstore8(ray_t, 0, t);
+            vstore8(ray_status, 0, status);
             vstore8(st.m.steps, 0, steps);
             vstore8((int8)0, 0, started);
             for (uint done = lane_bits(free && holding); done != 0u; done &= done - 1u) {
                 const int lane = lowest_lane(done);
-                exact_or_march(exact_t[lane], ray_max[lane], &t[lane], &status[lane]);
                 marches[lane_ray[lane]].t = t[lane];
                 marches[lane_ray[lane]].status = status[lane];
                 marches[lane_ray[lane]].steps = steps[lane];
@@ -99,23 +111,19 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
             }
             holding = vload8(0, lane_ray) >= 0;
             const int8 start = vload8(0, started);
-            for (uint begun = lane_bits(start); begun != 0u; begun &= begun - 1u) {
-                const int lane = lowest_lane(begun);
-                ray_max[lane] = field[6][lane];
-                exact_t[lane] = scene_exact_hit(make_float3(field[0][lane], field[1][lane], field[2][lane]),
-                                                make_float3(field[3][lane], field[4][lane], field[5][lane]), ray_max[lane]);
-                field[6][lane] = exact_march_limit(ray_max[lane], exact_t[lane], scene_march_objects());
-                exact_end[lane] = exact_t[lane] <= ray_max[lane] ? -1 : 0;
-            }
             if (any(start)) {
-                ox = vload8(0, field[0]);
-                oy = vload8(0, field[1]);
-                oz = vload8(0, field[2]);
-                vx = vload8(0, field[3]);
-                vy = vload8(0, field[4]);
-                vz = vload8(0, field[5]);
-                max_distance = vload8(0, field[6]);
-                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, vload8(0, exact_end), march_settings);
+                /* the new rays' exact hits: one lane-form call for every lane (at least four
+                 * start while rays are left), kept in those that start */
+                ox = select(ox, vload8(0, field[0]), start);
+                oy = select(oy, vload8(0, field[1]), start);
+                oz = select(oz, vload8(0, field[2]), start);
+                vx = select(vx, vload8(0, field[3]), start);
+                vy = select(vy, vload8(0, field[4]), start);
+                vz = select(vz, vload8(0, field[5]), start);
+                ray_max = select(ray_max, vload8(0, field[6]), start);
+                exact_t = select(exact_t, scene_exact_hit_lanes(ox, oy, oz, vx, vy, vz, ray_max), start);
+                max_distance = select(max_distance, exact_march_limit_lanes(ray_max, exact_t, scene_march_objects()), start);
+                st = march_lanes_restart(st, start, ox, oy, oz, vx, vy, vz, (float8)0.0f, max_distance, exact_t <= ray_max, march_settings);
             }
         }
         if (!any(st.running)) {

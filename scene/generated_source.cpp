@@ -37,11 +37,29 @@ void write_counted_distance(std::ostringstream& out, const std::string& distance
         << "    return " << nearest << "_counted_xyz(p.x, p.y, p.z, &k, evaluations);\n}\n#endif\n\n";
 }
 
+// The lane form of the exact hit of object `name` (scene_object_N_hit_lanes): the primitive's own
+// (emit_exact_hit_lanes) where it has one, else the scalar name_hit lane by lane.
+void write_exact_hit_lanes(std::ostringstream& out, const Node& shape, const std::string& name, std::set<std::string>* headers) {
+    out << "SS_FN SDF_FLOAT " << name << "_hit_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_max) {\n";
+    if (has_exact_hit_lanes(shape)) {
+        FunctionWriter w(headers);
+        std::string hit = emit_exact_hit_lanes(shape, "o", "v", "t_max", &w);
+        out << w.body() << "    return " << hit << ";\n}\n\n";
+        return;
+    }
+    out << "    float r[7][8], t[8];\n"
+        << "    vstore8(ox, 0, r[0]);\n    vstore8(oy, 0, r[1]);\n    vstore8(oz, 0, r[2]);\n"
+        << "    vstore8(vx, 0, r[3]);\n    vstore8(vy, 0, r[4]);\n    vstore8(vz, 0, r[5]);\n    vstore8(t_max, 0, r[6]);\n"
+        << "    for (int l = 0; l < 8; ++l)\n"
+        << "        t[l] = " << name << "_hit(make_float3(r[0][l], r[1][l], r[2][l]), make_float3(r[3][l], r[4][l], r[5][l]), r[6][l]);\n"
+        << "    return vload8(0, t);\n}\n\n";
+}
+
 }  // namespace
 
 std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, bool object_bounds) {
     std::set<std::string> headers;
-    std::ostringstream functions, exact_functions;
+    std::ostringstream functions, exact_functions, exact_lane_functions, exact_lane_hits;
     std::ostringstream normals, slot_cases, normal_cases, exact_normal_cases, exact_hits;
     std::vector<bool> marched;
     size_t index = 0;
@@ -66,6 +84,8 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
             exact_functions << "/* object \"" << object.name << "\" (" << object.shape.path << ") */\n"
                             << "SS_FN float " << name << "_hit(float3 o, float3 v, float t_max) {\n" << wx.body() << "    return " << hit << ";\n}\n\n";
             exact_hits << "    t = fmin(t, " << name << "_hit(o, v, fmin(t, t_max)));\n";
+            write_exact_hit_lanes(exact_lane_functions, object.shape, name, &headers);
+            exact_lane_hits << "    t = fmin(t, " << name << "_hit_lanes(ox, oy, oz, vx, vy, vz, fmin(t, t_max)));\n";
         }
         marched.push_back(!exact);
         slot_cases << "    case " << index << ": return " << object.material << ";\n";
@@ -85,6 +105,8 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
         if (exact_emitters) {
             headers.insert("sdf/exact/sphere.h");
             exact_hits << "    t = fmin(t, xSphere(o - " << vec3_literal(e.center) << ", v, " << float_literal(e.radius) << ", fmin(t, t_max)));\n";
+            exact_lane_hits << "    t = fmin(t, xSphere_lanes(ox - " << float_literal(e.center.x) << ", oy - " << float_literal(e.center.y) << ", oz - "
+                            << float_literal(e.center.z) << ", vx, vy, vz, " << float_literal(e.radius) << ", fmin(t, t_max)));\n";
             exact_normal_cases << normal;
         } else {
             march.candidate(distance, int(index), "    ");
@@ -119,8 +141,15 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
         out << "    float t = EXACT_MISS;\n" << exact_hits.str() << "    return t;\n}\n\n";
     else
         out << "    (void)o;\n    (void)v;\n    (void)t_max;\n    return INFINITY;\n}\n\n";
-    out << "#ifdef SDF_LANES\n"
-        << "/* The march's field at SDF_LANES points at once (a packet kernel, kernels/march_packets.cl): the\n"
+    out << "#ifdef SDF_LANES\n" << exact_lane_functions.str()
+        << "/* scene_exact_hit of SDF_LANES rays at once (a packet kernel), to the bit. */\n"
+        << "SS_FN SDF_FLOAT scene_exact_hit_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_max) {\n";
+    if (split)
+        out << "    SDF_FLOAT t = EXACT_MISS;\n" << exact_lane_hits.str() << "    return t;\n}\n\n";
+    else
+        out << "    (void)ox;\n    (void)oy;\n    (void)oz;\n    (void)vx;\n    (void)vy;\n    (void)vz;\n    (void)t_max;\n"
+            << "    return INFINITY;\n}\n\n";
+    out << "/* The march's field at SDF_LANES points at once (a packet kernel, kernels/march_packets.cl): the\n"
         << " * nearest distance only, exact in the lanes of `active`; a box test skips a group only when it may\n"
         << " * for every one of them. */\n"
         << "SS_FN SDF_FLOAT scene_distance_xyz(SDF_FLOAT px, SDF_FLOAT py, SDF_FLOAT pz, SDF_MASK active) {\n    SDF_FLOAT d = INFINITY;\n";

@@ -172,6 +172,37 @@ std::string emit_exact_hit(const Node& node, const std::string& o, const std::st
     return float_literal(s->factor) + " * (" + hit + ")";
 }
 
+bool has_exact_hit_lanes(const Node& node) {
+    if (primitive_call(node.kind)) return !std::holds_alternative<Torus>(node.kind);
+    if (std::holds_alternative<Translate>(node.kind) || std::holds_alternative<Rotate>(node.kind) ||
+        std::holds_alternative<Scale>(node.kind))
+        return has_exact_hit_lanes(node.children[0]);
+    return false;
+}
+
+std::string emit_exact_hit_lanes(const Node& node, const std::string& o, const std::string& v, const std::string& t_max, FunctionWriter* w) {
+    auto at = [](const std::string& p, int i) { return p + kScalarComponents[i]; };
+    if (auto call = primitive_call(node.kind)) {
+        std::string header = call->header;
+        w->use(header.replace(header.find("primitives"), std::string("primitives").size(), "exact"));
+        return std::string("x") + call->stem + "_lanes(" + component_names(o) + ", " + component_names(v) + ", " + call->component_arguments +
+               ", " + t_max + ")";
+    }
+    const Node& child = node.children[0];
+    auto each = [&](auto component) { return w->point_components(component(0), component(1), component(2)); };
+    if (auto* t = std::get_if<Translate>(&node.kind))
+        return emit_exact_hit_lanes(child, each([&](int i) { return at(o, i) + " - " + float_literal(t->offset[i]); }), v, t_max, w);
+    if (auto* r = std::get_if<Rotate>(&node.kind)) {
+        std::string local_o = each([&](int i) { return rotation_component(r->rotation, o, true, i, kScalarComponents); });
+        return emit_exact_hit_lanes(child, local_o, each([&](int i) { return rotation_component(r->rotation, v, true, i, kScalarComponents); }), t_max,
+                                    w);
+    }
+    auto* s = std::get_if<Scale>(&node.kind);
+    std::string local_o = each([&](int i) { return at(o, i) + " / " + float_literal(s->factor); });
+    std::string hit = emit_exact_hit_lanes(child, local_o, v, w->lane_scalar(t_max + " / " + float_literal(s->factor)), w);
+    return float_literal(s->factor) + " * (" + hit + ")";
+}
+
 float evaluation_cost(const Node& node) {
     if (primitive_call(node.kind)) return std::holds_alternative<Cone>(node.kind) ? 2.0f : 1.0f;
     float cost = 0.0f;

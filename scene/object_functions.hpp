@@ -25,6 +25,7 @@ public:
     std::string distance(const std::string& expression) { return local("SDF_FLOAT", "d", expression); }
     std::string normal(const std::string& expression) { return local("float3", "n", expression); }
     std::string scalar(const std::string& expression) { return local("float", "t", expression); }
+    std::string lane_scalar(const std::string& expression) { return local("SDF_FLOAT", "t", expression); }
     void use(const std::string& header) { headers_->insert(header); }
     const std::string& body() const { return body_; }
 
@@ -55,6 +56,15 @@ std::string emit_normal(const Node& node, const std::string& p, FunctionWriter* 
 // ray taken down to the primitive's frame (a rotation turns both o and v, a uniform scale s divides
 // o and t_max by s and multiplies the hit by s, v staying unit), as the host interpreter does.
 std::string emit_exact_hit(const Node& node, const std::string& o, const std::string& v, const std::string& t_max, FunctionWriter* w);
+
+// Whether the primitive under the rigid transforms and uniform scales of a node has_analytic_normal()
+// accepts has a lane form of its exact hit (xX_lanes in sdf/exact/: all but the torus).
+bool has_exact_hit_lanes(const Node& node);
+
+// emit_exact_hit's lane form, for a node has_exact_hit_lanes() accepts: the ray's components are
+// the SDF_FLOAT locals ox, oy, oz and vx, vy, vz (o and v the stems), t_max an SDF_FLOAT, and the
+// same transforms are applied component by component (the same roundings).
+std::string emit_exact_hit_lanes(const Node& node, const std::string& o, const std::string& v, const std::string& t_max, FunctionWriter* w);
 
 // A rough cost of evaluating the node, in primitive evaluations: where an object costs more than its
 // box test (about one and a half primitives), the test pays when it skips the object.

@@ -20,4 +20,22 @@ SS_FN float xBox(float3 o, float3 v, float3 half_size, float t_max) {
     return exact_first_crossing(enter, exit, t_max);
 }
 
+#ifdef SDF_LANES /* the lane forms (sdf/exact/interval.h): the same slabs, eight rays at once */
+SS_FN void box_interval_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, float hx, float hy, float hz,
+                              SDF_FLOAT* enter, SDF_FLOAT* exit) {
+    *enter = -INFINITY;
+    *exit = INFINITY;
+    exact_clip_slab_lanes(-hx, hx, ox, vx, enter, exit);
+    exact_clip_slab_lanes(-hy, hy, oy, vy, enter, exit);
+    exact_clip_slab_lanes(-hz, hz, oz, vz, enter, exit);
+}
+
+SS_FN SDF_FLOAT xBox_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, float hx, float hy, float hz,
+                           SDF_FLOAT t_max) {
+    SDF_FLOAT enter, exit;
+    box_interval_lanes(ox, oy, oz, vx, vy, vz, hx, hy, hz, &enter, &exit);
+    return exact_first_crossing_lanes(enter, exit, t_max);
+}
+#endif
+
 #endif

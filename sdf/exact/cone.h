@@ -49,4 +49,35 @@ SS_FN float xCone(float3 o, float3 v, float r, float height, float t_max) {
     return lo + exact_first_crossing(enter, exit, t_max - lo);
 }
 
+#ifdef SDF_LANES
+/* The lane form (sdf/exact/interval.h): the three cases of A each computed, each lane taking its own;
+ * o + v lo is (px, py, pz). */
+SS_FN SDF_FLOAT xCone_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, float r, float height,
+                            SDF_FLOAT t_max) {
+    SDF_FLOAT bound_enter, bound_exit;
+    cylinder_interval_lanes(ox, oy - 0.5f * height, oz, vx, vy, vz, 1.01f * r, 0.505f * height, &bound_enter, &bound_exit);
+    SDF_MASK miss = !(bound_enter <= bound_exit) || !(bound_exit > 0.0f);
+    if (!SDF_ANY(!miss)) return (SDF_FLOAT)EXACT_MISS;
+    const SDF_FLOAT lo = fmax(bound_enter, 0.0f);
+    SDF_FLOAT px = ox + vx * lo, py = oy + vy * lo, pz = oz + vz * lo;
+    float k = r / height;
+    SDF_FLOAT a = height - py, b = -vy;
+    SDF_FLOAT A = vx * vx + vz * vz - k * k * b * b;
+    SDF_FLOAT B = px * vx + pz * vz - k * k * a * b;
+    SDF_FLOAT C = px * px + pz * pz - k * k * a * a;
+    SDF_FLOAT enter = -INFINITY, exit = INFINITY;
+    SDF_FLOAT p0, p1, n0, n1, flat_enter = -INFINITY, flat_exit = INFINITY;
+    SDF_MASK real_pos = exact_quadratic_roots_lanes(A, B, C, B * B - A * C, &p0, &p1);
+    SDF_MASK real_neg = exact_quadratic_roots_lanes(-A, -B, -C, B * B - A * C, &n0, &n1);
+    exact_clip_half_space_lanes(-C, -2.0f * B, &flat_enter, &flat_exit);
+    SDF_MASK pos = A > 0.0f, neg = A < 0.0f;
+    miss = miss || (pos && !real_pos);
+    enter = select(select(flat_enter, select(enter, n1, real_neg && b > 0.0f), neg), p0, pos);
+    exit = select(select(flat_exit, select(exit, n0, real_neg && !(b > 0.0f)), neg), p1, pos);
+    exact_clip_half_space_lanes(a, b, &enter, &exit);
+    exact_clip_half_space_lanes(py, vy, &enter, &exit);
+    return select(lo + exact_first_crossing_lanes(enter, exit, t_max - lo), (SDF_FLOAT)EXACT_MISS, miss);
+}
+#endif
+
 #endif

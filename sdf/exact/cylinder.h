@@ -32,4 +32,28 @@ SS_FN float xCylinder(float3 o, float3 v, float r, float half_height, float t_ma
     return exact_first_crossing(enter, exit, t_max);
 }
 
+#ifdef SDF_LANES /* the lane forms (sdf/exact/interval.h): both branches computed, each lane takes its own */
+SS_FN void cylinder_interval_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, float r, float h,
+                                   SDF_FLOAT* enter, SDF_FLOAT* exit) {
+    SDF_FLOAT a = vx * vx + vz * vz;
+    SDF_FLOAT c = ox * ox + oz * oz - r * r;
+    SDF_FLOAT b = ox * vx + oz * vz;
+    SDF_FLOAT s = b / a;
+    SDF_FLOAT fx = ox - s * vx, fz = oz - s * vz;
+    SDF_FLOAT t0, t1;
+    SDF_MASK real = exact_quadratic_roots_lanes(a, b, c, a * (r * r - (fx * fx + fz * fz)), &t0, &t1);
+    SDF_MASK tilted = a > 0.0f;
+    *enter = select(select((SDF_FLOAT)-INFINITY, (SDF_FLOAT)INFINITY, !(c <= 0.0f)), select((SDF_FLOAT)INFINITY, t0, real), tilted);
+    *exit = select((SDF_FLOAT)INFINITY, t1, tilted && real);
+    exact_clip_slab_lanes(-h, h, oy, vy, enter, exit);
+}
+
+SS_FN SDF_FLOAT xCylinder_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, float r, float half_height,
+                                SDF_FLOAT t_max) {
+    SDF_FLOAT enter, exit;
+    cylinder_interval_lanes(ox, oy, oz, vx, vy, vz, r, half_height, &enter, &exit);
+    return exact_first_crossing_lanes(enter, exit, t_max);
+}
+#endif
+
 #endif

@@ -62,4 +62,43 @@ SS_FN void exact_union_interval(float enter, float exit, float* union_enter, flo
     *union_exit = fmax(*union_exit, exit);
 }
 
+#ifdef SDF_LANES
+/* The lane forms (a packet kernel's eight rays, single_source/vocabulary.h): the functions above
+ * line for line, each branch a select of the same values, so every lane rounds as the scalar form. */
+
+SS_FN SDF_FLOAT exact_first_crossing_lanes(SDF_FLOAT enter, SDF_FLOAT exit, SDF_FLOAT t_max) {
+    SDF_FLOAT t = select(exit, enter, enter > 0.0f);
+    return select((SDF_FLOAT)EXACT_MISS, t, enter <= exit && t > 0.0f && t <= t_max);
+}
+
+/* The lanes with real roots; the others' *t0, *t1 are not to be read. */
+SS_FN SDF_MASK exact_quadratic_roots_lanes(SDF_FLOAT a, SDF_FLOAT b, SDF_FLOAT c, SDF_FLOAT disc, SDF_FLOAT* t0, SDF_FLOAT* t1) {
+    SDF_FLOAT s = sqrt(disc);
+    SDF_FLOAT q = -(b + select(-s, s, b >= 0.0f));
+    SDF_FLOAT r0 = q / a, r1 = c / q;
+    *t0 = select(fmin(r0, r1), (SDF_FLOAT)0.0f, q == 0.0f);
+    *t1 = select(fmax(r0, r1), (SDF_FLOAT)0.0f, q == 0.0f);
+    return disc >= 0.0f;
+}
+
+SS_FN void exact_clip_half_space_lanes(SDF_FLOAT c0, SDF_FLOAT c1, SDF_FLOAT* enter, SDF_FLOAT* exit) {
+    SDF_FLOAT t = -c0 / c1;
+    *enter = select(*enter, fmax(*enter, t), c1 > 0.0f);
+    *exit = select(*exit, fmin(*exit, t), c1 < 0.0f);
+    *enter = select(*enter, (SDF_FLOAT)INFINITY, !(c1 > 0.0f) && !(c1 < 0.0f) && c0 < 0.0f);
+}
+
+SS_FN void exact_union_interval_lanes(SDF_FLOAT enter, SDF_FLOAT exit, SDF_FLOAT* union_enter, SDF_FLOAT* union_exit) {
+    SDF_MASK met = enter <= exit;
+    *union_enter = select(*union_enter, fmin(*union_enter, enter), met);
+    *union_exit = select(*union_exit, fmax(*union_exit, exit), met);
+}
+
+SS_FN void exact_clip_slab_lanes(float lo, float hi, SDF_FLOAT o, SDF_FLOAT v, SDF_FLOAT* enter, SDF_FLOAT* exit) {
+    SDF_FLOAT t0 = (lo - o) / v, t1 = (hi - o) / v;
+    *enter = fmax(*enter, fmin(t0, t1));
+    *exit = fmin(*exit, fmax(t0, t1));
+}
+#endif
+
 #endif

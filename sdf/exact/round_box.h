@@ -46,4 +46,38 @@ SS_FN float xRoundBox(float3 o, float3 v, float3 half_size, float radius, float 
     return exact_first_crossing(enter, exit, t_max);
 }
 
+#ifdef SDF_LANES /* the lane form (sdf/exact/interval.h): the pieces for every lane unless all miss the outer box */
+SS_FN SDF_FLOAT xRoundBox_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, float hx, float hy, float hz,
+                                float radius, SDF_FLOAT t_max) {
+    SDF_FLOAT outer_enter, outer_exit, e0, e1;
+    box_interval_lanes(ox, oy, oz, vx, vy, vz, hx, hy, hz, &outer_enter, &outer_exit);
+    SDF_MASK outer = outer_enter <= outer_exit;
+    if (!SDF_ANY(outer)) return (SDF_FLOAT)EXACT_MISS;
+    float r = round_box_radius(hx, hy, hz, radius);
+    if (!(r > 0.0f)) return exact_first_crossing_lanes(outer_enter, outer_exit, t_max);
+    float cx = hx - r, cy = hy - r, cz = hz - r;
+    SDF_FLOAT enter = INFINITY, exit = -INFINITY;
+    box_interval_lanes(ox, oy, oz, vx, vy, vz, hx, cy, cz, &e0, &e1);
+    exact_union_interval_lanes(e0, e1, &enter, &exit);
+    box_interval_lanes(ox, oy, oz, vx, vy, vz, cx, hy, cz, &e0, &e1);
+    exact_union_interval_lanes(e0, e1, &enter, &exit);
+    box_interval_lanes(ox, oy, oz, vx, vy, vz, cx, cy, hz, &e0, &e1);
+    exact_union_interval_lanes(e0, e1, &enter, &exit);
+    for (int i = 0; i < 4; ++i) {
+        float sa = (i & 1) ? 1.0f : -1.0f, sb = (i & 2) ? 1.0f : -1.0f;
+        cylinder_interval_lanes(oy - sa * cy, ox, oz - sb * cz, vy, vx, vz, r, cx, &e0, &e1);
+        exact_union_interval_lanes(e0, e1, &enter, &exit);
+        cylinder_interval_lanes(ox - sa * cx, oy, oz - sb * cz, vx, vy, vz, r, cy, &e0, &e1);
+        exact_union_interval_lanes(e0, e1, &enter, &exit);
+        cylinder_interval_lanes(ox - sa * cx, oz, oy - sb * cy, vx, vz, vy, r, cz, &e0, &e1);
+        exact_union_interval_lanes(e0, e1, &enter, &exit);
+    }
+    for (int i = 0; i < 8; ++i) {
+        sphere_interval_lanes(ox - ((i & 1) ? cx : -cx), oy - ((i & 2) ? cy : -cy), oz - ((i & 4) ? cz : -cz), vx, vy, vz, r, &e0, &e1);
+        exact_union_interval_lanes(e0, e1, &enter, &exit);
+    }
+    return select((SDF_FLOAT)EXACT_MISS, exact_first_crossing_lanes(enter, exit, t_max), outer);
+}
+#endif
+
 #endif

@@ -20,4 +20,24 @@ SS_FN float xSphere(float3 o, float3 v, float r, float t_max) {
     return exact_first_crossing(enter, exit, t_max);
 }
 
+#ifdef SDF_LANES /* the lane forms (sdf/exact/interval.h); dot(a, b) is a.x b.x + a.y b.y + a.z b.z */
+/* Where a lane has no real root, its interval is the empty [INFINITY, -INFINITY] (the scalar form
+ * leaves it unset and says 0), which a union skips and a first crossing misses. */
+SS_FN void sphere_interval_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, float r, SDF_FLOAT* enter,
+                                 SDF_FLOAT* exit) {
+    SDF_FLOAT b = ox * vx + oy * vy + oz * vz;
+    SDF_FLOAT fx = ox - vx * b, fy = oy - vy * b, fz = oz - vz * b;
+    SDF_MASK real = exact_quadratic_roots_lanes((SDF_FLOAT)1.0f, b, (ox * ox + oy * oy + oz * oz) - r * r, r * r - (fx * fx + fy * fy + fz * fz),
+                                                enter, exit);
+    *enter = select((SDF_FLOAT)INFINITY, *enter, real);
+    *exit = select((SDF_FLOAT)-INFINITY, *exit, real);
+}
+
+SS_FN SDF_FLOAT xSphere_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, float r, SDF_FLOAT t_max) {
+    SDF_FLOAT enter, exit;
+    sphere_interval_lanes(ox, oy, oz, vx, vy, vz, r, &enter, &exit);
+    return exact_first_crossing_lanes(enter, exit, t_max);
+}
+#endif
+
 #endif

@@ -25,4 +25,16 @@ SS_FN void exact_or_march(float t_exact, float max_distance, float* t, int* stat
     }
 }
 
+#ifdef SDF_LANES /* the lane forms: the rules above for eight rays at once */
+SS_FN SDF_FLOAT exact_march_limit_lanes(SDF_FLOAT max_distance, SDF_FLOAT t_exact, int marched_objects) {
+    return marched_objects > 0 ? fmin(max_distance, t_exact) : (SDF_FLOAT)-1.0f;
+}
+
+SS_FN void exact_or_march_lanes(SDF_FLOAT t_exact, SDF_FLOAT max_distance, SDF_FLOAT* t, SDF_MASK* status) {
+    SDF_MASK exact = *status != (SDF_MASK)MARCH_HIT && t_exact <= max_distance;
+    *t = select(*t, t_exact, exact);
+    *status = select(*status, (SDF_MASK)MARCH_HIT, exact);
+}
+#endif
+
 #endif
