@@ -4,7 +4,8 @@
 // nearly free stand-in (bench/kernels/part_standins.h), against the default build, interleaved in one
 // run; 1 - default/stand-in is the part's share of the time, as far as the stand-in keeps the
 // paths alike (its rays per path are printed next to it); and the environment's part done twice,
-// on the very same paths: default/twice - 1 is its share without that proviso. (3) The wavefront's
+// on the very same paths: default/twice - 1 bounds its share from above (the second lookups are not
+// prefetched as the path's own are, docs/render.md). (3) The wavefront's
 // launches (a CPU device): each kind's share of the time and microseconds per sample, the host
 // waiting for every launch (bench/wavefront_launch_timer.hpp). (4) Work-group size:
 // paths/s per local size against the default 64. Figures, not timed tests: every ratio is measured
@@ -144,7 +145,7 @@ void run_bench_breakdown(const BenchBreakdownCommand& c) {
                         rays / default_rays, 100.0 * (1.0 - default_rays / rays));
         }
         const Speed& twice = s[parts.size() + 1];
-        std::printf("  environment twice    %.3g paths/s (%.2fx), %.2f rays/path: share of the time about %.0f %%\n", twice.paths_per_second,
+        std::printf("  environment twice    %.3g paths/s (%.2fx), %.2f rays/path: share of the time at most about %.0f %%\n", twice.paths_per_second,
                     twice.paths_per_second / s[0].paths_per_second, twice.rays_per_path,
                     100.0 * (s[0].paths_per_second / twice.paths_per_second - 1.0));
         print_launch_times(runtime, job.input, c.seconds);

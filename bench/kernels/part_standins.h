@@ -74,7 +74,9 @@ SS_FN float standin_light_pdf(const Light* l, const EnvironmentMap* env, Environ
  * compiler cannot reuse the first), its result added times 0 (kept: 0 x a float is not 0 without
  * relaxed math). The paths stay exactly those of the default build, unlike with the stand-in
  * above, whose uniform directions point below the surface half the time and so skip shadow rays:
- * paths/s(default) / paths/s(twice) - 1 is the environment's share of the time itself. */
+ * paths/s(default) / paths/s(twice) - 1 is at most the environment's share of the time, since the
+ * path tracer's peeks ask the cache for the first lookups ahead (kernels/path_tracer_wavefront.h)
+ * and not for these. */
 SS_FN LightSample twice_sample_light(const Light* l, const EnvironmentMap* env, EnvironmentBuffers b, float3 p, float2 u) {
     LightSample s = sample_light(l, env, b, p, u);
     if (l->type == LIGHT_ENVIRONMENT) {
