@@ -3,7 +3,8 @@
 // written loads (common/image_codec_loader.cpp). OpenImageIO brings some 260 shared libraries, whose
 // loading costs a process about 0.25 s of CPU before main(); a command that reads and writes no
 // image (a lobe plot, an evaluation, every input error found before a render) starts without them.
-// Plain data across the border, so the module needs no lab library.
+// Plain data across the border, so the module needs no lab library. (The sanitized build links it
+// in instead: common/CMakeLists.txt says why.)
 #pragma once
 
 #include <memory>

@@ -10,6 +10,12 @@
 
 #include "common/image_codec.hpp"
 
+#ifdef DTOADQ_IMAGE_CODEC_LINKED
+// the sanitized build links the codec in (common/CMakeLists.txt)
+extern "C" const lab::codec::ImageCodec* dtoadq_image_codec();
+
+const lab::codec::ImageCodec& lab::codec::image_codec() { return *dtoadq_image_codec(); }
+#else
 namespace lab::codec {
 
 namespace {
@@ -48,3 +54,4 @@ const ImageCodec& image_codec() {
 }
 
 }  // namespace lab::codec
+#endif
