@@ -117,7 +117,7 @@ TEST_CASE("Object bounds: renders with and without the box tests are the same bi
             lab::render::RenderInput input;
             input.scene = lab::scene::load_scene(file);
             input.environment = lab::ibl::Environment::constant(brdf::float3(0.5f), "grey", lab::ibl::EnvironmentOptions{});
-            input.settings.width = input.settings.height = 24;
+            input.settings.width = input.settings.height = 16;
             input.settings.object_bounds = bounds == 1;
             input.settings.march_everything = c.march_everything;
             lab::render::OpenClRenderer renderer(runtime, input);
