@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "brdf/host/features.hpp"
 #include "scene/geometry_paths.hpp"
@@ -53,6 +55,22 @@ void write_exact_hit_lanes(std::ostringstream& out, const Node& shape, const std
         << "    for (int l = 0; l < 8; ++l)\n"
         << "        t[l] = " << name << "_hit(make_float3(r[0][l], r[1][l], r[2][l]), make_float3(r[3][l], r[4][l], r[5][l]), r[6][l]);\n"
         << "    return vload8(0, t);\n}\n\n";
+}
+
+// scene_exact_hit in one of its forms (`type` float, or SDF_FLOAT for the lanes): the nearest of the
+// exact objects' `hits`, each call lowering t; INFINITY when the scene intersects nothing exactly
+// (`any` false), its parameters unused.
+void write_exact_hit(std::ostringstream& out, const std::string& type, const std::string& name,
+                     const std::vector<std::pair<std::string, std::string>>& parameters, bool any, const std::string& hits) {
+    out << "SS_FN " << type << " " << name << "(";
+    for (size_t i = 0; i < parameters.size(); ++i) out << (i ? ", " : "") << parameters[i].first << " " << parameters[i].second;
+    out << ") {\n";
+    if (any) {
+        out << "    " << type << " t = EXACT_MISS;\n" << hits << "    return t;\n}\n\n";
+        return;
+    }
+    for (const auto& parameter : parameters) out << "    (void)" << parameter.second << ";\n";
+    out << "    return INFINITY;\n}\n\n";
 }
 
 }  // namespace
@@ -135,20 +153,14 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
     // What every kernel, packet or not, calls per ray (sdf/exact/with_march.h).
     out << "/* The objects in the march's field. */\n"
         << "SS_FN int scene_march_objects(void) { return " << marched_count(scene) << "; }\n\n"
-        << "/* The nearest exact hit of the ray o + t v (v unit) with t in (0, t_max], INFINITY for none. */\n"
-        << "SS_FN float scene_exact_hit(float3 o, float3 v, float t_max) {\n";
-    if (split)
-        out << "    float t = EXACT_MISS;\n" << exact_hits.str() << "    return t;\n}\n\n";
-    else
-        out << "    (void)o;\n    (void)v;\n    (void)t_max;\n    return INFINITY;\n}\n\n";
+        << "/* The nearest exact hit of the ray o + t v (v unit) with t in (0, t_max], INFINITY for none. */\n";
+    write_exact_hit(out, "float", "scene_exact_hit", {{"float3", "o"}, {"float3", "v"}, {"float", "t_max"}}, split, exact_hits.str());
     out << "#ifdef SDF_LANES\n" << exact_lane_functions.str()
-        << "/* scene_exact_hit of SDF_LANES rays at once (a packet kernel), to the bit. */\n"
-        << "SS_FN SDF_FLOAT scene_exact_hit_lanes(SDF_FLOAT ox, SDF_FLOAT oy, SDF_FLOAT oz, SDF_FLOAT vx, SDF_FLOAT vy, SDF_FLOAT vz, SDF_FLOAT t_max) {\n";
-    if (split)
-        out << "    SDF_FLOAT t = EXACT_MISS;\n" << exact_lane_hits.str() << "    return t;\n}\n\n";
-    else
-        out << "    (void)ox;\n    (void)oy;\n    (void)oz;\n    (void)vx;\n    (void)vy;\n    (void)vz;\n    (void)t_max;\n"
-            << "    return INFINITY;\n}\n\n";
+        << "/* scene_exact_hit of SDF_LANES rays at once (a packet kernel), to the bit. */\n";
+    const std::string lane = "SDF_FLOAT";
+    write_exact_hit(out, lane, "scene_exact_hit_lanes",
+                    {{lane, "ox"}, {lane, "oy"}, {lane, "oz"}, {lane, "vx"}, {lane, "vy"}, {lane, "vz"}, {lane, "t_max"}}, split,
+                    exact_lane_hits.str());
     out << "/* The march's field at SDF_LANES points at once (a packet kernel, kernels/march_packets.cl): the\n"
         << " * nearest distance only, exact in the lanes of `active`; a box test skips a group only when it may\n"
         << " * for every one of them. */\n"
