@@ -177,15 +177,21 @@ void write_exr(const std::string& path, const ImageRgb& image, const ImageMetada
 
 void write_png(const std::string& path, const ImageRgb& image, ToneMap tone_map, float exposure_stops, const ImageMetadata& metadata) {
     check_image(image, "write_png");
+    write_srgb8_png(path, image.width, image.height, to_srgb8(image, tone_map, exposure_stops), metadata);
+}
+
+void write_srgb8_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, const ImageMetadata& metadata) {
+    if (width <= 0 || height <= 0 || rgb.size() != size_t(width) * size_t(height) * 3)
+        throw std::invalid_argument("write_srgb8_png: " + std::to_string(rgb.size()) + " bytes for " + std::to_string(width) + "x" +
+                                    std::to_string(height) + " pixels");
     check_writable(path);
-    const std::vector<uint8_t> pixels = to_srgb8(image, tone_map, exposure_stops);
     codec::Encoding encoding;
     encoding.format = "png";
-    encoding.width = image.width;
-    encoding.height = image.height;
+    encoding.width = width;
+    encoding.height = height;
     encoding.channels = 3;
     encoding.bytes = true;
-    encoding.pixels = pixels.data();
+    encoding.pixels = rgb.data();
     encoding.attributes = {text_attribute("oiio:ColorSpace", "sRGB")};  // an sRGB chunk: viewers apply no other gamma
     add_metadata(encoding, metadata, true);
     encode_and_write(path, encoding);

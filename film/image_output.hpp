@@ -2,6 +2,7 @@
 // with metadata, both written atomically; and reading them back (references, tests).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ void write_exr(const std::string& path, const ImageRgb& image, const ImageMetada
 
 // 8-bit sRGB PNG: to_srgb8(image, tone_map, exposure_stops), non-finite pixels magenta.
 void write_png(const std::string& path, const ImageRgb& image, ToneMap tone_map, float exposure_stops, const ImageMetadata& metadata);
+
+// The same file from pixels already 8-bit sRGB: width x height x 3 bytes, rows from the top (the
+// viewer's screenshot).
+void write_srgb8_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb, const ImageMetadata& metadata);
 
 // Both writers encode the whole file in memory, write it to a new temporary file in the same
 // folder and rename that over PATH: a write that fails (disk full, folder gone, a folder in the

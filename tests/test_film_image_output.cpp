@@ -142,6 +142,18 @@ TEST_CASE("PNG round trip: the same 8-bit values, sRGB decoded - metadata as tex
     CHECK(std::get<std::string>(*back.find("tonemap")) == "clamp");
 }
 
+TEST_CASE("PNG from 8-bit sRGB bytes (the viewer's screenshot): the same bytes back, sizes checked", "[film]") {
+    Scratch scratch;
+    const std::vector<uint8_t> bytes = {0, 1, 2, 127, 128, 129, 253, 254, 255, 10, 200, 30};  // 2 x 2 pixels
+    lab::film::write_srgb8_png(scratch / "shot.png", 2, 2, bytes, {});
+    const ImageRgb read = lab::film::read_image(scratch / "shot.png");
+    REQUIRE(read.width == 2);
+    REQUIRE(read.height == 2);
+    CHECK(lab::film::to_srgb8(read, ToneMap::Clamp, 0.0f) == bytes);
+    CHECK_THROWS_AS(lab::film::write_srgb8_png(scratch / "short.png", 2, 2, std::vector<uint8_t>(11), {}), std::invalid_argument);
+    CHECK(scratch.files() == std::vector<std::string>{"shot.png"});
+}
+
 TEST_CASE("write_image picks the format by the extension", "[film]") {
     Scratch scratch;
     ImageRgb image = noise(3, 3, 3);

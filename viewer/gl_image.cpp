@@ -7,9 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "common/image_codec.hpp"
-#include "common/input_error.hpp"
-#include "film/atomic_file.hpp"
+#include "film/image_output.hpp"
 
 namespace lab::viewer {
 
@@ -45,18 +43,7 @@ void write_screenshot(const std::string& path, int width, int height) {
     for (int y = 0; y < height; ++y)
         std::copy(pixels.begin() + ptrdiff_t(size_t(height - 1 - y) * row), pixels.begin() + ptrdiff_t(size_t(height - y) * row),
                   flipped.begin() + ptrdiff_t(size_t(y) * row));
-    codec::Encoding encoding;
-    encoding.format = "png";
-    encoding.width = width;
-    encoding.height = height;
-    encoding.channels = 3;
-    encoding.bytes = true;
-    encoding.pixels = flipped.data();
-    std::vector<unsigned char> file;
-    std::string error;
-    if (!codec::image_codec().encode(path, encoding, &file, &error)) throw InputError(path, "", "cannot write screenshot: " + error);
-    // written beside the target first, then renamed over it: a failure leaves any old file whole
-    film::write_file_atomically(path, file.data(), file.size());
+    film::write_srgb8_png(path, width, height, flipped, film::ImageMetadata{});
 }
 
 }  // namespace lab::viewer
