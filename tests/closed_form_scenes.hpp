@@ -46,9 +46,9 @@ constexpr int kPathDivisor = 4;
 #else
 constexpr int kPathDivisor = 1;
 #endif
-// The relative error a check allows, `plain` in the plain build: sqrt(kPathDivisor) times wider in
-// the sanitized one, as its standard errors are.
-inline double bound(double plain) { return plain * std::sqrt(double(kPathDivisor)); }
+// The relative error a check allows, `plain` at the full budget: sqrt(divisor) times wider with
+// 1 / divisor of the paths, as the standard errors are.
+inline double bound(double plain, int divisor = kPathDivisor) { return plain * std::sqrt(double(divisor)); }
 
 using lab::render::LightSelection;
 using lab::render::LightSampling;

@@ -74,8 +74,8 @@ TEST_CASE("BDPT: each strategy alone converges to the same image", "[render][bdp
             Mean m = image_mean(r.image);
             INFO(c.name << ", strategy (" << s << ", " << k - s << "): mean " << m.value << " +- " << m.standard_error << ", exact "
                         << c.expected);
-            REQUIRE(m.standard_error < 0.005 * std::sqrt(double(divisor)) * c.expected);
-            CHECK(std::fabs(m.value - c.expected) < 0.02 * std::sqrt(double(divisor)) * c.expected);
+            REQUIRE(m.standard_error < bound(0.005, divisor) * c.expected);
+            CHECK(std::fabs(m.value - c.expected) < bound(0.02, divisor) * c.expected);
         }
     }
 }
