@@ -79,8 +79,7 @@ double render_paths_per_second(const std::string& exe, const BenchCompareCommand
     std::vector<std::string> argv = {exe, "render", scene, "--size", c.size, "--time", std::to_string(seconds), "--quiet", "-o", out.string()};
     // lit like the other benches: a scene with no light of its own under envmaps/courtyard.exr
     scene::Scene loaded = scene::load_scene(scene);
-    if (!loaded.environment && loaded.emitters.empty() && loaded.point_lights.empty())
-        argv.insert(argv.end(), {"--env", "envmaps/courtyard.exr"});
+    if (!scene::has_own_light(loaded)) argv.insert(argv.end(), {"--env", "envmaps/courtyard.exr"});
     argv.insert(argv.end(), c.extra.begin(), c.extra.end());
     fs::remove(out);
     int status = run_quietly(argv);

@@ -47,7 +47,7 @@ RenderJob scene_job(const RenderJobOptions& options, const std::string& file) {
     RenderJobOptions o = options;
     o.scene = file;
     scene::Scene scene = scene::load_scene(file);
-    if (!scene.environment && scene.emitters.empty() && scene.point_lights.empty()) o.default_env = "envmaps/courtyard.exr";
+    if (!scene::has_own_light(scene)) o.default_env = "envmaps/courtyard.exr";
     return prepare_render_job(o);
 }
 

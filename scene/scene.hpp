@@ -128,4 +128,10 @@ struct Scene {
     bool march_everything = false;
 };
 
+// Whether the scene has a light of its own (an emitter, a point light or an environment): the
+// benches and tests light one that has none with envmaps/courtyard.exr, as the commands do.
+inline bool has_own_light(const Scene& scene) {
+    return !scene.emitters.empty() || !scene.point_lights.empty() || scene.environment.has_value();
+}
+
 }  // namespace lab::scene

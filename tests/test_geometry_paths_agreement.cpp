@@ -121,8 +121,7 @@ TEST_CASE("Geometry paths: auto and march agree region by region on every bundle
         REQUIRE(c != kScenes.end());
         lab::render::RenderInput input;
         input.scene = lab::scene::load_scene(file.string());
-        const bool lit = !input.scene.emitters.empty() || !input.scene.point_lights.empty() || input.scene.environment.has_value();
-        input.environment = lit ? lab::render::load_scene_environment(input.scene) : courtyard;
+        input.environment = lab::scene::has_own_light(input.scene) ? lab::render::load_scene_environment(input.scene) : courtyard;
         input.settings.width = input.settings.height = kSize;
         input.settings.max_depth = c->max_depth;
         input.settings.light_sampling = c->sampling;

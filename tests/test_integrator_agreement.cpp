@@ -222,7 +222,7 @@ TEST_CASE("Integrator agreement: every bundled scene is in the matrix, or has no
         ++scenes;
         const std::string name = entry.path().stem().string();
         lab::scene::Scene scene = lab::scene::load_scene(entry.path().string());
-        const bool has_light = !scene.emitters.empty() || !scene.point_lights.empty() || scene.environment.has_value();
+        const bool has_light = lab::scene::has_own_light(scene);
         INFO(name);
         if (has_light) CHECK(std::count(lit.begin(), lit.end(), name) == 1);
         else CHECK(std::count(kUnlitScenes.begin(), kUnlitScenes.end(), name) == 1);

@@ -124,7 +124,7 @@ TEST_CASE("Every bundled scene without a light renders under an environment with
     for (const auto& entry : fs::directory_iterator("scenes")) {
         if (entry.path().extension() != ".json") continue;
         lab::scene::Scene scene = lab::scene::load_scene(entry.path().string());
-        if (!scene.emitters.empty() || !scene.point_lights.empty() || scene.environment) continue;
+        if (lab::scene::has_own_light(scene)) continue;
         ++rendered;
         lab::render::RenderInput input;
         input.scene = scene;
