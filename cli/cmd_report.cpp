@@ -1,7 +1,9 @@
 // dtoadq report: the lab's main job on a folder of presets — overlaid lobe plots per group of
 // materials, the albedo chart of all of them, the validation table, and a path-traced preview of
-// each on the test model under an HDR environment — written to one folder.
+// each on the test model under an HDR environment — written to one folder, with index.html, the
+// page that shows them with their captions and numbers (cli/report_page.hpp).
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,14 +17,18 @@
 #include "cli/options.hpp"
 #include "cli/render_job.hpp"
 #include "cli/report_groups.hpp"
+#include "cli/report_page.hpp"
 #include "common/input_error.hpp"
 #include "opencl/runtime.hpp"
 #include "render/interrupt.hpp"
 #include "render/opencl_renderer.hpp"
+#include "analysis/albedo_curve.hpp"
+#include "analysis/lobe_data.hpp"
 #include "plots/albedo_chart.hpp"
 #include "plots/lobe_plot.hpp"
 #include "plots/output_file.hpp"
 #include "plots/preview_sheet.hpp"
+#include "report/html_page.hpp"
 #include "validation/report.hpp"
 
 namespace fs = std::filesystem;
@@ -55,7 +61,7 @@ struct ReportProgress {
 // it finished, or what Ctrl-C cut short (written with the samples it holds; its EXR's metadata
 // says how many). False when Ctrl-C came before the first sample: nothing was written.
 bool render_report_image(render::Renderer& renderer, const RenderJob& job, int spp, const fs::path& exr, const std::string& what,
-                         ReportProgress* progress) {
+                         ReportProgress* progress, render::RenderStatistics* written_stats) {
     render::RenderLimits limits;
     limits.samples = spp;
     limits.quiet = true;
@@ -66,6 +72,7 @@ bool render_report_image(render::Renderer& renderer, const RenderJob& job, int s
     render::write_render_images(exr.string(), renderer.image(), film::ToneMap::Aces, 0.0f, job_metadata(job, renderer, stats));
     if (!outcome.failure.empty()) render::fail_after_writing(outcome, stats.samples_per_pixel, exr.string());
     render::print_render_statistics(stats, true);  // only the warnings
+    *written_stats = stats;
     if (outcome.interrupted)
         progress->partial = what + " (" + std::to_string(stats.samples_per_pixel) + " of " + std::to_string(spp) + " samples per pixel, written)";
     else
@@ -75,9 +82,12 @@ bool render_report_image(render::Renderer& renderer, const RenderJob& job, int s
 
 // One preview per preset, each its own kernel (a preset's kernel holds only the lobes it uses).
 // Ctrl-C ends the preview being rendered, and no further preset is started.
-std::vector<std::string> write_previews(const ReportOptions& o, const std::vector<brdf::Preset>& presets, const fs::path& out,
-                                        ReportProgress* progress) {
-    std::vector<std::string> written;
+ReportPreviews write_previews(const ReportOptions& o, const std::vector<brdf::Preset>& presets, const fs::path& out, ReportProgress* progress,
+                              std::string* device) {
+    ReportPreviews previews;
+    previews.environment = fs::path(o.env).filename().string();
+    previews.size = o.preview_size;
+    previews.spp = o.preview_spp;
     std::vector<plots::SheetImage> sheet;
     opencl::Runtime runtime(o.device);
     for (const brdf::Preset& p : presets) {
@@ -91,20 +101,22 @@ std::vector<std::string> write_previews(const ReportOptions& o, const std::vecto
         std::printf("report: preview of %s -> %s.png\n", p.name.c_str(), (out / name).c_str());
         std::fflush(stdout);
         render::OpenClRenderer renderer(runtime, job.input);
-        if (!render_report_image(renderer, job, o.preview_spp, out / (name + ".exr"), "the preview of " + p.name, progress)) break;
-        written.push_back(name + ".png");
+        *device = renderer.device_description();
+        ReportRender render{p.name, name + ".png", {}};
+        if (!render_report_image(renderer, job, o.preview_spp, out / (name + ".exr"), "the preview of " + p.name, progress, &render.stats)) break;
+        previews.renders.emplace_back(p, render);
         sheet.push_back({p.name, (out / (name + ".png")).string()});
     }
-    if (sheet.empty()) return written;
+    if (sheet.empty()) return previews;
     std::printf("report: preview sheet -> %s\n", (out / "previews.png").c_str());
     plots::write_preview_sheet(sheet, "Presets on the test model under " + fs::path(o.env).filename().string() + ", " +
                                           std::to_string(o.preview_spp) + " spp", (out / "previews.png").string());
-    written.insert(written.begin(), "previews.png");
-    return written;
+    previews.sheet = "previews.png";
+    return previews;
 }
 
 // The scene, rendered by --scene-integrator (bdpt) at the previews' size, written as scene_<stem>.exr/.png.
-std::vector<std::string> write_scene_render(const ReportOptions& o, const fs::path& out, ReportProgress* progress) {
+std::optional<ReportScene> write_scene_render(const ReportOptions& o, const fs::path& out, ReportProgress* progress, std::string* device) {
     RenderJobOptions job_options;
     job_options.scene = o.scene;
     job_options.size = o.preview_size;
@@ -115,14 +127,16 @@ std::vector<std::string> write_scene_render(const ReportOptions& o, const fs::pa
     std::fflush(stdout);
     std::optional<opencl::Runtime> runtime;
     std::unique_ptr<render::Renderer> renderer = make_renderer(job, o.device, &runtime);
+    *device = renderer->device_description();
+    ReportScene scene{o.scene_integrator, o.preview_size, {fs::path(o.scene).filename().string(), name + ".png", {}}};
     if (!render_report_image(*renderer, job, o.scene_spp, out / (name + ".exr"), "the render of " + fs::path(o.scene).filename().string(),
-                             progress))
-        return {};
-    return {name + ".png", name + ".exr"};
+                             progress, &scene.render.stats))
+        return std::nullopt;
+    return scene;
 }
 
 // Ctrl-C: one line saying what was finished, and the interrupted exit status. What was written
-// stays; the index and the validation table are written only by a report that ran to its end.
+// stays; the page and the validation table are written only by a report that ran to its end.
 void stop_if_interrupted(const ReportProgress& progress, const std::vector<brdf::Preset>& presets) {
     if (!render::interrupt_requested()) return;
     std::string finished;
@@ -149,34 +163,50 @@ void run_report(const ReportOptions& o) {
     fs::create_directories(o.out, ec);
     if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");
     const fs::path out(o.out);
-    std::vector<std::string> written;
+    // the wall-clock seconds of each stage, for the page
+    std::vector<std::pair<std::string, double>> stage_seconds;
+    auto stage_start = std::chrono::steady_clock::now();
+    auto end_stage = [&](const std::string& stage) {
+        const auto now = std::chrono::steady_clock::now();
+        stage_seconds.emplace_back(stage, std::chrono::duration<double>(now - stage_start).count());
+        stage_start = now;
+    };
 
+    std::vector<ReportLobes> lobes;
     for (const PresetGroup& group : group_presets(presets)) {
         for (float theta : o.thetas) {
             std::string name = "lobes_" + group.id + "_theta" + std::to_string(int(theta)) + ".png";
             std::printf("report: lobes of %s at %g degrees -> %s\n", group.title.c_str(), theta, (out / name).c_str());
             std::fflush(stdout);
             plots::write_lobe_plot(group.presets, theta, 0.0f, (out / name).string(), "");
-            written.push_back(name);
+            ReportLobes l{group.title, theta, name, {}};
+            for (const brdf::Preset& p : group.presets) l.lobes.push_back(analysis::compute_lobe(p, theta, 0.0f, {}));
+            lobes.push_back(std::move(l));
             stop_if_interrupted(progress, presets);
         }
     }
     progress.finished.push_back("the lobe plots");
+    end_stage("lobe plots");
     std::printf("report: directional albedo of %zu presets -> %s\n", presets.size(), (out / "albedo.png").c_str());
     std::fflush(stdout);
-    plots::write_albedo_chart(presets, (out / "albedo.png").string(), (out / "albedo.csv").string());
-    written.push_back("albedo.png");
-    written.push_back("albedo.csv");
+    const analysis::AlbedoCurveOptions albedo_options;
+    std::vector<std::vector<analysis::AlbedoPoint>> albedo_curves;
+    for (const brdf::Preset& p : presets) albedo_curves.push_back(analysis::albedo_curve(p.material, albedo_options));
+    plots::write_albedo_chart(presets, albedo_curves, (out / "albedo.png").string(), (out / "albedo.csv").string(), albedo_options);
     progress.finished.push_back("the albedo chart");
+    end_stage("albedo chart");
     stop_if_interrupted(progress, presets);
 
+    std::string device;
+    ReportPreviews previews;
+    std::optional<ReportScene> scene;
     if (o.preview) {
-        std::vector<std::string> previews = write_previews(o, presets, out, &progress);
-        written.insert(written.end(), previews.begin(), previews.end());
+        previews = write_previews(o, presets, out, &progress, &device);
+        end_stage("previews");
         stop_if_interrupted(progress, presets);
         if (!o.scene.empty()) {
-            std::vector<std::string> scene = write_scene_render(o, out, &progress);
-            written.insert(written.end(), scene.begin(), scene.end());
+            scene = write_scene_render(o, out, &progress, &device);
+            end_stage("scene render");
             stop_if_interrupted(progress, presets);
         }
     }
@@ -191,24 +221,31 @@ void run_report(const ReportOptions& o) {
         progress.finished.push_back("the validation of " + p.name);
         stop_if_interrupted(progress, presets);
     }
+    end_stage("validation");
     std::ostringstream table;
     validation::print_validation_table(table, results);
     std::printf("\n%s\n", table.str().c_str());
     plots::open_output((out / "validation.txt").string(), "-o") << table.str();
-    written.push_back("validation.txt");
+
+    report::Page page;
+    page.title = "DTOADQ lab report";
+    page.subtitle = std::to_string(presets.size()) + " material presets from " + o.presets + ".";
+    if (o.preview) page.sections.push_back(previews_section(previews, out));
+    page.sections.push_back(lobes_section(lobes, out));
+    page.sections.push_back(albedo_section(presets, albedo_curves, albedo_options, "albedo.png", "albedo.csv"));
+    page.sections.push_back(validation_section(results, options, out));
+    if (scene) page.sections.push_back(scene_section(*scene, out));
+    page.sections.push_back(machine_section(device, stage_seconds, out));
+    report::write_page(page, (out / "index.html").string());
+    std::printf("report: wrote %s\n", (out / "index.html").c_str());
 
     // a lab-model preset failing a physical check is a defect; the 2017 model is expected to fail
     int unexpected = 0;
     for (const validation::MaterialValidation& r : results)
         if (!r.passed() && r.model != BRDF_MODEL_DTOADQ2017) ++unexpected;
-    std::ofstream index = plots::open_output((out / "README.md").string(), "-o");
-    index << "# DTOADQ lab report\n\nPresets from `" << o.presets << "`, " << presets.size() << " materials.\n\n";
-    for (const std::string& name : written) index << "- [" << name << "](" << name << ")\n";
-    index << "\n## Validation\n\n```\n" << table.str() << "```\n";
-    std::printf("report: wrote %zu files to %s\n", written.size() + 1, o.out.c_str());
     if (unexpected > 0) {
         std::fprintf(stderr, "dtoadq: error: %d lab-model preset(s) failed a physical check (see %s)\n", unexpected,
-                     (out / "validation.txt").c_str());
+                     (out / "index.html").c_str());
         throw CLI::RuntimeError(1);
     }
 }
@@ -217,7 +254,7 @@ void run_report(const ReportOptions& o) {
 
 void register_report(CLI::App& app) {
     auto options = std::make_shared<ReportOptions>();
-    auto* cmd = app.add_subcommand("report", "Lobe plots, albedo chart and validation of every preset, written to one folder");
+    auto* cmd = app.add_subcommand("report", "Lobe plots, albedo chart, validation and previews of every preset, written to one folder with index.html, the page that shows them");
     cmd->add_option("-o,--output", options->out, "Folder to write the report into")->capture_default_str();
     cmd->add_option("--presets", options->presets, "Folder of material presets (JSON)")->capture_default_str();
     cmd->add_option("--theta-in", options->thetas, "Incident angles of the lobe plots, degrees")->capture_default_str();

@@ -36,9 +36,16 @@ void write_albedo_chart(const std::vector<brdf::Preset>& presets, const std::str
     if (presets.empty()) throw std::invalid_argument("albedo chart: no materials");
     require_writable(png_path, "");
     if (!csv_path.empty()) require_writable(csv_path, "");
-
     std::vector<std::vector<analysis::AlbedoPoint>> curves;
     for (const brdf::Preset& p : presets) curves.push_back(analysis::albedo_curve(p.material, options));
+    write_albedo_chart(presets, curves, png_path, csv_path, options);
+}
+
+void write_albedo_chart(const std::vector<brdf::Preset>& presets, const std::vector<std::vector<analysis::AlbedoPoint>>& curves,
+                        const std::string& png_path, const std::string& csv_path, const analysis::AlbedoCurveOptions& options) {
+    if (presets.empty() || curves.size() != presets.size()) throw std::invalid_argument("albedo chart: no materials, or not one curve each");
+    require_writable(png_path, "");
+    if (!csv_path.empty()) require_writable(csv_path, "");
     TempFolder folder;
     write_table(presets, curves, (folder.path() / "albedo.csv").string(), "");
     fs::path png = folder.path() / "albedo.png";

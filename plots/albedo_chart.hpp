@@ -17,4 +17,8 @@ namespace lab::plots {
 void write_albedo_chart(const std::vector<brdf::Preset>& presets, const std::string& png_path, const std::string& csv_path,
                         const analysis::AlbedoCurveOptions& options = {});
 
+// The same from curves already computed with `options` (analysis::albedo_curve), one per preset.
+void write_albedo_chart(const std::vector<brdf::Preset>& presets, const std::vector<std::vector<analysis::AlbedoPoint>>& curves,
+                        const std::string& png_path, const std::string& csv_path, const analysis::AlbedoCurveOptions& options);
+
 }  // namespace lab::plots

@@ -32,6 +32,8 @@ NOT_IN_THE_SOURCE_TREE = {
     # The compiled scene's two headers, which kernels/host/scene_kernel_source.cpp serves to the kernel build.
     "scene/generated.h": "virtual header: the compiled scene's distance field",
     "scene/materials.h": "virtual header: the compiled scene's BRDF feature switches",
+    # Generated in the build folder by cmake/WriteBuildInfo.cmake at every build.
+    "cli/build_info.hpp": "generated header: the commit and compiler dtoadq report names",
     # Example names of a user's files, in the error messages and commands the docs show.
     "presets/mine.json": "a user's preset in docs/materials.md's error examples",
     "presets/nope.json": "a missing preset in docs/scenes.md's error examples",

@@ -7,6 +7,7 @@ libopenimageio-dev openimageio-tools libopenexr-dev
 libglfw3-dev libimgui-dev libglm-dev catch2 nlohmann-json3-dev libcli11-dev libnlopt-dev
 python3 python3-matplotlib python3-numpy
 xvfb xauth libgl1-mesa-dri
+chromium python3-html5lib
 clang-16 libclang-rt-16-dev"
 missing=""
 for p in $packages; do

@@ -201,6 +201,11 @@ cli_output_test(report.writes_everything 40 report/previews.png|report/albedo.pn
                 report --presets ${PROJECT_SOURCE_DIR}/presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
                 --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96
                 --scene ${PROJECT_SOURCE_DIR}/scenes/cornell_box.json --scene-spp 2)
+set_tests_properties(cli.report.writes_everything PROPERTIES FIXTURES_SETUP report_page)
+# its index.html: valid, self-contained, every image and link there, and shown by a browser
+add_test(NAME cli.report.page_opens_in_a_browser
+         COMMAND ${REPORT_PAGE_PYTHON} ${PROJECT_SOURCE_DIR}/tools/check_report_page.py ${CLI_SCRATCH}/report.writes_everything/report/index.html --browser)
+set_tests_properties(cli.report.page_opens_in_a_browser PROPERTIES LABELS cli TIMEOUT 120 FIXTURES_REQUIRED report_page)
 cli_bad_input(NAME validate.missing_preset EXPECT "${E}${D}/absent\\.json: cannot open preset file$"
               ARGS validate --material ${D}/absent.json)
 cli_bad_input(NAME validate.too_few_samples EXPECT "${E}command line: --samples: "
@@ -402,13 +407,13 @@ cli_interrupt_test(NAME preview.output_folder_vanishes TRIGGER "kernel built in"
 # finished, and the first preview is complete.
 set(REPORT_PRESETS SETUP ${SRC}/presets/copper.json=presets/copper.json ${SRC}/presets/gold.json=presets/gold.json)
 cli_interrupt_test(NAME report.ctrl_c_between_presets TRIGGER "report: preview of gold" DELAY 0 ${REPORT_PRESETS}
-                   EXRS report/preview_copper.exr MIN_SPP 16 MAX_SPP 16 ABSENT report/preview_gold.exr report/README.md
+                   EXRS report/preview_copper.exr MIN_SPP 16 MAX_SPP 16 ABSENT report/preview_gold.exr report/index.html
                    EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart, the preview of copper \\(2 presets in all\\)"
                    ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json -o report --samples 20000 --theta-in 30
                         --preview-spp 16 --preview-size 32x32)
 # Ctrl-C during a preview of a report: that preview is written with the samples it holds.
 cli_interrupt_test(NAME report.ctrl_c_during_preview TRIGGER "report: preview of copper" DELAY 4 ${REPORT_PRESETS}
-                   EXRS report/preview_copper.exr MIN_SPP 1 MAX_SPP 999999 ABSENT report/preview_gold.exr report/README.md
+                   EXRS report/preview_copper.exr MIN_SPP 1 MAX_SPP 999999 ABSENT report/preview_gold.exr report/index.html
                    EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart; cut short: the preview of copper \\([0-9]+ of 1000000 samples per pixel, written\\)"
                    ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json -o report --samples 20000 --theta-in 30
                         --preview-spp 1000000 --preview-size 32x32)

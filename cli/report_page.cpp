@@ -1,0 +1,232 @@
+#include "cli/report_page.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+
+#include "brdf/host/parameters.hpp"
+#include "cli/build_info.hpp"
+#include "common/luminance.hpp"
+
+namespace lab::cli {
+
+namespace fs = std::filesystem;
+using report::Cell;
+using report::CellKind;
+
+namespace {
+
+Cell number(double value, int digits = 4) { return {report::number_text(value, digits), CellKind::number}; }
+Cell text(std::string t) { return {std::move(t), CellKind::text}; }
+Cell verdict(bool passed) { return {passed ? "PASS" : "FAIL", passed ? CellKind::pass : CellKind::fail}; }
+
+float luminance_of(const brdf::float3& c) { return luminance(c.x, c.y, c.z); }
+
+// Writes the table's CSV as `name` in `folder` and links it from the table.
+report::Table with_csv(report::Table table, const fs::path& folder, const std::string& name) {
+    report::write_csv(table, (folder / name).string());
+    table.csv = name;
+    return table;
+}
+
+std::string degrees(float deg) { return report::number_text(deg, 3) + "°"; }
+
+std::vector<Cell> render_row(const ReportRender& r) {
+    const render::RenderStatistics& s = r.stats;
+    const double rays_per_path = s.paths > 0 ? double(s.rays) / double(s.paths) : 0.0;
+    return {text(r.name), number(s.samples_per_pixel), number(s.render_seconds, 3), number(s.paths_per_second(), 3), number(rays_per_path, 3),
+            number(double(s.nonfinite_samples))};
+}
+
+const std::vector<std::string> kRenderHeader = {"what", "samples/pixel", "seconds", "paths/s", "rays/path", "non-finite paths"};
+
+// The albedo point nearest `theta_deg`.
+const analysis::AlbedoPoint& point_near(const std::vector<analysis::AlbedoPoint>& curve, float theta_deg) {
+    return *std::min_element(curve.begin(), curve.end(), [theta_deg](const analysis::AlbedoPoint& a, const analysis::AlbedoPoint& b) {
+        return std::fabs(a.theta_deg - theta_deg) < std::fabs(b.theta_deg - theta_deg);
+    });
+}
+
+}  // namespace
+
+report::Section previews_section(const ReportPreviews& previews, const fs::path& folder) {
+    report::Section s;
+    s.id = "presets";
+    s.title = "Presets on the test model";
+    s.summary = "Every preset path-traced on the test model (a shader ball on a ground plane) under " + previews.environment + ": " +
+                std::to_string(previews.spp) + " samples per pixel at " + previews.size +
+                ", the path tracer with multiple importance sampling of the BSDF and the environment, ACES tone map. Each render's EXR "
+                "(linear radiance, with its settings in the metadata) lies beside its PNG.";
+    if (previews.sheet.empty()) return s;
+    report::Table table;
+    table.header = kRenderHeader;
+    table.header.insert(table.header.begin() + 1, "model");
+    for (const auto& [preset, render] : previews.renders) {
+        std::vector<Cell> row = render_row(render);
+        row.insert(row.begin() + 1, text(brdf::model_name(preset.material.model)));
+        table.rows.push_back(std::move(row));
+    }
+    s.figures.push_back({previews.sheet, "contact sheet of the preset previews",
+                         "The presets side by side, each titled with its name. The table gives each render's samples per pixel, the seconds "
+                         "its samples took on the device (kernel builds excluded), paths per second, rays marched per path, and the paths "
+                         "left out for a non-finite value (0 expected).",
+                         with_csv(std::move(table), folder, "previews.csv")});
+    for (const auto& [preset, render] : previews.renders) {
+        report::Figure f;
+        f.image = render.image;
+        f.alt = "preview of " + preset.name;
+        f.caption = preset.name + (preset.description.empty() ? "" : ": " + preset.description);
+        f.numbers.header = {"parameter", "value"};
+        const brdf::Material& m = preset.material;
+        f.numbers.rows = {{text("model"), text(brdf::model_name(m.model))},
+                          {text("albedo (RGB)"), text(report::number_text(m.albedo[0], 3) + ", " + report::number_text(m.albedo[1], 3) + ", " +
+                                                      report::number_text(m.albedo[2], 3))},
+                          {text("roughness"), number(m.roughness, 3)},
+                          {text("metallic"), number(m.metallic, 3)},
+                          {text("anisotropic"), number(m.anisotropic, 3)},
+                          {text("transmission weight"), number(m.weight_transmission, 3)}};
+        s.figures.push_back(std::move(f));
+    }
+    return s;
+}
+
+report::Section lobes_section(const std::vector<ReportLobes>& lobes, const fs::path& folder) {
+    report::Section s;
+    s.id = "lobes";
+    s.title = "Lobes";
+    s.summary = "The BSDF of each group of presets for one incident direction: the luminance of f(wi, wo) |cos θo| in the plane of "
+                "incidence (polar plot; positive angles towards the mirror side, below 90° under the surface for materials that "
+                "transmit) and over the sphere of outgoing directions (3D). The radius is logarithmic when the materials' peaks differ "
+                "by more than 20×. Delta lobes (smooth mirrors and glass) cannot be drawn as functions: the tables give their weight, "
+                "the share of the incident light each carries.";
+    for (const ReportLobes& l : lobes) {
+        report::Table table;
+        table.header = {"material", "peak of f |cos θo|", "at angle", "delta lobes", "their weight (luminance)"};
+        for (const analysis::LobeData& d : l.lobes) {
+            auto peak = std::max_element(d.plane.begin(), d.plane.end(),
+                                         [](const analysis::PlaneSample& a, const analysis::PlaneSample& b) { return a.value < b.value; });
+            double delta_weight = 0.0;
+            for (const analysis::DeltaLobe& delta : d.deltas) delta_weight += luminance_of(delta.weight);
+            const bool has_peak = peak != d.plane.end() && peak->value > 0.0f;  // not a material of delta lobes only
+            table.rows.push_back({text(d.material), has_peak ? number(peak->value, 4) : text("none"),
+                                  has_peak ? text(degrees(peak->angle_deg)) : text("-"), number(double(d.deltas.size())),
+                                  number(delta_weight, 4)});
+        }
+        const std::string stem = fs::path(l.image).stem().string();
+        s.figures.push_back({l.image, "lobes of " + l.group + " at " + degrees(l.theta_in_deg),
+                             l.group + ", incident at θi = " + degrees(l.theta_in_deg) +
+                                 ", φi = 0°. The table gives each material's peak in the plane of incidence (sampled every 0.25°) and "
+                                 "where it lies.",
+                             with_csv(std::move(table), folder, stem + ".csv")});
+    }
+    return s;
+}
+
+report::Section albedo_section(const std::vector<brdf::Preset>& presets, const std::vector<std::vector<analysis::AlbedoPoint>>& curves,
+                               const analysis::AlbedoCurveOptions& options, const std::string& image, const std::string& csv) {
+    report::Section s;
+    s.id = "albedo";
+    s.title = "Directional albedo";
+    const std::vector<float> angles{0.0f, 30.0f, 60.0f, 80.0f};
+    report::Table table;
+    table.header = {"material"};
+    for (float a : angles) table.header.push_back("albedo at " + degrees(a));
+    table.header.push_back("largest standard error");
+    for (size_t i = 0; i < presets.size(); ++i) {
+        std::vector<Cell> row{text(presets[i].name)};
+        double se = 0.0;
+        for (float a : angles) {
+            const analysis::AlbedoPoint& p = point_near(curves[i], a);
+            const brdf::float3& v = p.estimate.value;
+            row.push_back(number((v.x + v.y + v.z) / 3.0, 4));
+            se = std::max({se, double(p.estimate.std_error.x), double(p.estimate.std_error.y), double(p.estimate.std_error.z)});
+        }
+        row.push_back(number(se, 2));
+        table.rows.push_back(std::move(row));
+    }
+    table.csv = csv;  // every angle and channel, with standard errors
+    s.figures.push_back({image, "directional albedo of every preset against the incident angle",
+                         "The share of light from one incident direction that the material reflects or transmits, per channel, against the "
+                         "incident angle (" + std::to_string(options.angles) + " angles, φi = " + degrees(options.phi_deg) +
+                             "), each estimated with the BSDF's own sampler on a stratified grid of " + std::to_string(options.strata) + "² "
+                             "samples. Above 1 a material creates energy. The table gives the mean of RGB at four angles; the CSV holds every "
+                             "angle and channel with its standard error.",
+                         std::move(table)});
+    return s;
+}
+
+report::Section validation_section(const std::vector<validation::MaterialValidation>& results, const validation::ValidationOptions& options,
+                                   const fs::path& folder) {
+    report::Section s;
+    s.id = "validation";
+    s.title = "Validation";
+    s.summary = "The physical checks of every preset. The 2017 model (dtoadq2017) is expected to fail them: it is kept to show where "
+                "the write-up's formulas break; a lab-model preset that fails is a defect, and the report exits with an error.";
+    report::Table table;
+    table.header = {"material", "model", "chi-square directions", "smallest p", "level per direction", "sampler", "reciprocity error",
+                    "tolerance", "reciprocity", "largest albedo", "at θ", "at φ", "energy", "result"};
+    for (const validation::MaterialValidation& v : results) {
+        table.rows.push_back({text(v.name), text(brdf::model_name(v.model)), number(v.chi_square_tests),
+                              v.continuous ? number(v.smallest_p_value, 3) : text("delta only"), number(v.alpha, 3),
+                              verdict(v.chi_square_passed()), number(v.reciprocity_error, 2), number(v.reciprocity_tolerance, 2),
+                              verdict(v.reciprocity_passed()), number(v.albedo.albedo, 5), text(degrees(v.albedo.theta_deg)),
+                              text(degrees(v.albedo.phi_deg)), verdict(v.energy_passed()), verdict(v.passed())});
+    }
+    s.figures.push_back({"", "",
+                         "Sampler: a chi-square test of the importance sampler's histogram against its pdf at several incident "
+                         "directions (" + std::to_string(options.chi_square_samples) + " samples each), at a family-wise level of " +
+                             report::number_text(options.significance, 2) +
+                             " (Šidák). Reciprocity: the largest relative difference between f(wi, wo) and f(wo, wi) over " +
+                             std::to_string(options.reciprocity_pairs) +
+                             " random pairs. Energy: the white furnace, the largest directional albedo over incident directions, which "
+                             "may not exceed 1 by more than its estimate's noise.",
+                         with_csv(std::move(table), folder, "validation.csv")});
+    return s;
+}
+
+report::Section scene_section(const ReportScene& scene, const fs::path& folder) {
+    report::Section s;
+    s.id = "scene";
+    s.title = "Scene render";
+    report::Table table;
+    table.header = kRenderHeader;
+    table.rows.push_back(render_row(scene.render));
+    s.figures.push_back({scene.render.image, "render of " + scene.render.name,
+                         scene.render.name + " rendered by " + scene.integrator + " at " + scene.size + ", " +
+                             std::to_string(scene.render.stats.samples_per_pixel) +
+                             " samples per pixel, ACES tone map; its EXR lies beside the PNG. Seconds are the device's time for the "
+                             "samples (the kernel build excluded).",
+                         with_csv(std::move(table), folder, "scene.csv")});
+    return s;
+}
+
+report::Section machine_section(const std::string& device, const std::vector<std::pair<std::string, double>>& stage_seconds,
+                                const fs::path& folder) {
+    report::Section s;
+    s.id = "machine";
+    s.title = "Machine and versions";
+    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    char date[64];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&now));
+    report::Table about;
+    about.header = {"what", "value"};
+    about.rows = {{text("device of the renders"), text(device.empty() ? "none (no render in this report)" : device)},
+                  {text("dtoadq commit"), text(kBuildCommit)},
+                  {text("compiler"), text(kBuildCompiler)},
+                  {text("report written"), text(date)}};
+    s.figures.push_back({"", "", "What the figures above were measured on.", with_csv(std::move(about), folder, "machine.csv")});
+    report::Table times;
+    times.header = {"stage", "seconds"};
+    double total = 0.0;
+    for (const auto& [stage, seconds] : stage_seconds) {
+        times.rows.push_back({text(stage), number(seconds, 3)});
+        total += seconds;
+    }
+    times.rows.push_back({text("all"), number(total, 3)});
+    s.figures.push_back({"", "", "The wall-clock seconds each stage of the report took, kernel builds included.",
+                         with_csv(std::move(times), folder, "timings.csv")});
+    return s;
+}
+
+}  // namespace lab::cli
