@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "bench/convergence.hpp"
+#include "report/convergence.hpp"
 #include "bench/march_cost.hpp"
 #include "bench/part_build.hpp"
 #include "bench/timed_runs.hpp"
@@ -64,7 +64,7 @@ void warm_up_launch_shapes(render::OpenClRenderer& renderer) {
 Speed measure_speed(const opencl::Runtime& runtime, render::RenderInput input, double seconds) {
     render::OpenClRenderer renderer(runtime, input);
     warm_up_launch_shapes(renderer);
-    render_for(renderer, seconds, [](double) {});
+    report::render_for(renderer, seconds, [](double) {});
     render::RenderStatistics s = renderer.statistics();
     return Speed{s.paths_per_second(), s.paths ? double(s.rays) / double(s.paths) : 0.0};
 }
@@ -91,7 +91,7 @@ void print_launch_times(const opencl::Runtime& runtime, const render::RenderInpu
     warm_up_launch_shapes(renderer);
     bench::WavefrontLaunchTimer timer;
     renderer.observe_wavefront_launches(&timer);
-    render_for(renderer, seconds, [](double) {});
+    report::render_for(renderer, seconds, [](double) {});
     renderer.observe_wavefront_launches(nullptr);
     const bench::WavefrontLaunchTimes& t = timer.times();
     const int samples = renderer.statistics().samples_per_pixel;

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/convergence.hpp"
+#include "report/convergence.hpp"
 #include "bench/grid.hpp"
 #include "bench/timed_runs.hpp"
 #include "cli/commands.hpp"
@@ -40,7 +40,7 @@ double paths_per_second(const opencl::Runtime& runtime, render::RenderInput inpu
     render::OpenClRenderer renderer(runtime, input);
     renderer.add_samples(1);  // PoCL compiles the work-group function at the first launch: not part of the figure
     renderer.reset();
-    render_for(renderer, seconds, [](double) {});
+    report::render_for(renderer, seconds, [](double) {});
     return renderer.statistics().paths_per_second();
 }
 

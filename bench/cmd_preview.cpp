@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/convergence.hpp"
+#include "report/convergence.hpp"
 #include "bench/timed_runs.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
@@ -35,7 +35,7 @@ void run_bench_preview(const BenchPreviewCommand& c) {
     RenderJob job = prepare_render_job(c.job);
     opencl::Runtime runtime(c.job.device);
     std::printf("bench preview: %s\ndevice %s\n\n", job.description.c_str(), runtime.device().description().c_str());
-    RendererFactory make = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
+    report::RendererFactory make = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
 
     // Cold: a source no cache has seen (a fresh -D); warm: the very same build again.
     render::RenderInput cold_input = job.input;
@@ -46,7 +46,7 @@ void run_bench_preview(const BenchPreviewCommand& c) {
 
     render::RenderInput reference_input = job.input;
     reference_input.settings.light_sampling = render::LightSampling::mis;
-    Reference reference = render_reference(make, reference_input, c.reference_seconds);
+    report::Reference reference = report::render_reference(make, reference_input, c.reference_seconds);
     const render::RenderStatistics& ref_stats = reference.half_stats;
     std::printf("throughput (MIS, %dx%d): %.3g paths/s, %.3g rays/s, %.2f rays per path\n", job.input.settings.width,
                 job.input.settings.height, ref_stats.paths_per_second(), ref_stats.rays_per_second(),
@@ -54,19 +54,19 @@ void run_bench_preview(const BenchPreviewCommand& c) {
     std::printf("reference: MIS, %d spp in %.1f s; its own noise (RMSE) about %.3g\n\n", reference.samples_per_pixel, c.reference_seconds,
                 reference.noise);
 
-    std::vector<EqualTimeRun> runs;
+    std::vector<report::EqualTimeRun> runs;
     for (render::LightSampling sampling : {render::LightSampling::bsdf, render::LightSampling::lights, render::LightSampling::mis}) {
-        EqualTimeRun run{render::light_sampling_name(sampling), job.input};
+        report::EqualTimeRun run{render::light_sampling_name(sampling), job.input};
         run.input.settings.light_sampling = sampling;
         runs.push_back(std::move(run));
     }
-    std::vector<EqualTimeResult> results = run_equal_time(make, runs, reference, c.seconds);
+    std::vector<report::EqualTimeResult> results = report::run_equal_time(make, runs, reference, c.seconds);
     std::printf("\nequal-time RMSE relative to MIS:");
-    for (const EqualTimeResult& r : results) std::printf("  %s %.2fx", r.series.name.c_str(), r.final_rmse() / results.back().final_rmse());
+    for (const report::EqualTimeResult& r : results) std::printf("  %s %.2fx", r.series.name.c_str(), r.final_rmse() / results.back().final_rmse());
     std::printf("\n(the RMSE includes the reference's own noise, about %.3g)\n", reference.noise);
     if (!c.chart.empty()) {
         std::vector<plots::ConvergenceSeries> series;
-        for (const EqualTimeResult& r : results) series.push_back(r.series);
+        for (const report::EqualTimeResult& r : results) series.push_back(r.series);
         plots::write_speed_accuracy_chart(series, "Preview: RMSE against render time (" + job.material_name + ", " + job.environment_name + ")",
                                           c.chart, c.csv);
         std::printf("wrote %s%s\n", c.chart.c_str(), c.csv.empty() ? "" : (" and " + c.csv).c_str());

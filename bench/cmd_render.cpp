@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/convergence.hpp"
+#include "report/convergence.hpp"
 #include "bench/march_cost.hpp"
 #include "bench/timed_runs.hpp"
 #include "cli/commands.hpp"
@@ -56,22 +56,22 @@ RenderJob scene_job(const RenderJobOptions& options, const std::string& file) {
 render::RenderStatistics measure(render::Renderer& renderer, double seconds) {
     renderer.add_samples(1);
     renderer.reset();
-    render_for(renderer, seconds, [](double) {});
+    report::render_for(renderer, seconds, [](double) {});
     return renderer.statistics();
 }
 
 // One scene at equal time: a long reference of `reference_input` (labelled `reference`), then each
 // run for c.seconds; prints each run's final RMSE relative to the last run's (`baseline`) and adds
 // the runs' series to the chart's.
-void compare_at_equal_time(const RendererFactory& on_device, const BenchRenderCommand& c, const std::string& reference,
-                           const render::RenderInput& reference_input, const std::vector<EqualTimeRun>& runs, const std::string& baseline,
+void compare_at_equal_time(const report::RendererFactory& on_device, const BenchRenderCommand& c, const std::string& reference,
+                           const render::RenderInput& reference_input, const std::vector<report::EqualTimeRun>& runs, const std::string& baseline,
                            std::vector<plots::ConvergenceSeries>* series) {
     std::printf("\n%s for %.0f s\n", reference.c_str(), c.reference_seconds);
-    Reference ref = render_reference(on_device, reference_input, c.reference_seconds);
+    report::Reference ref = report::render_reference(on_device, reference_input, c.reference_seconds);
     std::printf("reference %d spp; its own noise (RMSE) about %.3g\n", ref.samples_per_pixel, ref.noise);
-    std::vector<EqualTimeResult> results = run_equal_time(on_device, runs, ref, c.seconds);
+    std::vector<report::EqualTimeResult> results = report::run_equal_time(on_device, runs, ref, c.seconds);
     std::printf("equal-time RMSE relative to %s:", baseline.c_str());
-    for (const EqualTimeResult& r : results) {
+    for (const report::EqualTimeResult& r : results) {
         std::printf("  %s %.2fx", r.series.name.c_str(), r.final_rmse() / results.back().final_rmse());
         series->push_back(r.series);
     }
@@ -85,7 +85,7 @@ void run_bench_render(const BenchRenderCommand& c) {
         throw InputError("--reference-seconds", "", "must be at least --seconds and at most 36000");
     if (!c.chart.empty()) film::check_output_path(c.chart);
     opencl::Runtime runtime(c.job.device);
-    RendererFactory on_device = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
+    report::RendererFactory on_device = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
     std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());
 
     std::printf("(a scene with no light of its own is lit by envmaps/courtyard.exr)\n");
@@ -119,9 +119,9 @@ void run_bench_render(const BenchRenderCommand& c) {
     for (const std::string& file : c.compare) {
         RenderJob job = scene_job(c.job, file);
         std::string name = fs::path(file).stem().string();
-        std::vector<EqualTimeRun> runs;
+        std::vector<report::EqualTimeRun> runs;
         for (render::LightSampling sampling : {render::LightSampling::bsdf, render::LightSampling::lights, render::LightSampling::mis}) {
-            EqualTimeRun run{name + " " + render::light_sampling_name(sampling), job.input};
+            report::EqualTimeRun run{name + " " + render::light_sampling_name(sampling), job.input};
             run.input.settings.light_sampling = sampling;
             runs.push_back(std::move(run));
         }
@@ -130,10 +130,10 @@ void run_bench_render(const BenchRenderCommand& c) {
     for (const std::string& file : c.integrators) {
         RenderJob job = scene_job(c.job, file);
         std::string name = fs::path(file).stem().string();
-        std::vector<EqualTimeRun> runs;
+        std::vector<report::EqualTimeRun> runs;
         for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::pt}) {
             if (!render::integrator_descriptor(integrator).renders_environment() && job.input.environment) continue;
-            EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
+            report::EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
             run.input.settings.integrator = integrator;
             runs.push_back(std::move(run));
         }

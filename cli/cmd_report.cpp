@@ -18,6 +18,7 @@
 #include "cli/render_job.hpp"
 #include "cli/report_groups.hpp"
 #include "cli/report_page.hpp"
+#include "cli/report_study.hpp"
 #include "common/input_error.hpp"
 #include "opencl/runtime.hpp"
 #include "render/interrupt.hpp"
@@ -49,6 +50,13 @@ struct ReportOptions {
     std::string scene_integrator = "bdpt";
     int scene_spp = 32;
     std::string device;
+    // the speed-against-accuracy study (cli/report_study.hpp)
+    bool study = true;
+    bool full = false;  // --full: the full budget; else the quick one
+    double study_seconds = 0.0, study_reference_seconds = 0.0;  // > 0: instead of the budget's
+    std::string study_size = "128x128";
+    std::vector<std::string> study_presets{"presets/glossy_plastic.json", "presets/brushed_aluminium.json"};
+    std::vector<std::string> study_scenes{"scenes/cornell_box.json", "scenes/caustic.json"};
 };
 
 // What an interrupted report says it finished.
@@ -159,6 +167,16 @@ void run_report(const ReportOptions& o) {
     if (o.preview && !o.scene.empty() && !fs::exists(o.scene))
         throw InputError(o.scene, "", "no such file (--scene; run from the repository root, or pass --scene)");
     if (o.scene_spp < 1 || o.scene_spp > 1 << 20) throw InputError("--scene-spp", "", "must be in [1, 1048576]");
+    if (o.study) {
+        // 0: the budget's; else in (0, 3600] (NaN is refused)
+        for (auto [seconds, option] : {std::pair{o.study_seconds, "--study-seconds"}, std::pair{o.study_reference_seconds, "--study-reference-seconds"}})
+            if (seconds != 0.0 && !(seconds > 0.0 && seconds <= 3600.0)) throw InputError(option, "", "must be more than 0 and at most 3600");
+        render::parse_image_size(o.study_size, "--study-size", &width, &height);
+        for (const std::string& f : o.study_presets)
+            if (!fs::exists(f)) throw InputError(f, "", "no such file (--study-presets; run from the repository root, or pass --study-presets)");
+        for (const std::string& f : o.study_scenes)
+            if (!fs::exists(f)) throw InputError(f, "", "no such file (--study-scenes; run from the repository root, or pass --study-scenes)");
+    }
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");
@@ -211,6 +229,18 @@ void run_report(const ReportOptions& o) {
         }
     }
 
+    std::vector<StudyComparison> study;
+    StudyBudget budget = study_budget(o.full ? "full" : "quick");
+    if (o.study_seconds > 0.0) budget.run_seconds = o.study_seconds;
+    if (o.study_reference_seconds > 0.0) budget.reference_seconds = o.study_reference_seconds;
+    if (o.study) {
+        StudyOptions study_options{budget, o.study_size, o.env, o.study_presets, o.study_scenes, o.device};
+        study = run_speed_accuracy_study(study_options, out, &device);
+        progress.finished.push_back("the speed-against-accuracy study");
+        end_stage("speed against accuracy");
+        stop_if_interrupted(progress, presets);
+    }
+
     validation::ValidationOptions options;
     options.chi_square_samples = o.chi_square_samples;
     std::vector<validation::MaterialValidation> results;
@@ -235,6 +265,7 @@ void run_report(const ReportOptions& o) {
     page.sections.push_back(albedo_section(presets, albedo_curves, albedo_options, "albedo.png", "albedo.csv"));
     page.sections.push_back(validation_section(results, options, out));
     if (scene) page.sections.push_back(scene_section(*scene, out));
+    if (o.study) page.sections.push_back(speed_section(study, budget, o.study_size, out));
     page.sections.push_back(machine_section(device, stage_seconds, out));
     report::write_page(page, (out / "index.html").string());
     std::printf("report: wrote %s\n", (out / "index.html").c_str());
@@ -266,6 +297,15 @@ void register_report(CLI::App& app) {
     cmd->add_option("--scene-integrator", options->scene_integrator, "Integrator of the scene render: bdpt, pt or lt")->capture_default_str();
     cmd->add_option("--scene-spp", options->scene_spp, "Samples per pixel of the scene render")->capture_default_str();
     cmd->add_flag("!--no-preview", options->preview, "Skip the path-traced previews and the scene render");
+    auto* quick = cmd->add_flag("--quick", "The speed-against-accuracy study's quick budget: 2 s per run, 16 s references (the default)");
+    auto* full = cmd->add_flag("--full", options->full, "The study's full budget: 10 s per run, 160 s references");
+    quick->excludes(full);
+    cmd->add_flag("!--no-study", options->study, "Skip the speed-against-accuracy study");
+    cmd->add_option("--study-seconds", options->study_seconds, "Seconds per run of the study, instead of the budget's");
+    cmd->add_option("--study-reference-seconds", options->study_reference_seconds, "Seconds per reference of the study, instead of the budget's");
+    cmd->add_option("--study-size", options->study_size, "Image size of the study's renders")->capture_default_str();
+    cmd->add_option("--study-presets", options->study_presets, "Presets whose preview's light sampling the study compares")->capture_default_str();
+    cmd->add_option("--study-scenes", options->study_scenes, "Scenes whose integrators the study compares")->capture_default_str();
     cmd->add_option("--device", options->device, "OpenCL device of the previews (dtoadq devices lists them)");
     cmd->callback([options] { run_report(*options); });
 }

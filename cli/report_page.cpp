@@ -51,13 +51,11 @@ const analysis::AlbedoPoint& point_near(const std::vector<analysis::AlbedoPoint>
 }  // namespace
 
 report::Section previews_section(const ReportPreviews& previews, const fs::path& folder) {
-    report::Section s;
-    s.id = "presets";
-    s.title = "Presets on the test model";
-    s.summary = "Every preset path-traced on the test model (a shader ball on a ground plane) under " + previews.environment + ": " +
-                std::to_string(previews.spp) + " samples per pixel at " + previews.size +
-                ", the path tracer with multiple importance sampling of the BSDF and the environment, ACES tone map. Each render's EXR "
-                "(linear radiance, with its settings in the metadata) lies beside its PNG.";
+    report::Section s{"presets", "Presets on the test model",
+                      "Every preset path-traced on the test model (a shader ball on a ground plane) under " + previews.environment + ": " +
+                      std::to_string(previews.spp) + " samples per pixel at " + previews.size +
+                      ", the path tracer with multiple importance sampling of the BSDF and the environment, ACES tone map. Each render's EXR "
+                      "(linear radiance, with its settings in the metadata) lies beside its PNG.", {}};
     if (previews.sheet.empty()) return s;
     report::Table table;
     table.header = kRenderHeader;
@@ -92,14 +90,12 @@ report::Section previews_section(const ReportPreviews& previews, const fs::path&
 }
 
 report::Section lobes_section(const std::vector<ReportLobes>& lobes, const fs::path& folder) {
-    report::Section s;
-    s.id = "lobes";
-    s.title = "Lobes";
-    s.summary = "The BSDF of each group of presets for one incident direction: the luminance of f(wi, wo) |cos θo| in the plane of "
-                "incidence (polar plot; positive angles towards the mirror side, below 90° under the surface for materials that "
-                "transmit) and over the sphere of outgoing directions (3D). The radius is logarithmic when the materials' peaks differ "
-                "by more than 20×. Delta lobes (smooth mirrors and glass) cannot be drawn as functions: the tables give their weight, "
-                "the share of the incident light each carries.";
+    report::Section s{"lobes", "Lobes",
+                      "The BSDF of each group of presets for one incident direction: the luminance of f(wi, wo) |cos θo| in the plane of "
+                      "incidence (polar plot; positive angles towards the mirror side, below 90° under the surface for materials that "
+                      "transmit) and over the sphere of outgoing directions (3D). The radius is logarithmic when the materials' peaks differ "
+                      "by more than 20×. Delta lobes (smooth mirrors and glass) cannot be drawn as functions: the tables give their weight, "
+                      "the share of the incident light each carries.", {}};
     for (const ReportLobes& l : lobes) {
         report::Table table;
         table.header = {"material", "peak of f |cos θo|", "at angle", "delta lobes", "their weight (luminance)"};
@@ -125,9 +121,7 @@ report::Section lobes_section(const std::vector<ReportLobes>& lobes, const fs::p
 
 report::Section albedo_section(const std::vector<brdf::Preset>& presets, const std::vector<std::vector<analysis::AlbedoPoint>>& curves,
                                const analysis::AlbedoCurveOptions& options, const std::string& image, const std::string& csv) {
-    report::Section s;
-    s.id = "albedo";
-    s.title = "Directional albedo";
+    report::Section s{"albedo", "Directional albedo", "", {}};
     const std::vector<float> angles{0.0f, 30.0f, 60.0f, 80.0f};
     report::Table table;
     table.header = {"material"};
@@ -158,11 +152,9 @@ report::Section albedo_section(const std::vector<brdf::Preset>& presets, const s
 
 report::Section validation_section(const std::vector<validation::MaterialValidation>& results, const validation::ValidationOptions& options,
                                    const fs::path& folder) {
-    report::Section s;
-    s.id = "validation";
-    s.title = "Validation";
-    s.summary = "The physical checks of every preset. The 2017 model (dtoadq2017) is expected to fail them: it is kept to show where "
-                "the write-up's formulas break; a lab-model preset that fails is a defect, and the report exits with an error.";
+    report::Section s{"validation", "Validation",
+                      "The physical checks of every preset. The 2017 model (dtoadq2017) is expected to fail them: it is kept to show where "
+                      "the write-up's formulas break; a lab-model preset that fails is a defect, and the report exits with an error.", {}};
     report::Table table;
     table.header = {"material", "model", "chi-square directions", "smallest p", "level per direction", "sampler", "reciprocity error",
                     "tolerance", "reciprocity", "largest albedo", "at θ", "at φ", "energy", "result"};
@@ -186,9 +178,7 @@ report::Section validation_section(const std::vector<validation::MaterialValidat
 }
 
 report::Section scene_section(const ReportScene& scene, const fs::path& folder) {
-    report::Section s;
-    s.id = "scene";
-    s.title = "Scene render";
+    report::Section s{"scene", "Scene render", "", {}};
     report::Table table;
     table.header = kRenderHeader;
     table.rows.push_back(render_row(scene.render));
@@ -201,11 +191,43 @@ report::Section scene_section(const ReportScene& scene, const fs::path& folder) 
     return s;
 }
 
+report::Section speed_section(const std::vector<StudyComparison>& comparisons, const StudyBudget& budget, const std::string& size,
+                              const fs::path& folder) {
+    report::Section s{"speed", "Speed against accuracy",
+                      "Each method renders for the same time on this machine, in this run, and its image is compared with a reference after "
+                      "every launch: the relative RMSE (each channel's RMSE over the reference's mean, averaged) against render time, on "
+                      "log-log axes, with a line of slope −1/2 (the Monte Carlo rate: the error of an unbiased method falls as 1/√time) "
+                      "for comparison. A method that is better at equal time lies lower; one whose line flattens above the others is "
+                      "limited by the reference's own noise or is biased. Budget '" + budget.name + "': " + report::number_text(budget.run_seconds, 3) +
+                      " s per run, references of " + report::number_text(budget.reference_seconds, 3) + " s, at " + size +
+                      " (report --full renders longer references and runs). The references are kept in references/ and reused by the "
+                      "next report with the same inputs, settings, budget and build.", {}};
+    for (const StudyComparison& c : comparisons) {
+        report::Table table;
+        table.header = {"run", "samples/pixel", "paths/s", "relative RMSE", "relative RMSE × √seconds", "against " + c.baseline + " at equal time"};
+        double baseline_error = 0.0;
+        for (const report::EqualTimeResult& r : c.results)
+            if (r.series.name == c.baseline) baseline_error = r.final_rmse();
+        for (const report::EqualTimeResult& r : c.results) {
+            const double t = r.series.seconds.empty() ? 0.0 : r.series.seconds.back();
+            table.rows.push_back({text(r.series.name), number(r.stats.samples_per_pixel), number(r.stats.paths_per_second(), 3),
+                                  number(r.final_rmse(), 3), number(r.final_rmse() * std::sqrt(t), 3),
+                                  baseline_error > 0.0 ? text(report::number_text(r.final_rmse() / baseline_error, 3) + "×") : text("-")});
+        }
+        const std::string stem = fs::path(c.image).stem().string();
+        s.figures.push_back({c.image, "relative RMSE against render time for " + c.subject,
+                             c.subject + ": " + c.varies + ". The reference is " + c.reference_description + ", " +
+                                 std::to_string(c.reference_spp) + " samples per pixel" + (c.reference_reused ? " (reused)" : "") +
+                                 "; its own relative noise, about " + report::number_text(c.reference_relative_noise, 2) +
+                                 ", is the floor under every line. The chart's points are in " + c.csv + ".",
+                             with_csv(std::move(table), folder, stem + "_table.csv")});
+    }
+    return s;
+}
+
 report::Section machine_section(const std::string& device, const std::vector<std::pair<std::string, double>>& stage_seconds,
                                 const fs::path& folder) {
-    report::Section s;
-    s.id = "machine";
-    s.title = "Machine and versions";
+    report::Section s{"machine", "Machine and versions", "", {}};
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     char date[64];
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&now));

@@ -10,6 +10,7 @@
 
 #include "analysis/albedo_curve.hpp"
 #include "analysis/lobe_data.hpp"
+#include "cli/report_study.hpp"
 #include "brdf/host/preset.hpp"
 #include "render/renderer.hpp"
 #include "report/html_page.hpp"
@@ -52,6 +53,9 @@ report::Section albedo_section(const std::vector<brdf::Preset>& presets, const s
 report::Section validation_section(const std::vector<validation::MaterialValidation>& results, const validation::ValidationOptions& options,
                                    const std::filesystem::path& folder);
 report::Section scene_section(const ReportScene& scene, const std::filesystem::path& folder);
+// The speed-against-accuracy study: a chart per preset or scene, with the runs' figures; writes their tables' CSV.
+report::Section speed_section(const std::vector<StudyComparison>& comparisons, const StudyBudget& budget, const std::string& size,
+                              const std::filesystem::path& folder);
 // The device the renders ran on, the build, the date, and the seconds each stage took.
 report::Section machine_section(const std::string& device, const std::vector<std::pair<std::string, double>>& stage_seconds,
                                 const std::filesystem::path& folder);

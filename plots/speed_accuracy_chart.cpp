@@ -44,7 +44,7 @@ void write_table(const std::vector<ConvergenceSeries>& series, const std::string
 }  // namespace
 
 void write_speed_accuracy_chart(const std::vector<ConvergenceSeries>& series, const std::string& title, const std::string& png_path,
-                                const std::string& csv_path) {
+                                const std::string& csv_path, const std::string& error_label) {
     check_series(series);
     require_writable(png_path, "");
     if (!csv_path.empty()) require_writable(csv_path, "");
@@ -53,7 +53,7 @@ void write_speed_accuracy_chart(const std::vector<ConvergenceSeries>& series, co
     const fs::path csv = folder.path() / "speed_accuracy.csv";
     const fs::path png = folder.path() / "speed_accuracy.png";
     write_table(series, csv.string());
-    run_plot_script("speed_accuracy_chart.py", {"--data", csv.string(), "--out", png.string(), "--title=" + title}, folder.path());
+    run_plot_script("speed_accuracy_chart.py", {"--data", csv.string(), "--out", png.string(), "--title=" + title, "--error-label=" + error_label}, folder.path());
     if (!csv_path.empty()) install_output(csv, csv_path, "");
     install_output(png, png_path, "");
 }

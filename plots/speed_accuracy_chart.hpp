@@ -21,7 +21,8 @@ struct ConvergenceSeries {
 // positive (a log axis cannot show it) are std::invalid_argument. Throws lab::InputError naming a
 // path that cannot be written, std::runtime_error when no Python with matplotlib is found or the
 // script fails.
+// error_label names the error on the chart's axis (the series' `rmse` may hold a relative RMSE).
 void write_speed_accuracy_chart(const std::vector<ConvergenceSeries>& series, const std::string& title, const std::string& png_path,
-                                const std::string& csv_path);
+                                const std::string& csv_path, const std::string& error_label = "RMSE against the reference");
 
 }  // namespace lab::plots

@@ -21,6 +21,7 @@ def load(path):
 def main():
     parser = plot_common.argument_parser()
     parser.add_argument("--title", default="")
+    parser.add_argument("--error-label", default="RMSE against the reference")
     args = parser.parse_args()
 
     names, points = load(args.data)
@@ -46,7 +47,7 @@ def main():
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("render time (seconds)")
-    ax.set_ylabel("RMSE against the reference")
+    ax.set_ylabel(args.error_label)
     ax.grid(True, which="major", color="0.85", lw=0.6)
     ax.grid(True, which="minor", color="0.93", lw=0.4)
     ax.legend(fontsize=9, frameon=False)

@@ -1,6 +1,7 @@
-// What the render benches share: a long reference render whose own noise is measured from its two
-// halves, and equal-time runs of several renderers against it (RMSE after every launch), for the
-// speed-against-accuracy tables and charts. Figures, not timed tests: ratios within one run.
+// Speed against accuracy, as the render benches and the report measure it: a long reference render
+// whose own noise is measured from its two halves, and equal-time runs of several renderers against
+// it (the error after every launch), for the speed-against-accuracy tables and charts. Figures, not
+// timed tests: ratios within one run.
 #pragma once
 
 #include <functional>
@@ -12,7 +13,7 @@
 #include "plots/speed_accuracy_chart.hpp"
 #include "render/renderer.hpp"
 
-namespace lab::cli {
+namespace lab::report {
 
 // Makes a fresh renderer for a render input (on the bench's device).
 using RendererFactory = std::function<std::unique_ptr<render::Renderer>(const render::RenderInput&)>;
@@ -21,9 +22,17 @@ using RendererFactory = std::function<std::unique_ptr<render::Renderer>(const re
 // `checkpoint(elapsed)` after each launch.
 void render_for(render::Renderer& renderer, double seconds, const std::function<void(double)>& checkpoint);
 
+// How a run's image is compared with the reference: the RMSE (the mean of the three channels'), or
+// the relative RMSE (each channel's RMSE over the reference's mean in that channel, averaged), which
+// compares scenes of different brightness.
+enum class ErrorMetric { rmse, relative_rmse };
+
+double image_error_value(const film::ImageRgb& image, const film::ImageRgb& reference, ErrorMetric metric);
+
 struct Reference {
     film::ImageRgb image;
-    double noise = 0.0;  // the reference's own RMSE, from its two halves
+    double noise = 0.0;           // the reference's own RMSE, from its two halves
+    double relative_noise = 0.0;  // the same as a relative RMSE
     int samples_per_pixel = 0;
     render::RenderStatistics half_stats;  // one half's statistics: throughput figures
 };
@@ -42,8 +51,9 @@ struct EqualTimeResult {
     double final_rmse() const { return series.rmse.empty() ? 0.0 : series.rmse.back(); }
 };
 
-// Each run for `seconds`, its RMSE against the reference after every launch; prints a table row each.
+// Each run for `seconds`, its error against the reference after every launch (series.rmse holds the
+// metric's values); prints a table row each.
 std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const std::vector<EqualTimeRun>& runs, const Reference& reference,
-                                            double seconds);
+                                            double seconds, ErrorMetric metric = ErrorMetric::rmse);
 
-}  // namespace lab::cli
+}  // namespace lab::report

@@ -1,4 +1,4 @@
-#include "bench/convergence.hpp"
+#include "report/convergence.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -6,12 +6,17 @@
 
 #include "film/image_stats.hpp"
 
-namespace lab::cli {
+namespace lab::report {
 
 namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 }  // namespace
+
+double image_error_value(const film::ImageRgb& image, const film::ImageRgb& reference, ErrorMetric metric) {
+    const film::ImageError e = film::image_error(image, reference);
+    return metric == ErrorMetric::rmse ? e.rmse_mean : e.relative_rmse_mean;
+}
 
 void render_for(render::Renderer& renderer, double seconds, const std::function<void(double)>& checkpoint) {
     Clock::time_point start = Clock::now();
@@ -37,16 +42,19 @@ Reference render_reference(const RendererFactory& make, render::RenderInput inpu
     r.image = film::ImageRgb(a.width, a.height);
     for (size_t k = 0; k < a.rgb.size(); ++k) r.image.rgb[k] = 0.5f * (a.rgb[k] + b.rgb[k]);
     // RMSE(a, b) = sqrt(2) sigma_half, and the mean of the halves has sigma_half / sqrt(2).
-    r.noise = film::image_error(a, b).rmse_mean / 2.0;
+    const film::ImageError halves = film::image_error(a, b);
+    r.noise = halves.rmse_mean / 2.0;
+    r.relative_noise = halves.relative_rmse_mean / 2.0;
     r.half_stats = half_a->statistics();
     r.samples_per_pixel = r.half_stats.samples_per_pixel + half_b->statistics().samples_per_pixel;
     return r;
 }
 
 std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const std::vector<EqualTimeRun>& runs, const Reference& reference,
-                                            double seconds) {
+                                            double seconds, ErrorMetric metric) {
     std::vector<EqualTimeResult> results;
-    std::printf("equal time, %.1f s each:\n  %-16s %8s %12s %12s %14s\n", seconds, "run", "spp", "paths/s", "RMSE", "RMSE x sqrt(t)");
+    std::printf("equal time, %.1f s each:\n  %-16s %8s %12s %12s %14s\n", seconds, "run", "spp", "paths/s", metric == ErrorMetric::rmse ? "RMSE" : "rel. RMSE",
+                metric == ErrorMetric::rmse ? "RMSE x sqrt(t)" : "rel. x sqrt(t)");
     for (const EqualTimeRun& run : runs) {
         std::unique_ptr<render::Renderer> renderer = make(run.input);
         // one sample first, not timed: PoCL compiles the kernel for its work-group size at the first launch
@@ -56,7 +64,7 @@ std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const s
         r.series.name = run.name;
         render_for(*renderer, seconds, [&](double t) {
             r.series.seconds.push_back(t);
-            r.series.rmse.push_back(film::image_error(renderer->image(), reference.image).rmse_mean);
+            r.series.rmse.push_back(image_error_value(renderer->image(), reference.image, metric));
         });
         r.stats = renderer->statistics();
         std::printf("  %-16s %8d %12.3g %12.4g %14.4g\n", run.name.c_str(), r.stats.samples_per_pixel, r.stats.paths_per_second(),
@@ -67,4 +75,4 @@ std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const s
     return results;
 }
 
-}  // namespace lab::cli
+}  // namespace lab::report
