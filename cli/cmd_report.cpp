@@ -57,6 +57,7 @@ struct ReportOptions {
     std::string study_size = "128x128";
     std::vector<std::string> study_presets{"presets/glossy_plastic.json", "presets/brushed_aluminium.json"};
     std::vector<std::string> study_scenes{"scenes/cornell_box.json", "scenes/caustic.json"};
+    std::string study_march_scene = "scenes/metaballs.json";  // empty: no sphere-tracing settings
 };
 
 // What an interrupted report says it finished.
@@ -176,6 +177,8 @@ void run_report(const ReportOptions& o) {
             if (!fs::exists(f)) throw InputError(f, "", "no such file (--study-presets; run from the repository root, or pass --study-presets)");
         for (const std::string& f : o.study_scenes)
             if (!fs::exists(f)) throw InputError(f, "", "no such file (--study-scenes; run from the repository root, or pass --study-scenes)");
+        if (!o.study_march_scene.empty() && !fs::exists(o.study_march_scene))
+            throw InputError(o.study_march_scene, "", "no such file (--study-march-scene; run from the repository root, or pass --study-march-scene)");
     }
     std::error_code ec;
     fs::create_directories(o.out, ec);
@@ -229,12 +232,12 @@ void run_report(const ReportOptions& o) {
         }
     }
 
-    std::vector<StudyComparison> study;
+    StudyResults study;
     StudyBudget budget = study_budget(o.full ? "full" : "quick");
     if (o.study_seconds > 0.0) budget.run_seconds = o.study_seconds;
     if (o.study_reference_seconds > 0.0) budget.reference_seconds = o.study_reference_seconds;
     if (o.study) {
-        StudyOptions study_options{budget, o.study_size, o.env, o.study_presets, o.study_scenes, o.device};
+        StudyOptions study_options{budget, o.study_size, o.env, o.study_presets, o.study_scenes, o.study_march_scene, o.device};
         study = run_speed_accuracy_study(study_options, out, &device);
         progress.finished.push_back("the speed-against-accuracy study");
         end_stage("speed against accuracy");
@@ -306,6 +309,8 @@ void register_report(CLI::App& app) {
     cmd->add_option("--study-size", options->study_size, "Image size of the study's renders")->capture_default_str();
     cmd->add_option("--study-presets", options->study_presets, "Presets whose preview's light sampling the study compares")->capture_default_str();
     cmd->add_option("--study-scenes", options->study_scenes, "Scenes whose integrators the study compares")->capture_default_str();
+    cmd->add_option("--study-march-scene", options->study_march_scene, "Scene whose sphere-tracing settings the study compares (empty: none)")
+        ->capture_default_str();
     cmd->add_option("--device", options->device, "OpenCL device of the previews (dtoadq devices lists them)");
     cmd->callback([options] { run_report(*options); });
 }

@@ -191,8 +191,7 @@ report::Section scene_section(const ReportScene& scene, const fs::path& folder) 
     return s;
 }
 
-report::Section speed_section(const std::vector<StudyComparison>& comparisons, const StudyBudget& budget, const std::string& size,
-                              const fs::path& folder) {
+report::Section speed_section(const StudyResults& study, const StudyBudget& budget, const std::string& size, const fs::path& folder) {
     report::Section s{"speed", "Speed against accuracy",
                       "Each method renders for the same time on this machine, in this run, and its image is compared with a reference after "
                       "every launch: the relative RMSE (each channel's RMSE over the reference's mean, averaged) against render time, on "
@@ -202,7 +201,7 @@ report::Section speed_section(const std::vector<StudyComparison>& comparisons, c
                       " s per run, references of " + report::number_text(budget.reference_seconds, 3) + " s, at " + size +
                       " (report --full renders longer references and runs). The references are kept in references/ and reused by the "
                       "next report with the same inputs, settings, budget and build.", {}};
-    for (const StudyComparison& c : comparisons) {
+    for (const StudyComparison& c : study.comparisons) {
         report::Table table;
         table.header = {"run", "samples/pixel", "paths/s", "relative RMSE", "relative RMSE × √seconds", "against " + c.baseline + " at equal time"};
         double baseline_error = 0.0;
@@ -220,6 +219,25 @@ report::Section speed_section(const std::vector<StudyComparison>& comparisons, c
                                  std::to_string(c.reference_spp) + " samples per pixel" + (c.reference_reused ? " (reused)" : "") +
                                  "; its own relative noise, about " + report::number_text(c.reference_relative_noise, 2) +
                                  ", is the floor under every line. The chart's points are in " + c.csv + ".",
+                             with_csv(std::move(table), folder, stem + "_table.csv")});
+    }
+    if (study.march) {
+        const MarchSettingsStudy& m = *study.march;
+        report::Table table;
+        table.header = {"setting", "ms per sample", "error it causes", "noise level", "lost rays"};
+        for (const MarchSetting& setting : m.settings)
+            table.rows.push_back({text(setting.name), number(1000.0 * setting.seconds_per_sample, 3), number(setting.error, 3),
+                                  number(setting.noise, 3), number(setting.lost_rays, 2)});
+        const std::string stem = fs::path(m.image).stem().string();
+        s.figures.push_back({m.image, "time per sample against the error of each sphere-tracing setting on " + m.scene,
+                             m.scene + ": each sphere-tracing setting (ω the over-relaxation, and the normal estimator; analytic falls "
+                             "back to tetrahedral where the field has no analytic gradient, as in a blend) against the conservative one, " +
+                                 m.baseline_description + ". Every setting renders the same samples, " + std::to_string(m.samples_per_pixel) +
+                                 " per pixel in each of two halves drawn with two seeds; the error a setting causes is estimated from the "
+                                 "product of its two halves' differences from the conservative setting's, whose expectation is the squared "
+                                 "error whatever the noise (relative: over the image's mean, per channel, averaged). Errors inside the grey "
+                                 "band, twice the estimate's standard error, cannot be told from noise at this budget. Lost rays: the share "
+                                 "of marches that ran out of steps. The chart's points are in " + m.csv + ".",
                              with_csv(std::move(table), folder, stem + "_table.csv")});
     }
     return s;

@@ -54,8 +54,7 @@ report::Section validation_section(const std::vector<validation::MaterialValidat
                                    const std::filesystem::path& folder);
 report::Section scene_section(const ReportScene& scene, const std::filesystem::path& folder);
 // The speed-against-accuracy study: a chart per preset or scene, with the runs' figures; writes their tables' CSV.
-report::Section speed_section(const std::vector<StudyComparison>& comparisons, const StudyBudget& budget, const std::string& size,
-                              const std::filesystem::path& folder);
+report::Section speed_section(const StudyResults& study, const StudyBudget& budget, const std::string& size, const std::filesystem::path& folder);
 // The device the renders ran on, the build, the date, and the seconds each stage took.
 report::Section machine_section(const std::string& device, const std::vector<std::pair<std::string, double>>& stage_seconds,
                                 const std::filesystem::path& folder);

@@ -1,5 +1,6 @@
 #include "cli/report_study.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -9,7 +10,9 @@
 #include "common/read_text_file.hpp"
 #include "opencl/runtime.hpp"
 #include "plots/speed_accuracy_chart.hpp"
+#include "plots/tradeoff_chart.hpp"
 #include "render/integrator.hpp"
+#include "report/html_page.hpp"
 #include "render/opencl_renderer.hpp"
 #include "report/reference_cache.hpp"
 #include "scene/load_scene.hpp"
@@ -62,15 +65,91 @@ StudyComparison compare(const report::RendererFactory& make, const StudyOptions&
     return c;
 }
 
+// One half of a paired render: `samples` samples per pixel with seed offset `half`.
+struct PairedHalf {
+    film::ImageRgb image;
+    render::RenderStatistics stats;
+};
+
+PairedHalf render_half(const report::RendererFactory& make, render::RenderInput input, int half, int samples) {
+    input.settings.seed += uint64_t(half) * 1000003u;
+    std::unique_ptr<render::Renderer> renderer = make(input);
+    renderer->set_samples_per_launch(samples);
+    renderer->add_samples(samples);
+    return {renderer->image(), renderer->statistics()};
+}
+
+// Sphere tracing's settings on a marched scene: over-relaxation 1, 1.5 and 1.8 by the tetrahedral,
+// central and analytic normals, against the conservative setting: plain steps (over-relaxation 1)
+// and central differences of a quarter of the default step. Every setting renders the same samples
+// (the same seeds, the same count: what the conservative setting renders in the run's time) in two
+// halves, so that report::paired_relative_error tells the error the setting causes from noise.
+MarchSettingsStudy march_settings_study(const report::RendererFactory& make, const StudyOptions& o, const fs::path& folder) {
+    MarchSettingsStudy study;
+    study.scene = fs::path(o.march_scene).filename().string();
+    RenderJobOptions job_options;
+    job_options.scene = o.march_scene;
+    job_options.size = o.size;
+    if (!scene::has_own_light(scene::load_scene(o.march_scene))) job_options.default_env = o.env;
+    RenderJob job = prepare_render_job(job_options);
+    render::RenderInput baseline = job.input;
+    baseline.settings.over_relaxation = 1.0f;
+    baseline.settings.normals = render::NormalMethod::central;
+    baseline.settings.normal_step = job.input.settings.normal_step / 4.0f;
+    study.baseline_description = "plain sphere tracing (over-relaxation 1) with central-difference normals of step " +
+                                 report::number_text(baseline.settings.normal_step, 3);
+    std::printf("report: sphere-tracing settings, %s, against %s\n", study.scene.c_str(), study.baseline_description.c_str());
+    std::fflush(stdout);
+    // the sample count: what the baseline renders in a quarter of the run's time, per half
+    {
+        std::unique_ptr<render::Renderer> probe = make(baseline);
+        probe->add_samples(1);
+        probe->reset();
+        report::render_for(*probe, o.budget.run_seconds / 4.0, [](double) {});
+        study.samples_per_pixel = std::max(1, probe->statistics().samples_per_pixel);
+    }
+    const PairedHalf base[2] = {render_half(make, baseline, 1, study.samples_per_pixel), render_half(make, baseline, 2, study.samples_per_pixel)};
+    std::vector<plots::TradeoffPoint> points;
+    for (float over_relaxation : {1.0f, 1.5f, 1.8f}) {
+        for (render::NormalMethod normals : {render::NormalMethod::tetrahedral, render::NormalMethod::central, render::NormalMethod::analytic}) {
+            render::RenderInput input = job.input;
+            input.settings.over_relaxation = over_relaxation;
+            input.settings.normals = normals;
+            const PairedHalf half[2] = {render_half(make, input, 1, study.samples_per_pixel), render_half(make, input, 2, study.samples_per_pixel)};
+            const report::PairedError e = report::paired_relative_error(half[0].image, half[1].image, base[0].image, base[1].image);
+            MarchSetting m;
+            m.name = "ω " + report::number_text(over_relaxation, 2) + ", " + render::normal_method_name(normals);
+            m.seconds_per_sample = (half[0].stats.render_seconds + half[1].stats.render_seconds) / (2.0 * study.samples_per_pixel);
+            m.error = e.relative;
+            m.noise = e.noise;
+            const double rays = double(half[0].stats.rays + half[1].stats.rays);
+            m.lost_rays = rays > 0.0 ? double(half[0].stats.lost_rays + half[1].stats.lost_rays) / rays : 0.0;
+            study.noise_level = std::max(study.noise_level, m.noise);
+            std::printf("  %-24s %8.3g ms per sample  error %.4g (noise %.4g), lost rays %.3g\n", m.name.c_str(), 1000.0 * m.seconds_per_sample,
+                        m.error, m.noise, m.lost_rays);
+            std::fflush(stdout);
+            points.push_back({m.name, m.seconds_per_sample, m.error});
+            study.settings.push_back(std::move(m));
+        }
+    }
+    const std::string stem = "march_" + fs::path(o.march_scene).stem().string();
+    study.image = "speed_" + stem + ".png";
+    study.csv = "speed_" + stem + ".csv";
+    plots::write_tradeoff_chart(points, study.noise_level, study.scene + ": sphere-tracing settings", "relative error against the conservative setting",
+                                (folder / study.image).string(), (folder / study.csv).string());
+    return study;
+}
+
 }  // namespace
 
-std::vector<StudyComparison> run_speed_accuracy_study(const StudyOptions& o, const fs::path& folder, std::string* device) {
+StudyResults run_speed_accuracy_study(const StudyOptions& o, const fs::path& folder, std::string* device) {
     opencl::Runtime runtime(o.device);
     *device = runtime.device().description();
     report::RendererFactory make = [&runtime](const render::RenderInput& input) {
         return std::make_unique<render::OpenClRenderer>(runtime, input);
     };
-    std::vector<StudyComparison> comparisons;
+    StudyResults results;
+    std::vector<StudyComparison>& comparisons = results.comparisons;
     for (const std::string& preset : o.presets) {
         RenderJobOptions job_options;
         job_options.material = preset;
@@ -116,7 +195,8 @@ std::vector<StudyComparison> run_speed_accuracy_study(const StudyOptions& o, con
         c.reference_description = "the path tracer with MIS, max depth " + std::to_string(job.input.settings.max_depth);
         comparisons.push_back(std::move(c));
     }
-    return comparisons;
+    if (!o.march_scene.empty()) results.march = march_settings_study(make, o, folder);
+    return results;
 }
 
 }  // namespace lab::cli

@@ -4,7 +4,9 @@
 // are kept in the report folder (report/reference_cache.hpp), so a second report reuses them.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,7 @@ struct StudyOptions {
     std::string env;                   // of the presets' previews
     std::vector<std::string> presets;  // compared by environment-sampling strategy
     std::vector<std::string> scenes;   // compared by integrator
+    std::string march_scene;           // its sphere-tracing settings compared; empty: none
     std::string device;
 };
 
@@ -44,7 +47,31 @@ struct StudyComparison {
     std::vector<report::EqualTimeResult> results;
 };
 
+// A sphere-tracing setting: its over-relaxation and normal estimator, what one sample per pixel
+// costs with it, and the error it causes against the conservative reference.
+struct MarchSetting {
+    std::string name;
+    double seconds_per_sample = 0.0;  // per sample per pixel
+    double error = 0.0;      // relative, against the conservative setting (report::paired_relative_error)
+    double noise = 0.0;      // the level below which that error is not told from noise
+    double lost_rays = 0.0;  // the share of marches that ran out of steps
+};
+
+struct MarchSettingsStudy {
+    std::string scene;
+    std::string image, csv;
+    std::string baseline_description;  // the conservative setting
+    int samples_per_pixel = 0;         // of every setting, in each of two halves
+    double noise_level = 0.0;          // the largest of the settings' noise
+    std::vector<MarchSetting> settings;
+};
+
+struct StudyResults {
+    std::vector<StudyComparison> comparisons;
+    std::optional<MarchSettingsStudy> march;
+};
+
 // Runs the study, writing charts, their CSV and the references into `folder`. *device: the device's description.
-std::vector<StudyComparison> run_speed_accuracy_study(const StudyOptions& options, const std::filesystem::path& folder, std::string* device);
+StudyResults run_speed_accuracy_study(const StudyOptions& options, const std::filesystem::path& folder, std::string* device);
 
 }  // namespace lab::cli

@@ -1,8 +1,10 @@
 #include "report/convergence.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "film/image_stats.hpp"
 
@@ -73,6 +75,34 @@ std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const s
         results.push_back(std::move(r));
     }
     return results;
+}
+
+PairedError paired_relative_error(const film::ImageRgb& a1, const film::ImageRgb& a2, const film::ImageRgb& b1, const film::ImageRgb& b2) {
+    for (const film::ImageRgb* image : {&a2, &b1, &b2})
+        if (image->width != a1.width || image->height != a1.height || image->rgb.size() != a1.rgb.size())
+            throw std::invalid_argument("paired error: images of different sizes");
+    const size_t pixels = a1.pixel_count();
+    PairedError e;
+    if (pixels == 0) return e;
+    for (int c = 0; c < 3; ++c) {
+        double sum = 0.0, sum_squares = 0.0, baseline = 0.0;
+        for (size_t k = 0; k < pixels; ++k) {
+            const size_t i = 3 * k + size_t(c);
+            const double product = double(a1.rgb[i] - b1.rgb[i]) * double(a2.rgb[i] - b2.rgb[i]);
+            sum += product;
+            sum_squares += product * product;
+            baseline += 0.5 * (double(b1.rgb[i]) + double(b2.rgb[i]));
+        }
+        const double n = double(pixels);
+        const double mean = sum / n, mean_of_baseline = baseline / n;
+        const double variance = pixels > 1 ? std::max(0.0, (sum_squares - n * mean * mean) / (n - 1.0)) : 0.0;
+        const double standard_error = std::sqrt(variance / n);
+        if (mean_of_baseline > 0.0) {
+            e.relative += std::sqrt(std::max(0.0, mean)) / mean_of_baseline / 3.0;
+            e.noise += std::sqrt(2.0 * standard_error) / mean_of_baseline / 3.0;
+        }
+    }
+    return e;
 }
 
 }  // namespace lab::report

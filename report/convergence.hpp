@@ -56,4 +56,17 @@ struct EqualTimeResult {
 std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const std::vector<EqualTimeRun>& runs, const Reference& reference,
                                             double seconds, ErrorMetric metric = ErrorMetric::rmse);
 
+// The error a change of settings causes, measured from renders that share their random numbers:
+// the setting's halves a1, a2 and the baseline's b1, b2, half 1 of both drawn with one seed, half 2
+// with another. Per pixel and channel, (a1 - b1)(a2 - b2) has the expectation bias^2 whatever the
+// noise, since the two halves are independent; and the shared numbers keep its variance small, as
+// both renders follow nearly the same paths.
+struct PairedError {
+    double relative = 0.0;  // per channel sqrt(max(0, the product's mean over pixels)) over the baseline's mean, averaged
+    double noise = 0.0;     // the same of twice the product mean's standard error: a smaller error is not told from noise
+};
+
+// Throws std::invalid_argument for images of different sizes.
+PairedError paired_relative_error(const film::ImageRgb& a1, const film::ImageRgb& a2, const film::ImageRgb& b1, const film::ImageRgb& b2);
+
 }  // namespace lab::report

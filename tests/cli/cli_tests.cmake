@@ -199,14 +199,14 @@ cli_output_test(albedo.writes_png_and_csv 46 albedo.png albedo.csv
 # the main job, small: every preset's lobes, albedo, validation and preview, and the preview sheet
 # and the speed-against-accuracy study on short budgets, with its charts
 cli_output_test(report.writes_everything 40
-                report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png|report/speed_preview_glossy_plastic.png|report/speed_scene_caustic.png
+                report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png|report/speed_preview_glossy_plastic.png|report/speed_scene_caustic.png|report/speed_march_metaballs.png
                 report/albedo.csv
                 report --presets ${PROJECT_SOURCE_DIR}/presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
                 --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96
                 --scene ${PROJECT_SOURCE_DIR}/scenes/cornell_box.json --scene-spp 2
                 --study-seconds 0.2 --study-reference-seconds 0.6 --study-size 48x48
                 --study-presets ${PROJECT_SOURCE_DIR}/presets/glossy_plastic.json
-                --study-scenes ${PROJECT_SOURCE_DIR}/scenes/caustic.json)
+                --study-scenes ${PROJECT_SOURCE_DIR}/scenes/caustic.json --study-march-scene ${PROJECT_SOURCE_DIR}/scenes/metaballs.json)
 set_tests_properties(cli.report.writes_everything PROPERTIES FIXTURES_SETUP report_page)
 # its index.html: valid, self-contained, every image and link there, and shown by a browser
 add_test(NAME cli.report.page_opens_in_a_browser
