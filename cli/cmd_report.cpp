@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -156,6 +157,25 @@ void stop_if_interrupted(const ReportProgress& progress, const std::vector<brdf:
     throw CLI::RuntimeError(render::kInterruptedExitStatus);
 }
 
+// The seconds per stage of the last report written into the folder (its timings.csv); empty when
+// there is none or it cannot be read.
+std::map<std::string, double> last_report_timings(const fs::path& csv) {
+    std::map<std::string, double> seconds;
+    std::ifstream in(csv);
+    std::string line;
+    if (!std::getline(in, line) || line != "stage,seconds") return {};
+    while (std::getline(in, line)) {
+        const size_t comma = line.rfind(',');
+        if (comma == std::string::npos) return {};
+        try {
+            seconds[line.substr(0, comma)] = std::stod(line.substr(comma + 1));
+        } catch (const std::exception&) {
+            return {};
+        }
+    }
+    return seconds;
+}
+
 void run_report(const ReportOptions& o) {
     render::InterruptScope interrupt_scope;  // Ctrl-C anywhere in the report: finish the step, say what was done
     ReportProgress progress;
@@ -184,16 +204,36 @@ void run_report(const ReportOptions& o) {
     fs::create_directories(o.out, ec);
     if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");
     const fs::path out(o.out);
-    // the wall-clock seconds of each stage, for the page
+    // the stages, each announced with the time left as this folder's last report took it, and timed for the page
+    std::vector<std::string> stages{"lobe plots", "albedo chart"};
+    if (o.preview) stages.push_back("previews");
+    if (o.preview && !o.scene.empty()) stages.push_back("scene render");
+    if (o.study) stages.push_back("speed against accuracy");
+    stages.push_back("validation");
+    const std::map<std::string, double> last_seconds = last_report_timings(out / "timings.csv");
     std::vector<std::pair<std::string, double>> stage_seconds;
     auto stage_start = std::chrono::steady_clock::now();
+    auto begin_stage = [&](const std::string& stage) {
+        const size_t k = size_t(std::find(stages.begin(), stages.end(), stage) - stages.begin());
+        double left = 0.0;
+        bool known = true;
+        for (size_t i = k; i < stages.size(); ++i) {
+            auto it = last_seconds.find(stages[i]);
+            known = known && it != last_seconds.end();
+            if (known) left += it->second;
+        }
+        std::printf("report: stage %zu of %zu, %s", k + 1, stages.size(), stage.c_str());
+        if (known) std::printf(" (about %.0f s left, as the last report in %s took)", left, o.out.c_str());
+        std::printf("\n");
+        std::fflush(stdout);
+        stage_start = std::chrono::steady_clock::now();
+    };
     auto end_stage = [&](const std::string& stage) {
-        const auto now = std::chrono::steady_clock::now();
-        stage_seconds.emplace_back(stage, std::chrono::duration<double>(now - stage_start).count());
-        stage_start = now;
+        stage_seconds.emplace_back(stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - stage_start).count());
     };
 
     std::vector<ReportLobes> lobes;
+    begin_stage("lobe plots");
     for (const PresetGroup& group : group_presets(presets)) {
         for (float theta : o.thetas) {
             std::string name = "lobes_" + group.id + "_theta" + std::to_string(int(theta)) + ".png";
@@ -208,6 +248,7 @@ void run_report(const ReportOptions& o) {
     }
     progress.finished.push_back("the lobe plots");
     end_stage("lobe plots");
+    begin_stage("albedo chart");
     std::printf("report: directional albedo of %zu presets -> %s\n", presets.size(), (out / "albedo.png").c_str());
     std::fflush(stdout);
     const analysis::AlbedoCurveOptions albedo_options;
@@ -222,10 +263,12 @@ void run_report(const ReportOptions& o) {
     ReportPreviews previews;
     std::optional<ReportScene> scene;
     if (o.preview) {
+        begin_stage("previews");
         previews = write_previews(o, presets, out, &progress, &device);
         end_stage("previews");
         stop_if_interrupted(progress, presets);
         if (!o.scene.empty()) {
+            begin_stage("scene render");
             scene = write_scene_render(o, out, &progress, &device);
             end_stage("scene render");
             stop_if_interrupted(progress, presets);
@@ -237,6 +280,7 @@ void run_report(const ReportOptions& o) {
     if (o.study_seconds > 0.0) budget.run_seconds = o.study_seconds;
     if (o.study_reference_seconds > 0.0) budget.reference_seconds = o.study_reference_seconds;
     if (o.study) {
+        begin_stage("speed against accuracy");
         StudyOptions study_options{budget, o.study_size, o.env, o.study_presets, o.study_scenes, o.study_march_scene, o.device};
         study = run_speed_accuracy_study(study_options, out, &device);
         progress.finished.push_back("the speed-against-accuracy study");
@@ -247,6 +291,7 @@ void run_report(const ReportOptions& o) {
     validation::ValidationOptions options;
     options.chi_square_samples = o.chi_square_samples;
     std::vector<validation::MaterialValidation> results;
+    begin_stage("validation");
     for (const brdf::Preset& p : presets) {
         std::printf("report: validating %s\n", p.name.c_str());
         std::fflush(stdout);
