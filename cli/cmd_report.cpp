@@ -18,6 +18,7 @@
 #include "cli/options.hpp"
 #include "cli/render_job.hpp"
 #include "cli/report_groups.hpp"
+#include "report/stability_atlas.hpp"
 #include "cli/report_page.hpp"
 #include "cli/report_study.hpp"
 #include "common/input_error.hpp"
@@ -209,6 +210,7 @@ void run_report(const ReportOptions& o) {
     if (o.preview) stages.push_back("previews");
     if (o.preview && !o.scene.empty()) stages.push_back("scene render");
     if (o.study) stages.push_back("speed against accuracy");
+    stages.push_back("stability atlas");
     stages.push_back("validation");
     const std::map<std::string, double> last_seconds = last_report_timings(out / "timings.csv");
     std::vector<std::pair<std::string, double>> stage_seconds;
@@ -288,6 +290,14 @@ void run_report(const ReportOptions& o) {
         stop_if_interrupted(progress, presets);
     }
 
+    begin_stage("stability atlas");
+    std::printf("report: stability atlas -> %s\n", (out / "atlas_energy.png").c_str());
+    std::fflush(stdout);
+    const std::vector<report::AtlasEntry> atlas = report::write_stability_atlas(out);
+    progress.finished.push_back("the stability atlas");
+    end_stage("stability atlas");
+    stop_if_interrupted(progress, presets);
+
     validation::ValidationOptions options;
     options.chi_square_samples = o.chi_square_samples;
     std::vector<validation::MaterialValidation> results;
@@ -314,6 +324,7 @@ void run_report(const ReportOptions& o) {
     page.sections.push_back(validation_section(results, options, out));
     if (scene) page.sections.push_back(scene_section(*scene, out));
     if (o.study) page.sections.push_back(speed_section(study, budget, o.study_size, out));
+    page.sections.push_back(atlas_section(atlas, out));
     page.sections.push_back(machine_section(device, stage_seconds, out));
     report::write_page(page, (out / "index.html").string());
     std::printf("report: wrote %s\n", (out / "index.html").c_str());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "plots/python_runner.hpp"
+#include "tests/chart_files.hpp"
 #include "plots/tradeoff_chart.hpp"
 
 namespace fs = std::filesystem;
@@ -21,14 +22,8 @@ TEST_CASE("the trade-off chart is a PNG, and its CSV has one row per setting", "
     const fs::path png = folder.path() / "tradeoff.png", csv = folder.path() / "tradeoff.csv";
     const std::vector<TradeoffPoint> points = {{"ω 1, central", 0.016, 0.0}, {"ω 1.8, tetrahedral", 0.012, 0.003}};
     lab::plots::write_tradeoff_chart(points, 0.002, "metaballs", "relative error", png.string(), csv.string());
-    std::ifstream in(png, std::ios::binary);
-    char magic[8] = {};
-    in.read(magic, 8);
-    CHECK(std::string(magic, 8) == "\x89PNG\r\n\x1a\n");
-    CHECK(fs::file_size(png) > 20000u);
-    std::ifstream table(csv);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(table, line);) lines.push_back(line);
+    CHECK(is_png_larger_than(png, 20000u));
+    const std::vector<std::string> lines = lines_of(csv);
     CHECK(lines == std::vector<std::string>{"setting,seconds,error", "\"ω 1, central\",0.016,0", "\"ω 1.8, tetrahedral\",0.012,0.003"});
 }
 
