@@ -17,7 +17,7 @@ struct AtlasExtremes {
     std::string panel;
     double least = 0.0, greatest = 0.0;
     double least_roughness = 0.0, least_theta = 0.0, greatest_roughness = 0.0, greatest_theta = 0.0;
-    double least_error = 0.0, greatest_error = 0.0;  // the standard errors of those two estimates
+    double least_error = -1.0, greatest_error = -1.0;  // the standard errors of those two estimates; < 0: none (not an estimate)
 };
 
 struct AtlasEntry {
