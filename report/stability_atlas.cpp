@@ -37,41 +37,57 @@ constexpr int kStrata = 32;  // 1024 importance samples per estimate: a standard
 
 std::string percent(double fraction) { return number_text(100.0 * fraction, 3) + " %"; }
 
+// A panel of the atlas: a white conductor of this model and distribution, compensated or not.
+struct Method {
+    std::string name;
+    int model, distribution;
+    bool compensated;
+};
+
+// The method's panel over the grid, x (roughness) major, each cell value(material, wo, &standard
+// error; < 0 for none), and its extremes.
+template <typename Value>
+plots::HeatmapPanel sweep(const Method& method, const std::vector<double>& roughness, const std::vector<double>& theta, Value value,
+                          AtlasExtremes* e) {
+    plots::HeatmapPanel panel{method.name, {}};
+    *e = AtlasExtremes{};
+    e->panel = method.name;
+    e->least = 1e30;
+    e->greatest = -1e30;
+    for (double r : roughness) {
+        brdf::Material m = atlas_white_conductor(method.model, float(r), method.compensated);
+        m.distribution = method.distribution;
+        for (double t : theta) {
+            double se = -1.0;
+            const double v = value(m, brdf::direction_from_degrees(float(t), 0.0f), &se);
+            panel.values.push_back(v);
+            if (v < e->least) e->least = v, e->least_roughness = r, e->least_theta = t, e->least_error = se;
+            if (v > e->greatest) e->greatest = v, e->greatest_roughness = r, e->greatest_theta = t, e->greatest_error = se;
+        }
+    }
+    return panel;
+}
+
 AtlasEntry energy_entry(const fs::path& folder) {
     std::vector<double> roughness, theta;
     for (int i = 1; i <= 20; ++i) roughness.push_back(0.05 * i);
     for (int j = 0; j <= 17; ++j) theta.push_back(5.0 * j);
     theta.push_back(88.0);
-    struct Method {
-        std::string name;
-        int model;
-        bool compensated;
-    };
-    const std::vector<Method> methods = {{"lab, single scattering", BRDF_MODEL_LAB, false},
-                                         {"lab, energy compensation", BRDF_MODEL_LAB, true},
-                                         {"dtoadq2017", BRDF_MODEL_DTOADQ2017, false}};
+    const std::vector<Method> methods = {{"lab, single scattering", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX, false},
+                                         {"lab, energy compensation", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX, true},
+                                         {"dtoadq2017", BRDF_MODEL_DTOADQ2017, BRDF_DISTRIBUTION_GGX, false}};
     AtlasEntry entry;
     entry.title = "Energy: directional albedo of a white conductor over roughness and incident angle";
     std::vector<plots::HeatmapPanel> panels;
     for (const Method& method : methods) {
-        plots::HeatmapPanel panel{method.name, {}};
         AtlasExtremes e;
-        e.panel = method.name;
-        e.least = 1e30;
-        e.greatest = -1e30;
-        for (double r : roughness) {
-            const brdf::Material m = atlas_white_conductor(method.model, float(r), method.compensated);
-            for (double t : theta) {
-                const brdf::float3 wo = brdf::direction_from_degrees(float(t), 0.0f);
-                const validation::AlbedoEstimate a = validation::directional_albedo(m, wo, kStrata);
-                const double value = std::max({double(a.value.x), double(a.value.y), double(a.value.z)});
-                const double se = std::max({double(a.std_error.x), double(a.std_error.y), double(a.std_error.z)});
-                panel.values.push_back(value);
-                if (value < e.least) e.least = value, e.least_roughness = r, e.least_theta = t, e.least_error = se;
-                if (value > e.greatest) e.greatest = value, e.greatest_roughness = r, e.greatest_theta = t, e.greatest_error = se;
-            }
-        }
-        panels.push_back(std::move(panel));
+        panels.push_back(sweep(method, roughness, theta,
+                               [](const brdf::Material& m, brdf::float3 wo, double* se) {
+                                   const validation::AlbedoEstimate a = validation::directional_albedo(m, wo, kStrata);
+                                   *se = std::max({double(a.std_error.x), double(a.std_error.y), double(a.std_error.z)});
+                                   return std::max({double(a.value.x), double(a.value.y), double(a.value.z)});
+                               },
+                               &e));
         entry.extremes.push_back(e);
     }
     entry.image = "atlas_energy.png";
@@ -91,7 +107,8 @@ AtlasEntry energy_entry(const fs::path& folder) {
     entry.finding = finding;
     entry.how = "Each cell is the largest channel of the directional albedo at that roughness (GGX, isotropic, F0 = 1, albedo 1) and "
                 "incident angle, estimated with the BSDF's own sampler on a stratified grid of " + std::to_string(kStrata * kStrata) +
-                " samples; the table gives each extreme's standard error. The colour scale diverges at 1: blue is energy lost, red energy created.";
+                " samples; the table gives each extreme's standard error. The colour scale diverges at 1: blue is energy lost, red energy "
+                "created.";
     return entry;
 }
 
@@ -105,47 +122,38 @@ AtlasEntry sampler_entry(const fs::path& folder) {
     theta.push_back(88.0);
     constexpr long kSamples = 4000;
     constexpr double kLogCap = 6.0;
-    struct Method {
-        std::string name;
-        int model, distribution;
+    const std::vector<Method> methods = {{"lab, GGX (visible normals)", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX, false},
+                                         {"lab, Hyper-Cauchy, shape 3", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_HYPER_CAUCHY, false},
+                                         {"dtoadq2017", BRDF_MODEL_DTOADQ2017, BRDF_DISTRIBUTION_GGX, false}};
+    auto efficiency = [](brdf::Material m, brdf::float3 wo) {
+        m.hc_shape = 3.0f;
+        return validation::sampling_efficiency(m, wo, kSamples);
     };
-    const std::vector<Method> methods = {{"lab, GGX (visible normals)", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX},
-                                         {"lab, Hyper-Cauchy, shape 3", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_HYPER_CAUCHY},
-                                         {"dtoadq2017", BRDF_MODEL_DTOADQ2017, BRDF_DISTRIBUTION_GGX}};
     AtlasEntry entry;
     entry.title = "Samplers: how much each glossy lobe's sampler beats cosine sampling, over roughness and incident angle";
     std::vector<plots::HeatmapPanel> panels;
     std::string below;
     for (const Method& method : methods) {
-        plots::HeatmapPanel panel{method.name, {}};
         AtlasExtremes e;
-        e.panel = method.name;
-        e.least = 1e30;
-        e.greatest = -1e30;
         int cells_below = 0;
-        double failed_at_least = 0.0;  // the share of the sampler's draws that failed (below the horizon) at the least cell
-        for (double r : roughness) {
-            brdf::Material m = atlas_white_conductor(method.model, float(r), false);
-            m.distribution = method.distribution;
-            m.hc_shape = 3.0f;
-            for (double t : theta) {
-                const validation::SamplingEfficiency s =
-                    validation::sampling_efficiency(m, brdf::direction_from_degrees(float(t), 0.0f), kSamples);
-                // no continuous part (NaN): no gain either way; a sampler of zero variance (a narrow lobe it follows
-                // exactly, ratio infinite) and every ratio beyond a millionfold show at the scale's end
-                const double value = std::isnan(s.ratio) ? 0.0 : std::clamp(std::log10(std::max(s.ratio, 1e-300)), -kLogCap, kLogCap);
-                panel.values.push_back(value);
-                cells_below += value < 0.0;
-                if (value < e.least) e.least = value, e.least_roughness = r, e.least_theta = t, failed_at_least = s.failed_fraction;
-                if (value > e.greatest) e.greatest = value, e.greatest_roughness = r, e.greatest_theta = t;
-            }
-        }
+        panels.push_back(sweep(method, roughness, theta,
+                               [&](const brdf::Material& m, brdf::float3 wo, double*) {
+                                   const double ratio = efficiency(m, wo).ratio;
+                                   // no continuous part (NaN): no gain either way; a sampler of zero variance (a narrow lobe it
+                                   // follows exactly, ratio infinite) and every ratio beyond a millionfold show at the scale's end
+                                   const double v = std::isnan(ratio) ? 0.0 : std::clamp(std::log10(std::max(ratio, 1e-300)), -kLogCap, kLogCap);
+                                   cells_below += v < 0.0;
+                                   return v;
+                               },
+                               &e));
+        brdf::Material least = atlas_white_conductor(method.model, float(e.least_roughness), false);
+        least.distribution = method.distribution;
+        const double failed = efficiency(least, brdf::direction_from_degrees(float(e.least_theta), 0.0f)).failed_fraction;
         char line[256];
         std::snprintf(line, sizeof line, "%s%s: %d of %zu cells below 1 (least %.2g× at roughness %.2g, θ %.0f°, where %.0f %% of its draws fail)",
                       below.empty() ? "" : "; ", method.name.c_str(), cells_below, roughness.size() * theta.size(), std::pow(10.0, e.least),
-                      e.least_roughness, e.least_theta, 100.0 * failed_at_least);
+                      e.least_roughness, e.least_theta, 100.0 * failed);
         below += line;
-        panels.push_back(std::move(panel));
         entry.extremes.push_back(e);
     }
     entry.image = "atlas_samplers.png";
