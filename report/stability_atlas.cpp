@@ -10,6 +10,9 @@
 #include "plots/heatmap_chart.hpp"
 #include "report/html_page.hpp"
 #include "validation/albedo.hpp"
+#include "validation/random_inputs.hpp"
+#include "validation/reciprocity.hpp"
+#include "validation/uniform_random.hpp"
 #include "validation/sampling_efficiency.hpp"
 
 namespace lab::report {
@@ -44,6 +47,23 @@ struct Method {
     bool compensated;
 };
 
+// The white conductors the energy and reciprocity entries compare: the lab model without and with
+// energy compensation, and the 2017 model.
+const std::vector<Method>& white_conductors() {
+    static const std::vector<Method> methods = {{"lab, single scattering", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX, false},
+                                         {"lab, energy compensation", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX, true},
+                                         {"dtoadq2017", BRDF_MODEL_DTOADQ2017, BRDF_DISTRIBUTION_GGX, false}};
+    return methods;
+}
+
+// The grid of the entries whose cells cost thousands of evaluations: roughness 0.05 to 0.95, and
+// incident angle 0 to 80 degrees and 88.
+void coarse_grid(std::vector<double>* roughness, std::vector<double>* theta) {
+    for (int i = 0; i < 10; ++i) roughness->push_back(0.05 + 0.1 * i);
+    for (int j = 0; j <= 8; ++j) theta->push_back(10.0 * j);
+    theta->push_back(88.0);
+}
+
 // The method's panel over the grid, x (roughness) major, each cell value(material, wo, &standard
 // error; < 0 for none), and its extremes.
 template <typename Value>
@@ -73,9 +93,7 @@ AtlasEntry energy_entry(const fs::path& folder) {
     for (int i = 1; i <= 20; ++i) roughness.push_back(0.05 * i);
     for (int j = 0; j <= 17; ++j) theta.push_back(5.0 * j);
     theta.push_back(88.0);
-    const std::vector<Method> methods = {{"lab, single scattering", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX, false},
-                                         {"lab, energy compensation", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX, true},
-                                         {"dtoadq2017", BRDF_MODEL_DTOADQ2017, BRDF_DISTRIBUTION_GGX, false}};
+    const std::vector<Method>& methods = white_conductors();
     AtlasEntry entry;
     entry.title = "Energy: directional albedo of a white conductor over roughness and incident angle";
     std::vector<plots::HeatmapPanel> panels;
@@ -117,9 +135,7 @@ AtlasEntry energy_entry(const fs::path& folder) {
 // sampler is worse than cosine sampling).
 AtlasEntry sampler_entry(const fs::path& folder) {
     std::vector<double> roughness, theta;
-    for (int i = 0; i < 10; ++i) roughness.push_back(0.05 + 0.1 * i);
-    for (int j = 0; j <= 8; ++j) theta.push_back(10.0 * j);
-    theta.push_back(88.0);
+    coarse_grid(&roughness, &theta);
     constexpr long kSamples = 4000;
     constexpr double kLogCap = 6.0;
     const std::vector<Method> methods = {{"lab, GGX (visible normals)", BRDF_MODEL_LAB, BRDF_DISTRIBUTION_GGX, false},
@@ -172,8 +188,58 @@ AtlasEntry sampler_entry(const fs::path& folder) {
     return entry;
 }
 
+// Reciprocity: the largest relative difference between f(wo, wi) and f(wi, wo) over random wi in the
+// upper hemisphere, as log10, on a scale that diverges at the validation's tolerance (1e-4).
+AtlasEntry reciprocity_entry(const fs::path& folder) {
+    std::vector<double> roughness, theta;
+    coarse_grid(&roughness, &theta);
+    constexpr int kPairs = 2000;
+    constexpr double kTolerance = 1e-4;  // validation::ValidationOptions::reciprocity_tolerance
+    constexpr double kFloor = 1e-9;      // below float's resolution: shown as equal
+    const std::vector<Method>& methods = white_conductors();
+    AtlasEntry entry;
+    entry.title = "Reciprocity: the largest relative difference between f(wo, wi) and f(wi, wo), over roughness and angle";
+    std::vector<plots::HeatmapPanel> panels;
+    std::string over;
+    for (const Method& method : methods) {
+        AtlasExtremes e;
+        int cells_over = 0;
+        panels.push_back(sweep(method, roughness, theta,
+                               [&](const brdf::Material& m, brdf::float3 wo, double*) {
+                                   validation::UniformRandom rng(1);
+                                   double worst = 0.0;
+                                   for (int k = 0; k < kPairs; ++k) {
+                                       const brdf::float3 wi = validation::uniform_hemisphere_direction(rng);
+                                       worst = std::max(worst, validation::relative_difference(brdf::bsdf_eval(&m, wo, wi), brdf::bsdf_eval(&m, wi, wo)));
+                                   }
+                                   cells_over += worst > kTolerance;
+                                   return std::log10(std::max(worst, kFloor));
+                               },
+                               &e));
+        char line[200];
+        std::snprintf(line, sizeof line, "%s%s: %d of %zu cells above it (largest %.2g at roughness %.2g, θ %.0f°)", over.empty() ? "" : "; ",
+                      method.name.c_str(), cells_over, roughness.size() * theta.size(), std::pow(10.0, e.greatest), e.greatest_roughness,
+                      e.greatest_theta);
+        over += line;
+        entry.extremes.push_back(e);
+    }
+    entry.image = "atlas_reciprocity.png";
+    entry.csv = "atlas_reciprocity.csv";
+    plots::write_heatmap_chart(panels, roughness, theta, "roughness", "incident angle θ (degrees)", "log10(largest relative difference)",
+                               std::log10(kTolerance), "Reciprocity: within the tolerance 1e-4 (blue) or beyond it (red)",
+                               (folder / entry.image).string(), (folder / entry.csv).string());
+    entry.finding = "Against the validation's tolerance of 1e-4: " + over + ".";
+    entry.how = "Each cell is log10 of the largest relative difference, over the channels and " + std::to_string(kPairs) +
+                " directions wi drawn uniformly over the upper hemisphere, between f(wo, wi) and f(wi, wo) for a white conductor of that "
+                "roughness with wo at that angle; differences below 1e-9 show as 1e-9. The scale diverges at the tolerance; the table's "
+                "extremes are in log10 too.";
+    return entry;
+}
+
 }  // namespace
 
-std::vector<AtlasEntry> write_stability_atlas(const fs::path& folder) { return {energy_entry(folder), sampler_entry(folder)}; }
+std::vector<AtlasEntry> write_stability_atlas(const fs::path& folder) {
+    return {energy_entry(folder), sampler_entry(folder), reciprocity_entry(folder)};
+}
 
 }  // namespace lab::report

@@ -199,7 +199,7 @@ cli_output_test(albedo.writes_png_and_csv 46 albedo.png albedo.csv
 # the main job, small: every preset's lobes, albedo, validation and preview, and the preview sheet
 # and the speed-against-accuracy study on short budgets, with its charts
 cli_output_test(report.writes_everything 40
-                report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png|report/speed_preview_glossy_plastic.png|report/speed_scene_caustic.png|report/speed_march_metaballs.png|report/atlas_energy.png
+                report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png|report/speed_preview_glossy_plastic.png|report/speed_scene_caustic.png|report/speed_march_metaballs.png|report/atlas_energy.png|report/atlas_reciprocity.png
                 report/albedo.csv
                 report --presets ${PROJECT_SOURCE_DIR}/presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
                 --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96
