@@ -182,10 +182,20 @@ cli_bad_input(NAME no_subcommand EXPECT "${E}.*subcommand"
               ARGS)
 
 # --- the plot commands write real files, run away from the source tree ---------------------------
+# cli_output_test(NAME MIN_ROWS PNGS CSVS <dtoadq arguments...>)
+# cli_output_test(NAME MIN_ROWS PNGS CSVS SETUP <from=to...> ARGS <dtoadq arguments...>)
 function(cli_output_test name min_rows pngs csvs)
-  string(REPLACE ";" "|" args "${ARGN}")
+  set(arguments ${ARGN})
+  set(setup "")
+  list(GET arguments 0 first)
+  if(first STREQUAL "SETUP")
+    cmake_parse_arguments(T "" "" "SETUP;ARGS" ${ARGN})
+    set(arguments ${T_ARGS})
+    string(REPLACE ";" "|" setup "${T_SETUP}")
+  endif()
+  string(REPLACE ";" "|" args "${arguments}")
   add_test(NAME cli.${name}
-           COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${args}" -DWORK=${CLI_SCRATCH}/${name}
+           COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> "-DARGS=${args}" -DWORK=${CLI_SCRATCH}/${name} "-DSETUP=${setup}"
                    -DPNGS=${pngs} -DCSVS=${csvs} -DMIN_ROWS=${min_rows} -P ${CLI_TEST_DIR}/expect_output.cmake)
   set_tests_properties(cli.${name} PROPERTIES LABELS cli TIMEOUT 120)
 endfunction()
@@ -196,12 +206,16 @@ cli_output_test(albedo.writes_png_and_csv 46 albedo.png albedo.csv
                 albedo --material ${PROJECT_SOURCE_DIR}/presets/gold.json --strata 16 -o albedo.png --csv albedo.csv)
 
 # --- validate and report ---------------------------------------------------------------------------
-# the main job, small: every preset's lobes, albedo, validation and preview, and the preview sheet
-# and the speed-against-accuracy study on short budgets, with its charts
-cli_output_test(report.writes_everything 40
+# the main job, small: three presets' lobes, albedo, validation and preview (a conductor, a plastic and
+# the 2017 model, whose validation fails), the preview sheet, the speed-against-accuracy study on
+# short budgets and the stability atlas, with their charts; every preset of presets/ would add a
+# preview's kernel build and a validation each and show nothing new
+cli_output_test(report.writes_everything 138
                 report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png|report/speed_preview_glossy_plastic.png|report/speed_scene_caustic.png|report/speed_march_metaballs.png|report/atlas_energy.png|report/atlas_reciprocity.png
                 report/albedo.csv
-                report --presets ${PROJECT_SOURCE_DIR}/presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
+                SETUP ${PROJECT_SOURCE_DIR}/presets/gold.json=presets/gold.json ${PROJECT_SOURCE_DIR}/presets/glossy_plastic.json=presets/glossy_plastic.json
+                      ${PROJECT_SOURCE_DIR}/presets/dtoadq2017_typical.json=presets/dtoadq2017_typical.json
+                ARGS report --presets presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
                 --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96
                 --scene ${PROJECT_SOURCE_DIR}/scenes/cornell_box.json --scene-spp 2
                 --study-seconds 0.2 --study-reference-seconds 0.6 --study-size 48x48

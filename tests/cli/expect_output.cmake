@@ -1,10 +1,22 @@
 # cmake -P driver for the command-line output tests. Runs EXE with ARGS ('|'-separated) in the
-# folder WORK (created empty, so nothing of the source tree is at hand) and passes when it exits 0
+# folder WORK (created empty, so nothing of the source tree is at hand, then given SETUP's
+# '|'-separated FROM=TO copies) and passes when it exits 0
 # and every file of PNGS ('|'-separated) is a PNG of at least 20 kB and every file of CSVS has a
 # header and at least MIN_ROWS rows.
 string(REPLACE "|" ";" args "${ARGS}")
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
+if(DEFINED SETUP)
+  string(REPLACE "|" ";" setup "${SETUP}")
+  foreach(pair ${setup})
+    string(REPLACE "=" ";" pair "${pair}")
+    list(GET pair 0 from)
+    list(GET pair 1 to)
+    get_filename_component(folder ${WORK}/${to} DIRECTORY)
+    file(MAKE_DIRECTORY ${folder})
+    file(COPY_FILE ${from} ${WORK}/${to})
+  endforeach()
+endif()
 execute_process(COMMAND ${EXE} ${args} WORKING_DIRECTORY ${WORK} RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${EXE} ${args}\nstatus ${status}\n${err}")
