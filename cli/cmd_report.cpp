@@ -21,6 +21,7 @@
 #include "report/stability_atlas.hpp"
 #include "cli/report_page.hpp"
 #include "cli/report_study.hpp"
+#include "scene/load_scene.hpp"
 #include "common/input_error.hpp"
 #include "opencl/runtime.hpp"
 #include "render/interrupt.hpp"
@@ -60,6 +61,9 @@ struct ReportOptions {
     std::vector<std::string> study_presets{"presets/glossy_plastic.json", "presets/brushed_aluminium.json"};
     std::vector<std::string> study_scenes{"scenes/cornell_box.json", "scenes/caustic.json"};
     std::string study_march_scene = "scenes/metaballs.json";  // empty: no sphere-tracing settings
+    // the atlas's integrator entry (cli/report_strategies.hpp): a caustic and a glossy scene
+    bool strategies = true;
+    std::vector<std::string> strategy_scenes{"scenes/caustic.json", "scenes/veach_mis.json"};
 };
 
 // What an interrupted report says it finished.
@@ -201,6 +205,11 @@ void run_report(const ReportOptions& o) {
         if (!o.study_march_scene.empty() && !fs::exists(o.study_march_scene))
             throw InputError(o.study_march_scene, "", "no such file (--study-march-scene; run from the repository root, or pass --study-march-scene)");
     }
+    for (const std::string& f : o.strategies ? o.strategy_scenes : std::vector<std::string>{}) {
+        if (!fs::exists(f)) throw InputError(f, "", "no such file (--strategy-scenes; run from the repository root, or pass --strategy-scenes)");
+        if (!scene::has_own_light(scene::load_scene(f)))
+            throw InputError(f, "--strategy-scenes", "has no light of its own: the strategy atlas renders a scene under its own lights");
+    }
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");
@@ -294,6 +303,14 @@ void run_report(const ReportOptions& o) {
     std::printf("report: stability atlas -> %s\n", (out / "atlas_energy.png").c_str());
     std::fflush(stdout);
     const std::vector<report::AtlasEntry> atlas = report::write_stability_atlas(out);
+    std::optional<StrategyAtlas> strategies;
+    if (o.strategies) {
+        StrategyAtlasOptions strategy_options;
+        strategy_options.scenes = o.strategy_scenes;
+        strategy_options.spp = o.full ? 128 : 16;
+        strategy_options.device = o.device;
+        strategies = write_strategy_atlas(strategy_options, out, &device);
+    }
     progress.finished.push_back("the stability atlas");
     end_stage("stability atlas");
     stop_if_interrupted(progress, presets);
@@ -324,7 +341,7 @@ void run_report(const ReportOptions& o) {
     page.sections.push_back(validation_section(results, options, out));
     if (scene) page.sections.push_back(scene_section(*scene, out));
     if (o.study) page.sections.push_back(speed_section(study, budget, o.study_size, out));
-    page.sections.push_back(atlas_section(atlas, out));
+    page.sections.push_back(atlas_section(atlas, strategies ? &*strategies : nullptr, out));
     page.sections.push_back(machine_section(device, stage_seconds, out));
     report::write_page(page, (out / "index.html").string());
     std::printf("report: wrote %s\n", (out / "index.html").c_str());
@@ -365,6 +382,10 @@ void register_report(CLI::App& app) {
     cmd->add_option("--study-size", options->study_size, "Image size of the study's renders")->capture_default_str();
     cmd->add_option("--study-presets", options->study_presets, "Presets whose preview's light sampling the study compares")->capture_default_str();
     cmd->add_option("--study-scenes", options->study_scenes, "Scenes whose integrators the study compares")->capture_default_str();
+    cmd->add_option("--strategy-scenes", options->strategy_scenes,
+                    "Scenes whose BDPT strategies the stability atlas maps, each under its own lights")
+        ->capture_default_str();
+    cmd->add_flag("!--no-strategies", options->strategies, "Leave the stability atlas's map of BDPT's strategies out");
     cmd->add_option("--study-march-scene", options->study_march_scene, "Scene whose sphere-tracing settings the study compares (empty: none)")
         ->capture_default_str();
     cmd->add_option("--device", options->device, "OpenCL device of the previews (dtoadq devices lists them)");

@@ -54,6 +54,31 @@ void check_strategy_folder(const std::string& dir) {
     if (!writable) throw InputError(dir, "--strategies", "cannot write into the folder");
 }
 
+void render_strategies(const RenderJob& job, const std::string& device, int spp, bool unweighted, std::optional<opencl::Runtime>* runtime,
+                       const std::function<void(const StrategyImage&)>& use) {
+    const render::RenderSettings& settings = job.input.settings;
+    render::check_integrator_has_strategies(settings.integrator, "--strategies");
+    const int n = render::bdpt_max_vertices(settings);
+    for (int length = 2; length <= n; ++length)
+        for (int s = 0; s < length; ++s) {
+            const int t = length - s;
+            if (!render::integrator_runs_strategy(settings.integrator, s, t)) continue;
+            for (bool without_weight : {true, false}) {
+                if (without_weight && !unweighted) continue;
+                RenderJob one = job;
+                one.input.settings.strategy_debug.strategy_s = s;
+                one.input.settings.strategy_debug.strategy_t = t;
+                one.input.settings.strategy_debug.strategy_unweighted = without_weight;
+                std::unique_ptr<render::Renderer> renderer = make_renderer(one, device, runtime);
+                renderer->set_samples_per_launch(spp);
+                renderer->add_samples(spp);
+                StrategyImage strategy{s, t, without_weight, renderer->image(), {}};
+                strategy.metadata = job_metadata(one, *renderer, renderer->statistics());  // with the strategy
+                use(strategy);
+            }
+        }
+}
+
 void write_strategy_images(const RenderJob& job, const std::string& device, int spp, const std::string& dir, bool quiet) {
     const render::RenderSettings& settings = job.input.settings;
     render::check_integrator_has_strategies(settings.integrator, "--strategies");
@@ -62,26 +87,12 @@ void write_strategy_images(const RenderJob& job, const std::string& device, int 
     // rows: path lengths 2 .. n vertices; columns: s = 0 .. n - 1, twice (unweighted, weighted)
     film::ImageRgb sheet(2 * n * w, (n - 1) * h);
     std::optional<opencl::Runtime> runtime;
-    for (int length = 2; length <= n; ++length)
-        for (int s = 0; s < length; ++s) {
-            int t = length - s;
-            if (!render::integrator_runs_strategy(settings.integrator, s, t)) continue;
-            for (bool unweighted : {true, false}) {
-                RenderJob one = job;
-                one.input.settings.strategy_debug.strategy_s = s;
-                one.input.settings.strategy_debug.strategy_t = t;
-                one.input.settings.strategy_debug.strategy_unweighted = unweighted;
-                std::unique_ptr<render::Renderer> renderer = make_renderer(one, device, &runtime);
-                renderer->set_samples_per_launch(spp);
-                renderer->add_samples(spp);
-                film::ImageRgb image = renderer->image();
-                film::ImageMetadata metadata = job_metadata(one, *renderer, renderer->statistics());  // with the strategy
-                std::string name = "s" + std::to_string(s) + "_t" + std::to_string(t) + (unweighted ? "_unweighted" : "_weighted") + ".exr";
-                film::write_exr((fs::path(dir) / name).string(), image, metadata);
-                place(&sheet, image, (unweighted ? 0 : n * w) + s * w, (length - 2) * h);
-                if (!quiet) std::fprintf(stderr, "wrote %s\n", (fs::path(dir) / name).string().c_str());
-            }
-        }
+    render_strategies(job, device, spp, true, &runtime, [&](const StrategyImage& one) {
+        std::string name = "s" + std::to_string(one.s) + "_t" + std::to_string(one.t) + (one.unweighted ? "_unweighted" : "_weighted") + ".exr";
+        film::write_exr((fs::path(dir) / name).string(), one.image, one.metadata);
+        place(&sheet, one.image, (one.unweighted ? 0 : n * w) + one.s * w, (one.s + one.t - 2) * h);
+        if (!quiet) std::fprintf(stderr, "wrote %s\n", (fs::path(dir) / name).string().c_str());
+    });
     std::string contact = (fs::path(dir) / "contact_sheet.png").string();
     film::write_png(contact, sheet, film::ToneMap::Aces, 0.0f, film::ImageMetadata{});
     if (!quiet) std::fprintf(stderr, "wrote %s\n", contact.c_str());

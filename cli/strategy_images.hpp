@@ -2,7 +2,11 @@
 // visualize-strategies mode shows them (docs/bdpt.md).
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
+
+#include "film/image_output.hpp"
 
 #include "cli/render_job.hpp"
 
@@ -20,5 +24,20 @@ namespace lab::cli {
 void check_strategy_folder(const std::string& dir);
 
 void write_strategy_images(const RenderJob& job, const std::string& device, int spp, const std::string& dir, bool quiet);
+
+// One strategy's render: its contribution alone, weighted by its MIS weight or not.
+struct StrategyImage {
+    int s = 0, t = 0;
+    bool unweighted = false;
+    film::ImageRgb image;
+    film::ImageMetadata metadata;  // the job's, with the strategy
+};
+
+// Renders, `spp` samples each, every strategy (s, t) the job's integrator runs, by path length (s + t
+// vertices) and then s, the unweighted render before the weighted one where `unweighted` asks for
+// both, and hands each to `use` in turn. `runtime` keeps the OpenCL runtime from one render to the
+// next. Throws lab::InputError for the pt integrator.
+void render_strategies(const RenderJob& job, const std::string& device, int spp, bool unweighted, std::optional<opencl::Runtime>* runtime,
+                       const std::function<void(const StrategyImage&)>& use);
 
 }  // namespace lab::cli
