@@ -12,7 +12,7 @@ runs=${1:-1000000}
 harnesses=${*:-"preset scene environment cli_options"}
 build=build-fuzz
 cxx=$(command -v clang++-16 || command -v clang++ || true)
-[ -n "$cxx" ] || { echo "fuzz.sh: clang++-16 is needed (tools/install-deps.sh installs it)" >&2; exit 1; }
+[ -n "$cxx" ] || { echo "fuzz.sh: clang++-16 is needed (sh tools/install-deps.sh --fuzz installs it)" >&2; exit 1; }
 
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" -DDTOADQ_FUZZ=ON ${DTOADQ_FUZZ_CMAKE_ARGS:-} >/dev/null
 targets=""
