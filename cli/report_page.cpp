@@ -248,16 +248,9 @@ report::Section atlas_section(const std::vector<report::AtlasEntry>& entries, co
                       "Where each method fails: every entry charts one quantity over the parameters where methods break down, "
                       "with its finding in the first line of the caption.", {}};
     for (const report::AtlasEntry& e : entries) {
-        report::Table table;
-        table.header = {"method", "least", "± standard error", "at roughness", "at θ", "greatest", "± standard error", "at roughness", "at θ"};
-        for (const report::AtlasExtremes& x : e.extremes)
-            table.rows.push_back({text(x.panel), number(x.least, 4), x.least_error < 0.0 ? text("-") : number(x.least_error, 2),
-                                  number(x.least_roughness, 2), text(degrees(float(x.least_theta))), number(x.greatest, 4),
-                                  x.greatest_error < 0.0 ? text("-") : number(x.greatest_error, 2),
-                                  number(x.greatest_roughness, 2), text(degrees(float(x.greatest_theta)))});
         const std::string stem = fs::path(e.image).stem().string();
-        s.figures.push_back({e.image, e.title, e.finding + " " + e.how + " Every cell is in " + e.csv + ".",
-                             with_csv(std::move(table), folder, stem + "_table.csv")});
+        s.figures.push_back({e.image, e.title, e.finding + " " + e.how + " The chart's numbers are in " + e.csv + ".",
+                             with_csv(e.table, folder, stem + "_table.csv")});
     }
     return s;
 }
