@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "cli/options.hpp"
 #include "cli/render_job.hpp"
 #include "cli/report_groups.hpp"
+#include "report/atlas_geometry.hpp"
 #include "report/stability_atlas.hpp"
 #include "cli/report_page.hpp"
 #include "cli/report_study.hpp"
@@ -60,6 +62,7 @@ struct ReportOptions {
     std::vector<std::string> study_presets{"presets/glossy_plastic.json", "presets/brushed_aluminium.json"};
     std::vector<std::string> study_scenes{"scenes/cornell_box.json", "scenes/caustic.json"};
     std::string study_march_scene = "scenes/metaballs.json";  // empty: no sphere-tracing settings
+    std::string atlas_scene = "scenes/metaballs.json";        // the stability atlas's sphere-tracing entries march it
 };
 
 // What an interrupted report says it finished.
@@ -201,6 +204,8 @@ void run_report(const ReportOptions& o) {
         if (!o.study_march_scene.empty() && !fs::exists(o.study_march_scene))
             throw InputError(o.study_march_scene, "", "no such file (--study-march-scene; run from the repository root, or pass --study-march-scene)");
     }
+    if (!fs::exists(o.atlas_scene))
+        throw InputError(o.atlas_scene, "", "no such file (--atlas-scene; run from the repository root, or pass --atlas-scene)");
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec || !fs::is_directory(o.out)) throw InputError(o.out, "-o", "cannot create the report folder");
@@ -293,7 +298,11 @@ void run_report(const ReportOptions& o) {
     begin_stage("stability atlas");
     std::printf("report: stability atlas -> %s\n", (out / "atlas_energy.png").c_str());
     std::fflush(stdout);
-    const std::vector<report::AtlasEntry> atlas = report::write_stability_atlas(out);
+    // the BRDF entries run on one thread and wait on Python for their charts, the geometry entries
+    // march on every core: side by side they take little more than the longer of the two
+    std::future<std::vector<report::AtlasEntry>> geometry = std::async(std::launch::async, [&] { return report::write_geometry_atlas(out, o.atlas_scene); });
+    std::vector<report::AtlasEntry> atlas = report::write_stability_atlas(out);
+    for (report::AtlasEntry& e : geometry.get()) atlas.push_back(std::move(e));
     progress.finished.push_back("the stability atlas");
     end_stage("stability atlas");
     stop_if_interrupted(progress, presets);
@@ -366,6 +375,8 @@ void register_report(CLI::App& app) {
     cmd->add_option("--study-presets", options->study_presets, "Presets whose preview's light sampling the study compares")->capture_default_str();
     cmd->add_option("--study-scenes", options->study_scenes, "Scenes whose integrators the study compares")->capture_default_str();
     cmd->add_option("--study-march-scene", options->study_march_scene, "Scene whose sphere-tracing settings the study compares (empty: none)")
+        ->capture_default_str();
+    cmd->add_option("--atlas-scene", options->atlas_scene, "Scene of the stability atlas's sphere-tracing entries, beside a displaced sphere")
         ->capture_default_str();
     cmd->add_option("--device", options->device, "OpenCL device of the previews (dtoadq devices lists them)");
     cmd->callback([options] { run_report(*options); });
