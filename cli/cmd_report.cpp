@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -18,8 +19,10 @@
 #include "cli/options.hpp"
 #include "cli/render_job.hpp"
 #include "cli/report_groups.hpp"
+#include "report/atlas_geometry.hpp"
 #include "report/stability_atlas.hpp"
 #include "cli/report_page.hpp"
+#include "cli/report_strategies.hpp"
 #include "cli/report_study.hpp"
 #include "scene/load_scene.hpp"
 #include "common/input_error.hpp"
@@ -61,6 +64,7 @@ struct ReportOptions {
     std::vector<std::string> study_presets{"presets/glossy_plastic.json", "presets/brushed_aluminium.json"};
     std::vector<std::string> study_scenes{"scenes/cornell_box.json", "scenes/caustic.json"};
     std::string study_march_scene = "scenes/metaballs.json";  // empty: no sphere-tracing settings
+    std::string atlas_scene = "scenes/metaballs.json";        // the stability atlas's sphere-tracing entries march it
     // the atlas's integrator entry (cli/report_strategies.hpp): a caustic and a glossy scene
     bool strategies = true;
     std::vector<std::string> strategy_scenes{"scenes/caustic.json", "scenes/veach_mis.json"};
@@ -205,6 +209,8 @@ void run_report(const ReportOptions& o) {
         if (!o.study_march_scene.empty() && !fs::exists(o.study_march_scene))
             throw InputError(o.study_march_scene, "", "no such file (--study-march-scene; run from the repository root, or pass --study-march-scene)");
     }
+    if (!fs::exists(o.atlas_scene))
+        throw InputError(o.atlas_scene, "", "no such file (--atlas-scene; run from the repository root, or pass --atlas-scene)");
     for (const std::string& f : o.strategies ? o.strategy_scenes : std::vector<std::string>{}) {
         if (!fs::exists(f)) throw InputError(f, "", "no such file (--strategy-scenes; run from the repository root, or pass --strategy-scenes)");
         if (!scene::has_own_light(scene::load_scene(f)))
@@ -302,14 +308,17 @@ void run_report(const ReportOptions& o) {
     begin_stage("stability atlas");
     std::printf("report: stability atlas -> %s\n", (out / "atlas_energy.png").c_str());
     std::fflush(stdout);
-    const std::vector<report::AtlasEntry> atlas = report::write_stability_atlas(out);
-    std::optional<StrategyAtlas> strategies;
+    // the BRDF entries run on one thread and wait on Python for their charts, the geometry entries
+    // march on every core: side by side they take little more than the longer of the two
+    std::future<std::vector<report::AtlasEntry>> geometry = std::async(std::launch::async, [&] { return report::write_geometry_atlas(out, o.atlas_scene); });
+    std::vector<report::AtlasEntry> atlas = report::write_stability_atlas(out);
+    for (report::AtlasEntry& e : geometry.get()) atlas.push_back(std::move(e));
     if (o.strategies) {
         StrategyAtlasOptions strategy_options;
         strategy_options.scenes = o.strategy_scenes;
         strategy_options.spp = o.full ? 128 : 16;
         strategy_options.device = o.device;
-        strategies = write_strategy_atlas(strategy_options, out, &device);
+        atlas.push_back(strategy_atlas_entry(write_strategy_atlas(strategy_options, out, &device)));
     }
     progress.finished.push_back("the stability atlas");
     end_stage("stability atlas");
@@ -341,7 +350,7 @@ void run_report(const ReportOptions& o) {
     page.sections.push_back(validation_section(results, options, out));
     if (scene) page.sections.push_back(scene_section(*scene, out));
     if (o.study) page.sections.push_back(speed_section(study, budget, o.study_size, out));
-    page.sections.push_back(atlas_section(atlas, strategies ? &*strategies : nullptr, out));
+    page.sections.push_back(atlas_section(atlas, out));
     page.sections.push_back(machine_section(device, stage_seconds, out));
     report::write_page(page, (out / "index.html").string());
     std::printf("report: wrote %s\n", (out / "index.html").c_str());
@@ -387,6 +396,8 @@ void register_report(CLI::App& app) {
         ->capture_default_str();
     cmd->add_flag("!--no-strategies", options->strategies, "Leave the stability atlas's map of BDPT's strategies out");
     cmd->add_option("--study-march-scene", options->study_march_scene, "Scene whose sphere-tracing settings the study compares (empty: none)")
+        ->capture_default_str();
+    cmd->add_option("--atlas-scene", options->atlas_scene, "Scene of the stability atlas's sphere-tracing entries, beside a displaced sphere")
         ->capture_default_str();
     cmd->add_option("--device", options->device, "OpenCL device of the previews (dtoadq devices lists them)");
     cmd->callback([options] { run_report(*options); });

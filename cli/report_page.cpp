@@ -243,64 +243,15 @@ report::Section speed_section(const StudyResults& study, const StudyBudget& budg
     return s;
 }
 
-namespace {
-
-// The integrator entry: per scene, each group of BDPT's strategies with its share of the light, the
-// share of lit pixels where it carries under a tenth of theirs, and its strongest strategy.
-report::Figure strategy_figure(const StrategyAtlas& atlas, const fs::path& folder) {
-    report::Table table;
-    table.header = {"scene", "strategies", "share of the light", "lit pixels where under 10 %", "strongest strategy (s, t)", "its share"};
-    std::string finding;
-    for (const StrategyAtlasScene& scene : atlas.scenes) {
-        const report::StrategyShares& shares = scene.shares;
-        for (int g = 0; g < report::kStrategyGroups; ++g) {
-            const report::StrategyLight* strongest = nullptr;
-            for (const report::StrategyLight& s : shares.strategies)
-                if (int(report::strategy_group(s.s, s.t)) == g && (!strongest || s.share > strongest->share)) strongest = &s;
-            table.rows.push_back({text(scene.scene), text(report::strategy_group_name(report::StrategyGroup(g))), number(shares.light[size_t(g)], 3),
-                                  number(shares.minor_pixels[size_t(g)], 3),
-                                  text(strongest ? "(" + std::to_string(strongest->s) + ", " + std::to_string(strongest->t) + ")" : "-"),
-                                  strongest ? number(strongest->share, 3) : text("-")});
-        }
-        auto percent = [](double f) { return report::number_text(100.0 * f, 2) + " %"; };
-        const size_t pt = size_t(report::StrategyGroup::path_tracer), lt = size_t(report::StrategyGroup::light_tracer),
-                     connection = size_t(report::StrategyGroup::connection);
-        finding += "On " + scene.scene + " the path tracer's strategies carry " + percent(shares.light[pt]) + " of the light, light tracing's " +
-                   percent(shares.light[lt]) + " and connections " + percent(shares.light[connection]) + "; the path tracer's carry under a tenth in " +
-                   percent(shares.minor_pixels[pt]) + " of the lit pixels, light tracing's in " + percent(shares.minor_pixels[lt]) + ". ";
-    }
-    const StrategyAtlasOptions& o = atlas.options;
-    const std::string how =
-        "Where each integrator fails: BDPT (max depth " + std::to_string(o.max_depth) + ", " + o.size + ") renders each of its strategies alone, " +
-        std::to_string(o.spp) + " samples per pixel each, weighted by its MIS weight with the balance heuristic, which is the strategy's sampling "
-        "density over the sum of every strategy's for the same path; the weighted renders sum to the BDPT image. Each pixel of a map shows the "
-        "share of its luminance that each group carries, and so the share of the sampling density it has there: red, light tracing's strategies "
-        "(t = 1, what lt renders); green, connections of two subpaths of two or more vertices, which only BDPT makes; blue, the path tracer's "
-        "(s ≤ 1, what pt renders). Where a group carries under a tenth, the others sample that light at least nine times as densely: that is "
-        "where its integrator alone fails. Unlit pixels (under 1 % of the image's mean) are black. Every strategy's share is in " + atlas.csv + ".";
-    return {atlas.image, "each scene's BDPT image beside the map of which strategies carry its light", finding + how,
-            with_csv(std::move(table), folder, "atlas_strategies_table.csv")};
-}
-
-}  // namespace
-
-report::Section atlas_section(const std::vector<report::AtlasEntry>& entries, const StrategyAtlas* strategies, const fs::path& folder) {
+report::Section atlas_section(const std::vector<report::AtlasEntry>& entries, const fs::path& folder) {
     report::Section s{"atlas", "Stability atlas",
                       "Where each method fails: every entry charts one quantity over the parameters where methods break down, "
                       "with its finding in the first line of the caption.", {}};
     for (const report::AtlasEntry& e : entries) {
-        report::Table table;
-        table.header = {"method", "least", "± standard error", "at roughness", "at θ", "greatest", "± standard error", "at roughness", "at θ"};
-        for (const report::AtlasExtremes& x : e.extremes)
-            table.rows.push_back({text(x.panel), number(x.least, 4), x.least_error < 0.0 ? text("-") : number(x.least_error, 2),
-                                  number(x.least_roughness, 2), text(degrees(float(x.least_theta))), number(x.greatest, 4),
-                                  x.greatest_error < 0.0 ? text("-") : number(x.greatest_error, 2),
-                                  number(x.greatest_roughness, 2), text(degrees(float(x.greatest_theta)))});
         const std::string stem = fs::path(e.image).stem().string();
-        s.figures.push_back({e.image, e.title, e.finding + " " + e.how + " Every cell is in " + e.csv + ".",
-                             with_csv(std::move(table), folder, stem + "_table.csv")});
+        s.figures.push_back({e.image, e.title, e.finding + " " + e.how + " The chart's numbers are in " + e.csv + ".",
+                             with_csv(e.table, folder, stem + "_table.csv")});
     }
-    if (strategies) s.figures.push_back(strategy_figure(*strategies, folder));
     return s;
 }
 

@@ -11,7 +11,6 @@
 #include "analysis/albedo_curve.hpp"
 #include "analysis/lobe_data.hpp"
 #include "report/stability_atlas.hpp"
-#include "cli/report_strategies.hpp"
 #include "cli/report_study.hpp"
 #include "brdf/host/preset.hpp"
 #include "render/renderer.hpp"
@@ -58,8 +57,7 @@ report::Section scene_section(const ReportScene& scene, const std::filesystem::p
 // The speed-against-accuracy study: a chart per preset or scene, with the runs' figures; writes their tables' CSV.
 report::Section speed_section(const StudyResults& study, const StudyBudget& budget, const std::string& size, const std::filesystem::path& folder);
 // The stability atlas: an entry per chart, its finding first; writes its tables' CSV.
-// `strategies`: the integrator entry, after the others; null: none.
-report::Section atlas_section(const std::vector<report::AtlasEntry>& entries, const StrategyAtlas* strategies, const std::filesystem::path& folder);
+report::Section atlas_section(const std::vector<report::AtlasEntry>& entries, const std::filesystem::path& folder);
 // The device the renders ran on, the build, the date, and the seconds each stage took.
 report::Section machine_section(const std::string& device, const std::vector<std::pair<std::string, double>>& stage_seconds,
                                 const std::filesystem::path& folder);

@@ -53,4 +53,42 @@ StrategyAtlas write_strategy_atlas(const StrategyAtlasOptions& options, const fs
     return atlas;
 }
 
+report::AtlasEntry strategy_atlas_entry(const StrategyAtlas& atlas) {
+    auto text = [](std::string t) { return report::Cell{std::move(t), report::CellKind::text}; };
+    auto number = [](double v) { return report::Cell{report::number_text(v, 3), report::CellKind::number}; };
+    auto percent = [](double f) { return report::number_text(100.0 * f, 2) + " %"; };
+    report::AtlasEntry e;
+    e.title = "each scene's BDPT image beside the map of which strategies carry its light";
+    e.image = atlas.image;
+    e.csv = atlas.csv;
+    e.table.header = {"scene", "strategies", "share of the light", "lit pixels where under 10 %", "strongest strategy (s, t)", "its share"};
+    for (const StrategyAtlasScene& scene : atlas.scenes) {
+        const report::StrategyShares& shares = scene.shares;
+        for (int g = 0; g < report::kStrategyGroups; ++g) {
+            const report::StrategyLight* strongest = nullptr;
+            for (const report::StrategyLight& s : shares.strategies)
+                if (int(report::strategy_group(s.s, s.t)) == g && (!strongest || s.share > strongest->share)) strongest = &s;
+            e.table.rows.push_back({text(scene.scene), text(report::strategy_group_name(report::StrategyGroup(g))), number(shares.light[size_t(g)]),
+                                    number(shares.minor_pixels[size_t(g)]),
+                                    text(strongest ? "(" + std::to_string(strongest->s) + ", " + std::to_string(strongest->t) + ")" : "-"),
+                                    strongest ? number(strongest->share) : text("-")});
+        }
+        const size_t pt = size_t(report::StrategyGroup::path_tracer), lt = size_t(report::StrategyGroup::light_tracer),
+                     connection = size_t(report::StrategyGroup::connection);
+        e.finding += "On " + scene.scene + " the path tracer's strategies carry " + percent(shares.light[pt]) + " of the light, light tracing's " +
+                     percent(shares.light[lt]) + " and connections " + percent(shares.light[connection]) + "; the path tracer's carry under a tenth in " +
+                     percent(shares.minor_pixels[pt]) + " of the lit pixels, light tracing's in " + percent(shares.minor_pixels[lt]) + ".";
+        if (&scene != &atlas.scenes.back()) e.finding += " ";
+    }
+    const StrategyAtlasOptions& o = atlas.options;
+    e.how = "Where each integrator fails: BDPT (max depth " + std::to_string(o.max_depth) + ", " + o.size + ") renders each of its strategies alone, " +
+            std::to_string(o.spp) + " samples per pixel each, weighted by its MIS weight with the balance heuristic, which is the strategy's sampling "
+            "density over the sum of every strategy's for the same path; the weighted renders sum to the BDPT image. Each pixel of a map shows the "
+            "share of its luminance that each group carries, and so the share of the sampling density it has there: red, light tracing's strategies "
+            "(t = 1, what lt renders); green, connections of two subpaths of two or more vertices, which only BDPT makes; blue, the path tracer's "
+            "(s ≤ 1, what pt renders). Where a group carries under a tenth, the others sample that light at least nine times as densely: that is "
+            "where its integrator alone fails. Unlit pixels (under 1 % of the image's mean) are black.";
+    return e;
+}
+
 }  // namespace lab::cli

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "report/stability_atlas.hpp"
 #include "report/strategy_shares.hpp"
 
 namespace lab::cli {
@@ -35,5 +36,9 @@ struct StrategyAtlas {
 // *device: the device's description. Throws lab::InputError for a scene that cannot be loaded (the
 // report checks beforehand that each has a light of its own: without, BDPT's image is black).
 StrategyAtlas write_strategy_atlas(const StrategyAtlasOptions& options, const std::filesystem::path& folder, std::string* device);
+
+// The atlas entry: the sheet, each group's share of the light per scene, where it carries under a
+// tenth, its strongest strategy, and the finding in numbers.
+report::AtlasEntry strategy_atlas_entry(const StrategyAtlas& atlas);
 
 }  // namespace lab::cli

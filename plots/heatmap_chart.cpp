@@ -13,8 +13,11 @@ namespace lab::plots {
 
 void write_heatmap_chart(const std::vector<HeatmapPanel>& panels, const std::vector<double>& x, const std::vector<double>& y,
                          const std::string& x_label, const std::string& y_label, const std::string& value_label, double centre,
-                         const std::string& title, const std::string& png_path, const std::string& csv_path) {
+                         const std::string& title, const std::string& png_path, const std::string& csv_path, bool log_x) {
     if (panels.empty() || x.empty() || y.empty()) throw std::invalid_argument("heat map chart: no panels, or an empty axis");
+    if (log_x)
+        for (double v : x)
+            if (!(v > 0.0)) throw std::invalid_argument("heat map chart: x = " + std::to_string(v) + " on a logarithmic axis");
     for (const HeatmapPanel& p : panels) {
         if (p.values.size() != x.size() * y.size())
             throw std::invalid_argument("heat map chart: panel \"" + p.title + "\" holds " + std::to_string(p.values.size()) + " values, not " +
@@ -41,10 +44,10 @@ void write_heatmap_chart(const std::vector<HeatmapPanel>& panels, const std::vec
     }
     char centre_text[32];
     std::snprintf(centre_text, sizeof centre_text, "%.7g", centre);
-    run_plot_script("heatmap_chart.py",
-                    {"--data", csv.string(), "--out", png.string(), "--title=" + title, "--x-label=" + x_label, "--y-label=" + y_label,
-                     "--value-label=" + value_label, "--centre", centre_text},
-                    folder.path());
+    std::vector<std::string> arguments = {"--data", csv.string(), "--out", png.string(), "--title=" + title, "--x-label=" + x_label,
+                                          "--y-label=" + y_label, "--value-label=" + value_label, "--centre", centre_text};
+    if (log_x) arguments.push_back("--log-x");
+    run_plot_script("heatmap_chart.py", arguments, folder.path());
     if (!csv_path.empty()) install_output(csv, csv_path, "");
     install_output(png, png_path, "");
 }

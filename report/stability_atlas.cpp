@@ -36,6 +36,27 @@ brdf::Material atlas_white_conductor(int model, float roughness, bool compensate
 
 namespace {
 
+// One panel's extremes: its least and greatest value and where they lie.
+struct AtlasExtremes {
+    std::string panel;
+    double least = 0.0, greatest = 0.0;
+    double least_roughness = 0.0, least_theta = 0.0, greatest_roughness = 0.0, greatest_theta = 0.0;
+    double least_error = -1.0, greatest_error = -1.0;  // the standard errors of those two estimates; < 0: none (not an estimate)
+};
+
+// The entry's table: each panel's extremes, with their standard errors, roughness and angle.
+Table extremes_table(const std::vector<AtlasExtremes>& extremes) {
+    auto number = [](double value, int digits) { return Cell{number_text(value, digits), CellKind::number}; };
+    auto error = [&](double se) { return se < 0.0 ? Cell{"-", CellKind::text} : number(se, 2); };
+    auto degrees = [](double deg) { return Cell{number_text(deg, 3) + "°", CellKind::text}; };
+    Table table;
+    table.header = {"method", "least", "± standard error", "at roughness", "at θ", "greatest", "± standard error", "at roughness", "at θ"};
+    for (const AtlasExtremes& x : extremes)
+        table.rows.push_back({{x.panel, CellKind::text}, number(x.least, 4), error(x.least_error), number(x.least_roughness, 2), degrees(x.least_theta),
+                              number(x.greatest, 4), error(x.greatest_error), number(x.greatest_roughness, 2), degrees(x.greatest_theta)});
+    return table;
+}
+
 constexpr int kStrata = 32;  // 1024 importance samples per estimate: a standard error of a few 1e-3
 
 std::string percent(double fraction) { return number_text(100.0 * fraction, 3) + " %"; }
@@ -95,6 +116,7 @@ AtlasEntry energy_entry(const fs::path& folder) {
     theta.push_back(88.0);
     const std::vector<Method>& methods = white_conductors();
     AtlasEntry entry;
+    std::vector<AtlasExtremes> extremes;
     entry.title = "Energy: directional albedo of a white conductor over roughness and incident angle";
     std::vector<plots::HeatmapPanel> panels;
     for (const Method& method : methods) {
@@ -106,14 +128,14 @@ AtlasEntry energy_entry(const fs::path& folder) {
                                    return std::max({double(a.value.x), double(a.value.y), double(a.value.z)});
                                },
                                &e));
-        entry.extremes.push_back(e);
+        extremes.push_back(e);
     }
     entry.image = "atlas_energy.png";
     entry.csv = "atlas_energy.csv";
     plots::write_heatmap_chart(panels, roughness, theta, "roughness", "incident angle θ (degrees)", "directional albedo (1: energy kept)", 1.0,
                                "White conductor: where energy is lost (blue) or created (red)", (folder / entry.image).string(),
                                (folder / entry.csv).string());
-    const AtlasExtremes &single = entry.extremes[0], &compensated = entry.extremes[1], &old = entry.extremes[2];
+    const AtlasExtremes &single = extremes[0], &compensated = extremes[1], &old = extremes[2];
     char finding[512];
     std::snprintf(finding, sizeof finding,
                   "Single scattering loses up to %s of the light (roughness %.2g, θ %.0f°); energy compensation keeps the albedo within "
@@ -127,6 +149,7 @@ AtlasEntry energy_entry(const fs::path& folder) {
                 "incident angle, estimated with the BSDF's own sampler on a stratified grid of " + std::to_string(kStrata * kStrata) +
                 " samples; the table gives each extreme's standard error. The colour scale diverges at 1: blue is energy lost, red energy "
                 "created.";
+    entry.table = extremes_table(extremes);
     return entry;
 }
 
@@ -146,6 +169,7 @@ AtlasEntry sampler_entry(const fs::path& folder) {
         return validation::sampling_efficiency(m, wo, kSamples);
     };
     AtlasEntry entry;
+    std::vector<AtlasExtremes> extremes;
     entry.title = "Samplers: how much each glossy lobe's sampler beats cosine sampling, over roughness and incident angle";
     std::vector<plots::HeatmapPanel> panels;
     std::string below;
@@ -170,7 +194,7 @@ AtlasEntry sampler_entry(const fs::path& folder) {
                       below.empty() ? "" : "; ", method.name.c_str(), cells_below, roughness.size() * theta.size(), std::pow(10.0, e.least),
                       e.least_roughness, e.least_theta, 100.0 * failed);
         below += line;
-        entry.extremes.push_back(e);
+        extremes.push_back(e);
     }
     entry.image = "atlas_samplers.png";
     entry.csv = "atlas_samplers.csv";
@@ -185,6 +209,7 @@ AtlasEntry sampler_entry(const fs::path& folder) {
                 "that follows a narrow lobe exactly has no variance at all); the table's extremes are in log10 too. "
                 "A draw that fails (a reflection below the horizon) adds 0, so a sampler that loses many of its draws "
                 "at high roughness loses to cosine sampling however well it follows the lobe's peak.";
+    entry.table = extremes_table(extremes);
     return entry;
 }
 
@@ -198,6 +223,7 @@ AtlasEntry reciprocity_entry(const fs::path& folder) {
     constexpr double kFloor = 1e-9;      // below float's resolution: shown as equal
     const std::vector<Method>& methods = white_conductors();
     AtlasEntry entry;
+    std::vector<AtlasExtremes> extremes;
     entry.title = "Reciprocity: the largest relative difference between f(wo, wi) and f(wi, wo), over roughness and angle";
     std::vector<plots::HeatmapPanel> panels;
     std::string over;
@@ -221,7 +247,7 @@ AtlasEntry reciprocity_entry(const fs::path& folder) {
                       method.name.c_str(), cells_over, roughness.size() * theta.size(), std::pow(10.0, e.greatest), e.greatest_roughness,
                       e.greatest_theta);
         over += line;
-        entry.extremes.push_back(e);
+        extremes.push_back(e);
     }
     entry.image = "atlas_reciprocity.png";
     entry.csv = "atlas_reciprocity.csv";
@@ -233,6 +259,7 @@ AtlasEntry reciprocity_entry(const fs::path& folder) {
                 " directions wi drawn uniformly over the upper hemisphere, between f(wo, wi) and f(wi, wo) for a white conductor of that "
                 "roughness with wo at that angle; differences below 1e-9 show as 1e-9. The scale diverges at the tolerance; the table's "
                 "extremes are in log10 too.";
+    entry.table = extremes_table(extremes);
     return entry;
 }
 

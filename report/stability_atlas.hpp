@@ -1,7 +1,9 @@
-// The stability atlas of `dtoadq report`: where each method fails, as charts with a one-line finding each.
-// The BRDF models' energy: the directional albedo of a white conductor over roughness and incident
-// angle for the lab model with single scattering only, with energy compensation, and for the 2017
-// model, where a value below 1 is energy lost and above 1 energy created.
+// The stability atlas of `dtoadq report`: where each method fails, as charts with a one-line finding
+// each. Here an entry, and the BRDF models' entries over roughness and incident angle: the energy
+// (the directional albedo of a white conductor for the lab model with single scattering only, with
+// energy compensation, and for the 2017 model, where a value below 1 is energy lost and above 1
+// energy created), the samplers against cosine sampling, and reciprocity. The geometry entries are
+// report/atlas_geometry.hpp's.
 #pragma once
 
 #include <filesystem>
@@ -9,23 +11,16 @@
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "report/html_page.hpp"
 
 namespace lab::report {
-
-// One panel's extremes: its least and greatest value and where they lie.
-struct AtlasExtremes {
-    std::string panel;
-    double least = 0.0, greatest = 0.0;
-    double least_roughness = 0.0, least_theta = 0.0, greatest_roughness = 0.0, greatest_theta = 0.0;
-    double least_error = -1.0, greatest_error = -1.0;  // the standard errors of those two estimates; < 0: none (not an estimate)
-};
 
 struct AtlasEntry {
     std::string title;
     std::string image, csv;  // in the report folder
     std::string finding;     // one line
     std::string how;         // how it was measured
-    std::vector<AtlasExtremes> extremes;
+    Table table;             // its numbers beside the chart; the page writes its CSV
 };
 
 // The atlas's test material: a white conductor (F0 = 1, albedo 1; GGX, isotropic) of the given

@@ -39,5 +39,16 @@ TEST_CASE("the heat-map chart refuses no panels, an empty axis, a panel of the w
     CHECK_THROWS_AS(chart({{"a", {}}}, {}), std::invalid_argument);
     CHECK_THROWS_AS(chart({{"a", {1.0}}}, {1.0, 2.0}), std::invalid_argument);
     CHECK_THROWS_AS(chart({{"a", {nan}}}, {1.0}), std::invalid_argument);
+    CHECK_THROWS_AS(lab::plots::write_heatmap_chart({{"a", {1.0, 2.0}}}, {0.0, 1.0}, {0.0}, "x", "y", "v", 1.0, "t", png, "", true),
+                    std::invalid_argument);  // x = 0 on a logarithmic axis
     CHECK_FALSE(fs::exists(png));
+}
+
+TEST_CASE("the heat-map chart draws a logarithmic x axis, and a quantity on one side of its centre", "[film][python]") {
+    lab::plots::TempFolder folder;
+    const fs::path png = folder.path() / "heat.png";
+    // rays lost, 0 at best: nothing below the centre
+    lab::plots::write_heatmap_chart({{"lost", {0.0, 50.0, 0.0, 10.0, 0.0, 0.0}}}, {0.3, 1.0, 3.0}, {1.0, 1.5}, "factor", "omega", "lost (%)", 0.0,
+                                    "t", png.string(), "", true);
+    CHECK(is_png_larger_than(png, 10000u));
 }

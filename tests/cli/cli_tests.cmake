@@ -211,7 +211,7 @@ cli_output_test(albedo.writes_png_and_csv 46 albedo.png albedo.csv
 # short budgets and the stability atlas, with their charts; every preset of presets/ would add a
 # preview's kernel build and a validation each and show nothing new
 cli_output_test(report.writes_everything 138
-                report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png|report/speed_preview_glossy_plastic.png|report/speed_scene_caustic.png|report/speed_march_metaballs.png|report/atlas_energy.png|report/atlas_reciprocity.png|report/atlas_strategies.png
+                report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png|report/speed_preview_glossy_plastic.png|report/speed_scene_caustic.png|report/speed_march_metaballs.png|report/atlas_energy.png|report/atlas_reciprocity.png|report/atlas_march_lost.png|report/atlas_march_steps.png|report/atlas_precision.png|report/atlas_strategies.png
                 report/albedo.csv
                 SETUP ${PROJECT_SOURCE_DIR}/presets/gold.json=presets/gold.json ${PROJECT_SOURCE_DIR}/presets/glossy_plastic.json=presets/glossy_plastic.json
                       ${PROJECT_SOURCE_DIR}/presets/dtoadq2017_typical.json=presets/dtoadq2017_typical.json
@@ -221,7 +221,8 @@ cli_output_test(report.writes_everything 138
                 --study-seconds 0.2 --study-reference-seconds 0.6 --study-size 48x48
                 --study-presets ${PROJECT_SOURCE_DIR}/presets/glossy_plastic.json
                 --study-scenes ${PROJECT_SOURCE_DIR}/scenes/caustic.json --study-march-scene ${PROJECT_SOURCE_DIR}/scenes/metaballs.json
-                --strategy-scenes ${PROJECT_SOURCE_DIR}/scenes/caustic.json)
+                --strategy-scenes ${PROJECT_SOURCE_DIR}/scenes/caustic.json
+                --atlas-scene ${PROJECT_SOURCE_DIR}/scenes/metaballs.json)
 set_tests_properties(cli.report.writes_everything PROPERTIES FIXTURES_SETUP report_page)
 # its index.html: valid, self-contained, every image and link there, and shown by a browser
 add_test(NAME cli.report.page_opens_in_a_browser
@@ -240,6 +241,8 @@ cli_bad_input(NAME report.missing_study_scene EXPECT "${E}tests/cli/nope\\.json:
 cli_bad_input(NAME report.strategy_scene_without_light
               EXPECT "${E}scenes/repetition\\.json: --strategy-scenes: has no light of its own: the strategy atlas renders a scene under its own lights$"
               ARGS report --strategy-scenes scenes/repetition.json -o ${CLI_SCRATCH}/report_strategy_scene)
+cli_bad_input(NAME report.missing_atlas_scene EXPECT "${E}tests/cli/nope\\.json: no such file \\(--atlas-scene; .*"
+              ARGS report --atlas-scene tests/cli/nope.json -o ${CLI_SCRATCH}/report_atlas_scene)
 cli_bad_input(NAME report.no_preset_folder EXPECT "${E}tests/cli/nope: --presets: not a folder of presets .*"
               ARGS report --presets tests/cli/nope -o ${CLI_SCRATCH}/report_none)
 cli_bad_input(NAME report.bad_preset_in_folder EXPECT "${E}${D}/[a-z_]+\\.json: [a-z_]+: "
@@ -440,12 +443,14 @@ cli_interrupt_test(NAME report.ctrl_c_between_presets TRIGGER "report: preview o
                    EXRS report/preview_copper.exr MIN_SPP 16 MAX_SPP 16 ABSENT report/preview_gold.exr report/index.html
                    EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart, the preview of copper \\(2 presets in all\\)"
                    ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json -o report --samples 20000 --theta-in 30 --no-study --no-strategies
+                        --atlas-scene ${SRC}/scenes/metaballs.json
                         --preview-spp 16 --preview-size 32x32)
 # Ctrl-C during a preview of a report: that preview is written with the samples it holds.
 cli_interrupt_test(NAME report.ctrl_c_during_preview TRIGGER "report: preview of copper" DELAY 4 ${REPORT_PRESETS}
                    EXRS report/preview_copper.exr MIN_SPP 1 MAX_SPP 999999 ABSENT report/preview_gold.exr report/index.html
                    EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart; cut short: the preview of copper \\([0-9]+ of 1000000 samples per pixel, written\\)"
                    ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json -o report --samples 20000 --theta-in 30 --no-study --no-strategies
+                        --atlas-scene ${SRC}/scenes/metaballs.json
                         --preview-spp 1000000 --preview-size 32x32)
 
 # --- validate: a physical failure is a non-zero exit (1), a pass is 0 -----------------------------
