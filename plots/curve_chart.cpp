@@ -26,27 +26,16 @@ void write_curve_chart(const std::vector<Curve>& curves, const std::string& x_la
                 if (!(v > 0.0) || !std::isfinite(v))
                     throw std::invalid_argument("curve chart: curve \"" + c.name + "\" holds " + std::to_string(v) + ", not finite and > 0 (log axes)");
     }
-    require_writable(png_path, "");
-    if (!csv_path.empty()) require_writable(csv_path, "");
-    TempFolder folder;
-    const std::filesystem::path csv = folder.path() / "curves.csv";
-    const std::filesystem::path png = folder.path() / "curves.png";
-    {
-        std::ofstream out = open_output(csv.string(), "");
-        out << "curve,kind,x,y\n";
-        char row[80];
-        for (const Curve& c : curves)
-            for (size_t i = 0; i < c.x.size(); ++i) {
-                std::snprintf(row, sizeof row, ",%s,%.7g,%.7g\n", c.reference ? "reference" : "measured", c.x[i], c.y[i]);
-                out << csv_field(c.name) << row;
-            }
-        if (!out.flush()) throw InputError(csv.string(), "", "write failed");
-    }
-    run_plot_script("curve_chart.py",
-                    {"--data", csv.string(), "--out", png.string(), "--title=" + title, "--x-label=" + x_label, "--y-label=" + y_label},
-                    folder.path());
-    if (!csv_path.empty()) install_output(csv, csv_path, "");
-    install_output(png, png_path, "");
+    draw_chart("curve_chart.py", "curve,kind,x,y",
+               [&](std::ostream& out) {
+                   char row[80];
+                   for (const Curve& c : curves)
+                       for (size_t i = 0; i < c.x.size(); ++i) {
+                           std::snprintf(row, sizeof row, ",%s,%.7g,%.7g\n", c.reference ? "reference" : "measured", c.x[i], c.y[i]);
+                           out << csv_field(c.name) << row;
+                       }
+               },
+               {"--title=" + title, "--x-label=" + x_label, "--y-label=" + y_label}, png_path, csv_path);
 }
 
 }  // namespace lab::plots

@@ -25,31 +25,22 @@ void write_heatmap_chart(const std::vector<HeatmapPanel>& panels, const std::vec
         for (double v : p.values)
             if (!std::isfinite(v)) throw std::invalid_argument("heat map chart: panel \"" + p.title + "\" holds a value that is not finite");
     }
-    require_writable(png_path, "");
-    if (!csv_path.empty()) require_writable(csv_path, "");
-    TempFolder folder;
-    const std::filesystem::path csv = folder.path() / "heatmap.csv";
-    const std::filesystem::path png = folder.path() / "heatmap.png";
-    {
-        std::ofstream out = open_output(csv.string(), "");
-        out << "panel,x,y,value\n";
-        char row[96];
-        for (const HeatmapPanel& p : panels)
-            for (size_t i = 0; i < x.size(); ++i)
-                for (size_t j = 0; j < y.size(); ++j) {
-                    std::snprintf(row, sizeof row, ",%.7g,%.7g,%.7g\n", x[i], y[j], p.values[i * y.size() + j]);
-                    out << csv_field(p.title) << row;
-                }
-        if (!out.flush()) throw InputError(csv.string(), "", "write failed");
-    }
     char centre_text[32];
     std::snprintf(centre_text, sizeof centre_text, "%.7g", centre);
-    std::vector<std::string> arguments = {"--data", csv.string(), "--out", png.string(), "--title=" + title, "--x-label=" + x_label,
-                                          "--y-label=" + y_label, "--value-label=" + value_label, "--centre", centre_text};
+    std::vector<std::string> arguments = {"--title=" + title, "--x-label=" + x_label, "--y-label=" + y_label, "--value-label=" + value_label,
+                                          "--centre", centre_text};
     if (log_x) arguments.push_back("--log-x");
-    run_plot_script("heatmap_chart.py", arguments, folder.path());
-    if (!csv_path.empty()) install_output(csv, csv_path, "");
-    install_output(png, png_path, "");
+    draw_chart("heatmap_chart.py", "panel,x,y,value",
+               [&](std::ostream& out) {
+                   char row[96];
+                   for (const HeatmapPanel& p : panels)
+                       for (size_t i = 0; i < x.size(); ++i)
+                           for (size_t j = 0; j < y.size(); ++j) {
+                               std::snprintf(row, sizeof row, ",%.7g,%.7g,%.7g\n", x[i], y[j], p.values[i * y.size() + j]);
+                               out << csv_field(p.title) << row;
+                           }
+               },
+               arguments, png_path, csv_path);
 }
 
 }  // namespace lab::plots

@@ -12,6 +12,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "common/input_error.hpp"
+#include "plots/output_file.hpp"
+
 extern char** environ;
 
 namespace lab::plots {
@@ -110,6 +113,26 @@ void run_plot_script(const std::string& script, const std::vector<std::string>& 
     int status = run_process(argv, log.string());
     if (status != 0)
         throw std::runtime_error(script + " (" + python + ") failed with status " + std::to_string(status) + ": " + last_line(log));
+}
+
+void draw_chart(const std::string& script, const std::string& header, const std::function<void(std::ostream&)>& write_rows,
+                const std::vector<std::string>& args, const std::string& png_path, const std::string& csv_path) {
+    require_writable(png_path, "");
+    if (!csv_path.empty()) require_writable(csv_path, "");
+    TempFolder folder;
+    const std::filesystem::path csv = folder.path() / "chart.csv";
+    const std::filesystem::path png = folder.path() / "chart.png";
+    {
+        std::ofstream out = open_output(csv.string(), "");
+        out << header << "\n";
+        write_rows(out);
+        if (!out.flush()) throw InputError(csv.string(), "", "write failed");
+    }
+    std::vector<std::string> arguments = {"--data", csv.string(), "--out", png.string()};
+    arguments.insert(arguments.end(), args.begin(), args.end());
+    run_plot_script(script, arguments, folder.path());
+    if (!csv_path.empty()) install_output(csv, csv_path, "");
+    install_output(png, png_path, "");
 }
 
 }  // namespace lab::plots

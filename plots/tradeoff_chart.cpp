@@ -19,28 +19,17 @@ void write_tradeoff_chart(const std::vector<TradeoffPoint>& points, double noise
             throw std::invalid_argument("trade-off chart: point \"" + p.name + "\": time " + std::to_string(p.seconds) + " s, error " +
                                         std::to_string(p.error));
     if (!(noise_level >= 0.0) || !std::isfinite(noise_level)) throw std::invalid_argument("trade-off chart: noise level not finite and >= 0");
-    require_writable(png_path, "");
-    if (!csv_path.empty()) require_writable(csv_path, "");
-    TempFolder folder;
-    const std::filesystem::path csv = folder.path() / "tradeoff.csv";
-    const std::filesystem::path png = folder.path() / "tradeoff.png";
-    {
-        std::ofstream out = open_output(csv.string(), "");
-        out << "setting,seconds,error\n";
-        char row[64];
-        for (const TradeoffPoint& p : points) {
-            std::snprintf(row, sizeof row, ",%.7g,%.7g\n", p.seconds, p.error);
-            out << csv_field(p.name) << row;
-        }
-        if (!out.flush()) throw InputError(csv.string(), "", "write failed");
-    }
     char noise[32];
     std::snprintf(noise, sizeof noise, "%.7g", noise_level);
-    run_plot_script("tradeoff_chart.py",
-                    {"--data", csv.string(), "--out", png.string(), "--title=" + title, "--error-label=" + error_label, "--noise", noise},
-                    folder.path());
-    if (!csv_path.empty()) install_output(csv, csv_path, "");
-    install_output(png, png_path, "");
+    draw_chart("tradeoff_chart.py", "setting,seconds,error",
+               [&](std::ostream& out) {
+                   char row[64];
+                   for (const TradeoffPoint& p : points) {
+                       std::snprintf(row, sizeof row, ",%.7g,%.7g\n", p.seconds, p.error);
+                       out << csv_field(p.name) << row;
+                   }
+               },
+               {"--title=" + title, "--error-label=" + error_label, "--noise", noise}, png_path, csv_path);
 }
 
 }  // namespace lab::plots
