@@ -14,11 +14,11 @@ namespace lab::cli {
 namespace fs = std::filesystem;
 using report::Cell;
 using report::CellKind;
+using report::number_cell;
+using report::text_cell;
 
 namespace {
 
-Cell number(double value, int digits = 4) { return {report::number_text(value, digits), CellKind::number}; }
-Cell text(std::string t) { return {std::move(t), CellKind::text}; }
 Cell verdict(bool passed) { return {passed ? "PASS" : "FAIL", passed ? CellKind::pass : CellKind::fail}; }
 
 float luminance_of(const brdf::float3& c) { return luminance(c.x, c.y, c.z); }
@@ -35,8 +35,8 @@ std::string degrees(float deg) { return report::number_text(deg, 3) + "°"; }
 std::vector<Cell> render_row(const ReportRender& r) {
     const render::RenderStatistics& s = r.stats;
     const double rays_per_path = s.paths > 0 ? double(s.rays) / double(s.paths) : 0.0;
-    return {text(r.name), number(s.samples_per_pixel), number(s.render_seconds, 3), number(s.paths_per_second(), 3), number(rays_per_path, 3),
-            number(double(s.nonfinite_samples))};
+    return {text_cell(r.name), number_cell(s.samples_per_pixel), number_cell(s.render_seconds, 3), number_cell(s.paths_per_second(), 3), number_cell(rays_per_path, 3),
+            number_cell(double(s.nonfinite_samples))};
 }
 
 const std::vector<std::string> kRenderHeader = {"what", "samples/pixel", "seconds", "paths/s", "rays/path", "non-finite paths"};
@@ -62,7 +62,7 @@ report::Section previews_section(const ReportPreviews& previews, const fs::path&
     table.header.insert(table.header.begin() + 1, "model");
     for (const auto& [preset, render] : previews.renders) {
         std::vector<Cell> row = render_row(render);
-        row.insert(row.begin() + 1, text(brdf::model_name(preset.material.model)));
+        row.insert(row.begin() + 1, text_cell(brdf::model_name(preset.material.model)));
         table.rows.push_back(std::move(row));
     }
     s.figures.push_back({previews.sheet, "contact sheet of the preset previews",
@@ -77,13 +77,13 @@ report::Section previews_section(const ReportPreviews& previews, const fs::path&
         f.caption = preset.name + (preset.description.empty() ? "" : ": " + preset.description);
         f.numbers.header = {"parameter", "value"};
         const brdf::Material& m = preset.material;
-        f.numbers.rows = {{text("model"), text(brdf::model_name(m.model))},
-                          {text("albedo (RGB)"), text(report::number_text(m.albedo[0], 3) + ", " + report::number_text(m.albedo[1], 3) + ", " +
+        f.numbers.rows = {{text_cell("model"), text_cell(brdf::model_name(m.model))},
+                          {text_cell("albedo (RGB)"), text_cell(report::number_text(m.albedo[0], 3) + ", " + report::number_text(m.albedo[1], 3) + ", " +
                                                       report::number_text(m.albedo[2], 3))},
-                          {text("roughness"), number(m.roughness, 3)},
-                          {text("metallic"), number(m.metallic, 3)},
-                          {text("anisotropic"), number(m.anisotropic, 3)},
-                          {text("transmission weight"), number(m.weight_transmission, 3)}};
+                          {text_cell("roughness"), number_cell(m.roughness, 3)},
+                          {text_cell("metallic"), number_cell(m.metallic, 3)},
+                          {text_cell("anisotropic"), number_cell(m.anisotropic, 3)},
+                          {text_cell("transmission weight"), number_cell(m.weight_transmission, 3)}};
         s.figures.push_back(std::move(f));
     }
     return s;
@@ -105,9 +105,9 @@ report::Section lobes_section(const std::vector<ReportLobes>& lobes, const fs::p
             double delta_weight = 0.0;
             for (const analysis::DeltaLobe& delta : d.deltas) delta_weight += luminance_of(delta.weight);
             const bool has_peak = peak != d.plane.end() && peak->value > 0.0f;  // not a material of delta lobes only
-            table.rows.push_back({text(d.material), has_peak ? number(peak->value, 4) : text("none"),
-                                  has_peak ? text(degrees(peak->angle_deg)) : text("-"), number(double(d.deltas.size())),
-                                  number(delta_weight, 4)});
+            table.rows.push_back({text_cell(d.material), has_peak ? number_cell(peak->value, 4) : text_cell("none"),
+                                  has_peak ? text_cell(degrees(peak->angle_deg)) : text_cell("-"), number_cell(double(d.deltas.size())),
+                                  number_cell(delta_weight, 4)});
         }
         const std::string stem = fs::path(l.image).stem().string();
         s.figures.push_back({l.image, "lobes of " + l.group + " at " + degrees(l.theta_in_deg),
@@ -128,15 +128,15 @@ report::Section albedo_section(const std::vector<brdf::Preset>& presets, const s
     for (float a : angles) table.header.push_back("albedo at " + degrees(a));
     table.header.push_back("largest standard error");
     for (size_t i = 0; i < presets.size(); ++i) {
-        std::vector<Cell> row{text(presets[i].name)};
+        std::vector<Cell> row{text_cell(presets[i].name)};
         double se = 0.0;
         for (float a : angles) {
             const analysis::AlbedoPoint& p = point_near(curves[i], a);
             const brdf::float3& v = p.estimate.value;
-            row.push_back(number((v.x + v.y + v.z) / 3.0, 4));
+            row.push_back(number_cell((v.x + v.y + v.z) / 3.0, 4));
             se = std::max({se, double(p.estimate.std_error.x), double(p.estimate.std_error.y), double(p.estimate.std_error.z)});
         }
-        row.push_back(number(se, 2));
+        row.push_back(number_cell(se, 2));
         table.rows.push_back(std::move(row));
     }
     table.csv = csv;  // every angle and channel, with standard errors
@@ -159,11 +159,11 @@ report::Section validation_section(const std::vector<validation::MaterialValidat
     table.header = {"material", "model", "chi-square directions", "smallest p", "level per direction", "sampler", "reciprocity error",
                     "tolerance", "reciprocity", "largest albedo", "at θ", "at φ", "energy", "result"};
     for (const validation::MaterialValidation& v : results) {
-        table.rows.push_back({text(v.name), text(brdf::model_name(v.model)), number(v.chi_square_tests),
-                              v.continuous ? number(v.smallest_p_value, 3) : text("delta only"), number(v.alpha, 3),
-                              verdict(v.chi_square_passed()), number(v.reciprocity_error, 2), number(v.reciprocity_tolerance, 2),
-                              verdict(v.reciprocity_passed()), number(v.albedo.albedo, 5), text(degrees(v.albedo.theta_deg)),
-                              text(degrees(v.albedo.phi_deg)), verdict(v.energy_passed()), verdict(v.passed())});
+        table.rows.push_back({text_cell(v.name), text_cell(brdf::model_name(v.model)), number_cell(v.chi_square_tests),
+                              v.continuous ? number_cell(v.smallest_p_value, 3) : text_cell("delta only"), number_cell(v.alpha, 3),
+                              verdict(v.chi_square_passed()), number_cell(v.reciprocity_error, 2), number_cell(v.reciprocity_tolerance, 2),
+                              verdict(v.reciprocity_passed()), number_cell(v.albedo.albedo, 5), text_cell(degrees(v.albedo.theta_deg)),
+                              text_cell(degrees(v.albedo.phi_deg)), verdict(v.energy_passed()), verdict(v.passed())});
     }
     s.figures.push_back({"", "",
                          "Sampler: a chi-square test of the importance sampler's histogram against its pdf at several incident "
@@ -209,9 +209,9 @@ report::Section speed_section(const StudyResults& study, const StudyBudget& budg
             if (r.series.name == c.baseline) baseline_error = r.final_rmse();
         for (const report::EqualTimeResult& r : c.results) {
             const double t = r.series.seconds.empty() ? 0.0 : r.series.seconds.back();
-            table.rows.push_back({text(r.series.name), number(r.stats.samples_per_pixel), number(r.stats.paths_per_second(), 3),
-                                  number(r.final_rmse(), 3), number(r.final_rmse() * std::sqrt(t), 3),
-                                  baseline_error > 0.0 ? text(report::number_text(r.final_rmse() / baseline_error, 3) + "×") : text("-")});
+            table.rows.push_back({text_cell(r.series.name), number_cell(r.stats.samples_per_pixel), number_cell(r.stats.paths_per_second(), 3),
+                                  number_cell(r.final_rmse(), 3), number_cell(r.final_rmse() * std::sqrt(t), 3),
+                                  baseline_error > 0.0 ? text_cell(report::number_text(r.final_rmse() / baseline_error, 3) + "×") : text_cell("-")});
         }
         const std::string stem = fs::path(c.image).stem().string();
         s.figures.push_back({c.image, "relative RMSE against render time for " + c.subject,
@@ -226,8 +226,8 @@ report::Section speed_section(const StudyResults& study, const StudyBudget& budg
         report::Table table;
         table.header = {"setting", "ms per sample", "error it causes", "noise level", "lost rays"};
         for (const MarchSetting& setting : m.settings)
-            table.rows.push_back({text(setting.name), number(1000.0 * setting.seconds_per_sample, 3), number(setting.error, 3),
-                                  number(setting.noise, 3), number(setting.lost_rays, 2)});
+            table.rows.push_back({text_cell(setting.name), number_cell(1000.0 * setting.seconds_per_sample, 3), number_cell(setting.error, 3),
+                                  number_cell(setting.noise, 3), number_cell(setting.lost_rays, 2)});
         const std::string stem = fs::path(m.image).stem().string();
         s.figures.push_back({m.image, "time per sample against the error of each sphere-tracing setting on " + m.scene,
                              m.scene + ": each sphere-tracing setting (ω the over-relaxation, and the normal estimator; analytic falls "
@@ -263,19 +263,19 @@ report::Section machine_section(const std::string& device, const std::vector<std
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&now));
     report::Table about;
     about.header = {"what", "value"};
-    about.rows = {{text("device of the renders"), text(device.empty() ? "none (no render in this report)" : device)},
-                  {text("dtoadq commit"), text(kBuildCommit)},
-                  {text("compiler"), text(kBuildCompiler)},
-                  {text("report written"), text(date)}};
+    about.rows = {{text_cell("device of the renders"), text_cell(device.empty() ? "none (no render in this report)" : device)},
+                  {text_cell("dtoadq commit"), text_cell(kBuildCommit)},
+                  {text_cell("compiler"), text_cell(kBuildCompiler)},
+                  {text_cell("report written"), text_cell(date)}};
     s.figures.push_back({"", "", "What the figures above were measured on.", with_csv(std::move(about), folder, "machine.csv")});
     report::Table times;
     times.header = {"stage", "seconds"};
     double total = 0.0;
     for (const auto& [stage, seconds] : stage_seconds) {
-        times.rows.push_back({text(stage), number(seconds, 3)});
+        times.rows.push_back({text_cell(stage), number_cell(seconds, 3)});
         total += seconds;
     }
-    times.rows.push_back({text("all"), number(total, 3)});
+    times.rows.push_back({text_cell("all"), number_cell(total, 3)});
     s.figures.push_back({"", "", "The wall-clock seconds each stage of the report took, kernel builds included.",
                          with_csv(std::move(times), folder, "timings.csv")});
     return s;

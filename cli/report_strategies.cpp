@@ -54,8 +54,8 @@ StrategyAtlas write_strategy_atlas(const StrategyAtlasOptions& options, const fs
 }
 
 report::AtlasEntry strategy_atlas_entry(const StrategyAtlas& atlas) {
-    auto text = [](std::string t) { return report::Cell{std::move(t), report::CellKind::text}; };
-    auto number = [](double v) { return report::Cell{report::number_text(v, 3), report::CellKind::number}; };
+    using report::text_cell;
+    auto number = [](double v) { return report::number_cell(v, 3); };
     auto percent = [](double f) { return report::number_text(100.0 * f, 2) + " %"; };
     report::AtlasEntry e;
     e.title = "each scene's BDPT image beside the map of which strategies carry its light";
@@ -68,10 +68,10 @@ report::AtlasEntry strategy_atlas_entry(const StrategyAtlas& atlas) {
             const report::StrategyLight* strongest = nullptr;
             for (const report::StrategyLight& s : shares.strategies)
                 if (int(report::strategy_group(s.s, s.t)) == g && (!strongest || s.share > strongest->share)) strongest = &s;
-            e.table.rows.push_back({text(scene.scene), text(report::strategy_group_name(report::StrategyGroup(g))), number(shares.light[size_t(g)]),
+            e.table.rows.push_back({text_cell(scene.scene), text_cell(report::strategy_group_name(report::StrategyGroup(g))), number(shares.light[size_t(g)]),
                                     number(shares.minor_pixels[size_t(g)]),
-                                    text(strongest ? "(" + std::to_string(strongest->s) + ", " + std::to_string(strongest->t) + ")" : "-"),
-                                    strongest ? number(strongest->share) : text("-")});
+                                    text_cell(strongest ? "(" + std::to_string(strongest->s) + ", " + std::to_string(strongest->t) + ")" : "-"),
+                                    strongest ? number(strongest->share) : text_cell("-")});
         }
         const size_t pt = size_t(report::StrategyGroup::path_tracer), lt = size_t(report::StrategyGroup::light_tracer),
                      connection = size_t(report::StrategyGroup::connection);

@@ -195,8 +195,6 @@ const std::vector<double> kOmegas = {1.0, 1.2, 1.35, 1.5, 1.65, 1.8, 1.95};
 constexpr int kRaysWide = 64, kRaysHigh = 48;
 constexpr double kTolerableLoss = 0.01;  // the share of rays a setting may lose and still count as agreeing with the reference
 
-Cell number_cell(double value, int digits) { return {number_text(value, digits), CellKind::number}; }
-Cell text_cell(std::string text) { return {std::move(text), CellKind::text}; }
 std::string percent(double fraction) { return number_text(100.0 * fraction, 2) + " %"; }
 
 const MarchCell& cell_at(const MarchSweep& sweep, double factor, double omega) {

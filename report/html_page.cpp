@@ -126,6 +126,9 @@ void write_csv(const Table& table, const std::string& path) {
     if (!out.flush()) throw InputError(path, "-o", "write failed");
 }
 
+Cell number_cell(double value, int digits) { return {number_text(value, digits), CellKind::number}; }
+Cell text_cell(std::string text) { return {std::move(text), CellKind::text}; }
+
 std::string number_text(double value, int digits) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*g", digits, value);

@@ -60,4 +60,8 @@ void write_csv(const Table& table, const std::string& path);
 // A number for a table: `digits` significant digits, without trailing noise ("0.941", "1.2e+07").
 std::string number_text(double value, int digits = 4);
 
+// Table cells: a number of `digits` significant digits (right-aligned), and text.
+Cell number_cell(double value, int digits = 4);
+Cell text_cell(std::string text);
+
 }  // namespace lab::report

@@ -46,14 +46,14 @@ struct AtlasExtremes {
 
 // The entry's table: each panel's extremes, with their standard errors, roughness and angle.
 Table extremes_table(const std::vector<AtlasExtremes>& extremes) {
-    auto number = [](double value, int digits) { return Cell{number_text(value, digits), CellKind::number}; };
-    auto error = [&](double se) { return se < 0.0 ? Cell{"-", CellKind::text} : number(se, 2); };
-    auto degrees = [](double deg) { return Cell{number_text(deg, 3) + "°", CellKind::text}; };
+    auto error = [](double se) { return se < 0.0 ? text_cell("-") : number_cell(se, 2); };
+    auto degrees = [](double deg) { return text_cell(number_text(deg, 3) + "°"); };
     Table table;
     table.header = {"method", "least", "± standard error", "at roughness", "at θ", "greatest", "± standard error", "at roughness", "at θ"};
     for (const AtlasExtremes& x : extremes)
-        table.rows.push_back({{x.panel, CellKind::text}, number(x.least, 4), error(x.least_error), number(x.least_roughness, 2), degrees(x.least_theta),
-                              number(x.greatest, 4), error(x.greatest_error), number(x.greatest_roughness, 2), degrees(x.greatest_theta)});
+        table.rows.push_back({text_cell(x.panel), number_cell(x.least, 4), error(x.least_error), number_cell(x.least_roughness, 2),
+                              degrees(x.least_theta), number_cell(x.greatest, 4), error(x.greatest_error), number_cell(x.greatest_roughness, 2),
+                              degrees(x.greatest_theta)});
     return table;
 }
 
