@@ -1,7 +1,9 @@
 // dtoadq view: the live viewer (viewer/, docs/viewer.md). This file turns the options into a
 // render job (cli/render_job, as `preview` does), checks everything a script asks for before the
 // window opens, and hands the viewer its renderer factory.
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -14,6 +16,7 @@
 #include "viewer/app.hpp"
 #include "viewer/material_edit.hpp"
 #include "viewer/scene_export.hpp"
+#include "viewer/window_layout.hpp"
 
 namespace lab::cli {
 
@@ -21,12 +24,13 @@ namespace {
 
 struct ViewOptions {
     RenderJobOptions job;
-    std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces";
-    std::vector<std::string> sets, moves, inspect, env_loads;
+    std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces", window, display = "render";
+    std::vector<std::string> sets, moves, inspect, env_loads, resizes, open_sections;
+    long max_render_pixels = 512 * 512;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
-    bool stats = false, split = false;
+    bool stats = false, split = false, print_layout = false;
 };
 
 int find_slot(const scene::Scene& scene, const std::string& name) {
@@ -34,6 +38,16 @@ int find_slot(const scene::Scene& scene, const std::string& name) {
         if (scene.materials[i].name == name) return int(i);
     return -1;
 }
+
+// --window and --resize: a size the window can take (the panel and a sliver of render beside it).
+void parse_window_size(const std::string& text, const std::string& option, int* width, int* height) {
+    render::parse_image_size(text, option, width, height);
+    if (*width < viewer::kPanelColumnWidth + 64 || *height < 240)
+        throw InputError(option, "", text + " is smaller than the panel and a render beside it (" +
+                                         std::to_string(viewer::kPanelColumnWidth + 64) + "x240 at least)");
+}
+
+const char* const kSectionNames[] = {"Material", "Checks", "Lobe", "Environment", "Presets", "Inspector", "Help", "all"};
 
 void run_view(const ViewOptions& o) {
     film::ToneMap tone_map = film::parse_tone_map(o.tone_map);
@@ -74,6 +88,25 @@ void run_view(const ViewOptions& o) {
 
     config.width = job->input.settings.width;
     config.height = job->input.settings.height;
+    config.initial.width = config.width;
+    config.initial.height = config.height;
+    if (!o.window.empty()) parse_window_size(o.window, "--window", &config.window_width, &config.window_height);
+    config.sizing = viewer::parse_display_sizing(o.display);
+    if (o.max_render_pixels < 64 || o.max_render_pixels > 16384L * 16384L)
+        throw InputError("--max-render-pixels", "", "must be in [64, 268435456]");
+    config.max_render_pixels = o.max_render_pixels;
+    for (const std::string& text : o.resizes) {
+        viewer::ScriptedSet resize = viewer::parse_scripted_set("window=" + text);  // WxH@FRAME
+        if (o.frames == 0) throw InputError("--resize", "", "needs --frames (a scripted run)");
+        int w = 0, h = 0;
+        parse_window_size(resize.value, "--resize", &w, &h);
+        config.resizes.push_back(resize);
+    }
+    for (const std::string& name : o.open_sections) {
+        if (std::find(std::begin(kSectionNames), std::end(kSectionNames), name) == std::end(kSectionNames))
+            throw InputError("--open", "", "unknown section \"" + name + "\" (Material, Checks, Lobe, Environment, Presets, Inspector, Help, all)");
+        config.open_sections.push_back(name);
+    }
     config.title = "dtoadq view: " + job->description;
     config.max_samples = o.max_spp;
     config.chunk_seconds = o.chunk_ms * 1e-3;
@@ -107,6 +140,7 @@ void run_view(const ViewOptions& o) {
     config.export_scene = export_scene;
     config.export_name = export_name;
     config.stats = o.stats;
+    config.print_layout = o.print_layout;
     config.split = o.split;
     // Renderers are made on render workers' threads (the kernel build never holds up the window),
     // each with an OpenCL runtime of its own, kept until the viewer ends (the split view and a new
@@ -165,7 +199,17 @@ void register_view(CLI::App& app) {
     cmd->add_option("--load-env", o->env_loads, "Headless: PATH@FRAME, load an environment map at a frame as the panel does (errors are shown, not fatal)");
     cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
     cmd->add_flag("--split", o->split, "Start in the A/B split view (B: --compare)");
+    cmd->add_option("--window", o->window, "The window's first size, WxH (default: the render's size and the panel's)");
+    cmd->add_option("--display", o->display,
+                    "What resizing the window changes: render (the render's size follows the area, up to --max-render-pixels) "
+                    "or scale (the render keeps --size and is drawn scaled)")
+        ->capture_default_str();
+    cmd->add_option("--max-render-pixels", o->max_render_pixels, "Under --display render: the render's largest size; larger areas scale it up")
+        ->capture_default_str();
+    cmd->add_option("--open", o->open_sections, "Panel sections open from the start, besides Material and Checks (e.g. Lobe; all)")->delimiter(',');
+    cmd->add_option("--resize", o->resizes, "Headless: WxH@FRAME, the window resized at a frame as a window manager does (repeatable)");
     cmd->add_flag("--stats", o->stats, "Print interface frame times, samples/s and change-to-frame latency on exit");
+    cmd->add_flag("--print-layout", o->print_layout, "Print each new layout of the window, and where the open panel sections are on exit");
     cmd->add_option("--max-spp", o->max_spp, "Stop accumulating at this many samples per pixel")->capture_default_str();
     cmd->add_option("--chunk-ms", o->chunk_ms, "Render time per chunk between published images, ms")->capture_default_str();
     cmd->add_option("--tonemap", o->tone_map, "Display tone map: aces, reinhard or clamp")->capture_default_str();

@@ -50,6 +50,23 @@ std::string read(const fs::path& p) {
     return s.str();
 }
 
+// The test model under a white constant environment at size x size.
+lab::render::RenderInput test_model_under_white(int size) {
+    lab::render::RenderInput input;
+    input.scene = lab::scene::load_test_model();
+    input.environment = lab::ibl::Environment::constant(brdf::float3(1.0f), "white", {});
+    input.settings.width = input.settings.height = size;
+    return input;
+}
+
+// The view state a render worker opens with: the scene's materials and camera.
+lab::viewer::ViewState view_state_of(const lab::render::RenderInput& input) {
+    lab::viewer::ViewState state;
+    for (const lab::scene::MaterialSlot& s : input.scene.materials) state.materials.push_back(s.material);
+    state.camera = input.scene.camera;
+    return state;
+}
+
 }  // namespace
 
 TEST_CASE("a newer job cancels the running one, and only the newest pending job runs", "[viewer]") {
@@ -169,13 +186,8 @@ TEST_CASE("frame-time quantiles by the nearest rank", "[viewer]") {
 }
 
 TEST_CASE("the render worker accumulates, and a new state restarts it with the new material", "[viewer]") {
-    lab::render::RenderInput input;
-    input.scene = lab::scene::load_test_model();
-    input.environment = lab::ibl::Environment::constant(brdf::float3(1.0f), "white", {});
-    input.settings.width = input.settings.height = 8;
-    lab::viewer::ViewState state;
-    for (const lab::scene::MaterialSlot& s : input.scene.materials) state.materials.push_back(s.material);
-    state.camera = input.scene.camera;
+    lab::render::RenderInput input = test_model_under_white(8);
+    lab::viewer::ViewState state = view_state_of(input);
     // At most 4 samples per pixel: the worker renders out, then sleeps until a new state comes.
     lab::viewer::RenderWorker worker([input] { return std::make_unique<lab::render::HostRenderer>(input, 1); }, state, 0.01, 4);
     lab::viewer::RenderFrame frame;
@@ -204,13 +216,8 @@ TEST_CASE("the render worker's first pass at a reduced size never mixes into the
     // reduction), shown enlarged, then at full size in launches of part of the image. The final
     // image must be exactly a plain render of the same samples: a low-res sample in the film, or the
     // enlarged first pass left on the screen where the full size has reached, would change it.
-    lab::render::RenderInput input;
-    input.scene = lab::scene::load_test_model();
-    input.environment = lab::ibl::Environment::constant(brdf::float3(1.0f), "white", {});
-    input.settings.width = input.settings.height = 48;
-    lab::viewer::ViewState state;
-    for (const lab::scene::MaterialSlot& s : input.scene.materials) state.materials.push_back(s.material);
-    state.camera = input.scene.camera;
+    lab::render::RenderInput input = test_model_under_white(48);
+    lab::viewer::ViewState state = view_state_of(input);
     // A chunk of 1 ms: launches of a few work-groups, many per pass.
     lab::viewer::RenderWorker worker([input] { return std::make_unique<lab::render::HostRenderer>(input, 1); }, state, 0.001, 3);
     lab::viewer::RenderFrame frame;
@@ -239,6 +246,35 @@ TEST_CASE("the render worker's first pass at a reduced size never mixes into the
             if (f.image.rgb[i] != plain_spp[size_t(n)].rgb[i] && (n == 3 || f.image.rgb[i] != plain_spp[size_t(n + 1)].rgb[i])) ++mixed;
         }
     CHECK(mixed == 0);
+}
+
+TEST_CASE("the render worker takes a new size from the window: the render restarts at that size, on a film of its own", "[viewer]") {
+    lab::render::RenderInput input = test_model_under_white(16);
+    lab::viewer::ViewState state = view_state_of(input);
+    lab::render::RenderInput resized = input;
+    resized.settings.width = 24;
+    resized.settings.height = 20;
+    lab::render::HostRenderer plain(resized, 1);
+    plain.add_samples(2);
+    // Chunks of 5 ms start the new size with a reduced first pass; chunks of 10 s render it at once.
+    for (double chunk_seconds : {0.005, 10.0}) {
+        INFO("chunk " << chunk_seconds << " s");
+        state.width = state.height = 16;
+        lab::viewer::RenderWorker worker([input] { return std::make_unique<lab::render::HostRenderer>(input, 1); }, state, chunk_seconds, 2);
+        lab::viewer::RenderFrame frame;
+        REQUIRE(eventually([&] { return worker.take_frame(&frame) && frame.scale == 1 && frame.samples_per_pixel == 2; }));
+        state.width = 24;
+        state.height = 20;
+        const uint64_t generation = worker.submit(state);
+        REQUIRE(eventually([&] {
+            return worker.take_frame(&frame) && frame.generation == generation && frame.scale == 1 && frame.samples_per_pixel == 2;
+        }));
+        REQUIRE(frame.image.width == 24);
+        REQUIRE(frame.image.height == 20);
+        // Exactly a plain render of that size: no sample of the 16 x 16 render is in it.
+        CHECK(frame.image.rgb == plain.image().rgb);
+        CHECK(worker.error().empty());
+    }
 }
 
 TEST_CASE("export to scene keeps a file's own layout: 4-space indents and one-line arrays stay, the new material follows its neighbours' indent",

@@ -16,6 +16,7 @@
 
 #include "common/input_error.hpp"
 #include "render/camera_setup.hpp"
+#include "render/render_settings.hpp"
 #include "viewer/camera_controller.hpp"
 #include "viewer/frame_stats.hpp"
 #include "viewer/panels.hpp"
@@ -26,6 +27,7 @@
 #include "viewer/pixel_probe.hpp"
 #include "viewer/scene_export.hpp"
 #include "viewer/validation_badges.hpp"
+#include "viewer/window_layout.hpp"
 
 namespace lab::viewer {
 
@@ -34,8 +36,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
-constexpr int kPanelWidth = 440;
+// The window's first height at least, and its smallest size (a sliver of render beside the panel).
 constexpr int kMinWindowHeight = 560;
+constexpr int kSmallestWindowWidth = kPanelColumnWidth + 64, kSmallestWindowHeight = 240;
+// An open panel section is never squeezed below this; its content scrolls inside it.
+constexpr float kMinSectionHeight = 90.0f;
 // Headless runs give up waiting for the image to show their last change after this long.
 constexpr double kScriptTimeoutSeconds = 120.0;
 
@@ -58,11 +63,11 @@ public:
     ViewerWindow(const ViewerConfig& config, bool headless) {
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
-        const int window_width = config.width + kPanelWidth;
-        height_ = config.height > kMinWindowHeight ? config.height : kMinWindowHeight;
-        if (headless) glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
-        window_ = glfwCreateWindow(window_width, height_, config.title.c_str(), nullptr, nullptr);
+        const int width = config.window_width > 0 ? config.window_width : config.width + kPanelColumnWidth;
+        const int height = config.window_height > 0 ? config.window_height : std::max(config.height, kMinWindowHeight);
+        window_ = glfwCreateWindow(width, height, config.title.c_str(), nullptr, nullptr);
         if (!window_) throw std::runtime_error("cannot open a window (no OpenGL 3.0 context?): GLFW " + g_glfw_error);
+        glfwSetWindowSizeLimits(window_, kSmallestWindowWidth, kSmallestWindowHeight, GLFW_DONT_CARE, GLFW_DONT_CARE);
         glfwMakeContextCurrent(window_);
         glfwSwapInterval(headless ? 0 : 1);  // headless frames are not paced by a display
 
@@ -83,12 +88,10 @@ public:
     ViewerWindow& operator=(const ViewerWindow&) = delete;
 
     GLFWwindow* get() const { return window_; }
-    int height() const { return height_; }
 
 private:
     GlfwSession glfw_;  // first: GLFW starts before the window opens and ends after it closes
     GLFWwindow* window_ = nullptr;
-    int height_ = 0;
 };
 
 UiState initial_ui_state(const ViewerConfig& config) {
@@ -109,7 +112,28 @@ int last_scripted_frame(const ViewerConfig& config) {
     for (const ScriptedSet& s : config.sets) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.moves) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.env_loads) last_frame = std::max(last_frame, s.frame + 1);
+    for (const ScriptedSet& s : config.resizes) last_frame = std::max(last_frame, s.frame + 1);
     return last_frame;
+}
+
+// A section of the panel: its header, and its body in a scroll area of its own, sized by share_heights.
+struct PanelSection {
+    PanelSection(const char* section_name, int column, bool open_at_start) : name(section_name), column_of_two(column), open(open_at_start) {}
+    const char* name;
+    int column_of_two;   // where it goes when the panel has two columns
+    bool open;
+    float wanted = 240.0f;  // the body's content height, as measured when last drawn
+    Rect rect;              // the body's scroll area on screen, as last drawn
+};
+
+enum SectionId { kMaterial, kChecks, kLobe, kEnvironment, kPresets, kInspector, kHelp, kSectionCount };
+
+std::vector<PanelSection> panel_sections(const std::vector<std::string>& open) {
+    std::vector<PanelSection> sections = {{"Material", 0, true},  {"Checks", 1, true},    {"Lobe", 1, false}, {"Environment", 0, false},
+                                          {"Presets", 0, false}, {"Inspector", 1, false}, {"Help", 1, false}};
+    for (PanelSection& s : sections)
+        for (const std::string& name : open) s.open |= name == "all" || name == s.name;
+    return sections;
 }
 
 // The frame loop: the render workers (A, B of the split view, and one under a new environment map
@@ -118,7 +142,7 @@ class FrameLoop {
 public:
     FrameLoop(const ViewerConfig& config, const ViewerWindow& window, UiState* ui)
         : config_(config), window_(window), ui_(*ui), headless_(config.frames > 0), last_frame_(last_scripted_frame(config)),
-          factory_(config.make_renderer) {
+          factory_(config.make_renderer), sections_(panel_sections(config.open_sections)) {
         lobes_.set_materials(ui_.preset, config_.compare);
         checks_.set_material(ui_.preset);
         worker_ = std::make_unique<RenderWorker>(factory_, ui_.view, config_.chunk_seconds, config_.max_samples);
@@ -135,8 +159,9 @@ public:
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
+            bool changed = follow_window();
             draw_render();
-            bool changed = handle_keys_and_mouse();
+            changed |= handle_keys_and_mouse();
             changed |= draw_panels(n);
             if (changed) {
                 submitted_ = worker_->submit(ui_.view);  // shows from the worker's next chunk
@@ -195,6 +220,41 @@ private:
             if (worker_b_ && moved) worker_b_->submit(state_b());
             waiting_.emplace_back(submitted_, Clock::now());
         }
+        for (const ScriptedSet& s : config_.resizes) {
+            if (s.frame != n) continue;
+            int w = 0, h = 0;
+            render::parse_image_size(s.value, "--resize", &w, &h);  // checked before the window opened
+            glfwSetWindowSize(window_.get(), w, h);
+            resize_pending_ = {w, h};
+        }
+    }
+
+    // The layout of the window as it is now; a new render area sets the render's size (or only the
+    // display's scale). Returns whether the render's size changed. With --print-layout each new
+    // layout is printed.
+    bool follow_window() {
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        LayoutRequest request;
+        request.window_width = int(display.x);
+        request.window_height = int(display.y);
+        request.aspect_width = config_.width;
+        request.aspect_height = config_.height;
+        request.sizing = sizing_;
+        request.fixed_width = config_.width;
+        request.fixed_height = config_.height;
+        request.max_render_pixels = config_.max_render_pixels;
+        layout_ = layout_window(request);
+        if (resize_pending_[0] == request.window_width && resize_pending_[1] == request.window_height) resize_pending_ = {0, 0};
+        if (config_.print_layout) {
+            const std::string line = describe_layout(layout_, request.window_width, request.window_height);
+            if (line != layout_printed_) std::printf("%s\n", line.c_str());
+            layout_printed_ = line;
+        }
+        if (layout_.render_width == ui_.view.width && layout_.render_height == ui_.view.height) return false;
+        ui_.view.width = layout_.render_width;
+        ui_.view.height = layout_.render_height;
+        if (picked_x_ >= layout_.render_width || picked_y_ >= layout_.render_height) picked_x_ = picked_y_ = -1;
+        return true;
     }
 
     // A new map: the old renderer shows until the new one is ready; a failure keeps the old. B
@@ -227,7 +287,12 @@ private:
         if (worker_b_ && (worker_b_->take_frame(&frame_b_) || retone_) && frame_b_.image.valid())
             texture_b_.upload(film::to_srgb8(frame_b_.image, ui_.tone_map, ui_.display_exposure), frame_b_.image.width, frame_b_.image.height);
         if (worker_->take_frame(&frame_) || retone_) {
-            if (frame_.image.valid()) texture_.upload(film::to_srgb8(frame_.image, ui_.tone_map, ui_.display_exposure), frame_.image.width, frame_.image.height);
+            if (frame_.image.valid()) {
+                const Clock::time_point start = Clock::now();
+                texture_.upload(film::to_srgb8(frame_.image, ui_.tone_map, ui_.display_exposure), frame_.image.width, frame_.image.height);
+                stats_.display_seconds.push_back(seconds_between(start, Clock::now()));
+                stats_.display_pixels.push_back(double(frame_.image.width) * double(frame_.image.height));
+            }
             retone_ = false;
             for (auto it = waiting_.begin(); it != waiting_.end();) {
                 if (frame_.generation >= it->first && frame_.samples_per_pixel > 0) {
@@ -240,18 +305,21 @@ private:
         }
     }
 
-    // The render behind the panels: A, and B right of the divider in the split view.
+    // The render in its rectangle of the render area (scaled when the render's size differs): A,
+    // and B right of the divider in the split view.
     void draw_render() const {
         if (texture_.width() <= 0) return;
-        const float w = float(texture_.width()), h = float(texture_.height());
+        const Rect& r = layout_.image;
         const float split = worker_b_ && texture_b_.width() == texture_.width() ? ui_.split_x : 1.0f;
+        const float divider = r.x + r.w * split;
         ImDrawList* back = ImGui::GetBackgroundDrawList();
-        back->AddImage(ImTextureID(intptr_t(texture_.id())), ImVec2(0, 0), ImVec2(w * split, h), ImVec2(0, 0), ImVec2(split, 1));
+        back->AddImage(ImTextureID(intptr_t(texture_.id())), ImVec2(r.x, r.y), ImVec2(divider, r.bottom()), ImVec2(0, 0), ImVec2(split, 1));
         if (split < 1.0f) {
-            back->AddImage(ImTextureID(intptr_t(texture_b_.id())), ImVec2(w * split, 0), ImVec2(w, h), ImVec2(split, 0), ImVec2(1, 1));
-            back->AddLine(ImVec2(w * split, 0), ImVec2(w * split, h), IM_COL32(255, 255, 255, 200), 2.0f);
-            back->AddText(ImVec2(4, h - 16), IM_COL32(255, 255, 255, 255), "A");
-            back->AddText(ImVec2(w - 12, h - 16), IM_COL32(255, 255, 255, 255), "B");
+            back->AddImage(ImTextureID(intptr_t(texture_b_.id())), ImVec2(divider, r.y), ImVec2(r.right(), r.bottom()), ImVec2(split, 0),
+                           ImVec2(1, 1));
+            back->AddLine(ImVec2(divider, r.y), ImVec2(divider, r.bottom()), IM_COL32(255, 255, 255, 200), 2.0f);
+            back->AddText(ImVec2(r.x + 4, r.bottom() - 16), IM_COL32(255, 255, 255, 255), "A");
+            back->AddText(ImVec2(r.right() - 12, r.bottom() - 16), IM_COL32(255, 255, 255, 255), "B");
         }
     }
 
@@ -266,41 +334,54 @@ private:
                 changed = true;
             }
         }
-        changed |= mouse_on_render(&ui_, config_.width, config_.height, &picked_x_, &picked_y_);
-        if (picked_x_ >= 0)
-            ImGui::GetForegroundDrawList()->AddRect(ImVec2(float(picked_x_) - 2, float(picked_y_) - 2),
-                                                    ImVec2(float(picked_x_) + 3, float(picked_y_) + 3), IM_COL32(255, 255, 0, 255));
+        const Rect& r = layout_.image;
+        changed |= mouse_on_render(&ui_, r, layout_.render_width, layout_.render_height, &picked_x_, &picked_y_);
+        if (picked_x_ >= 0) {  // the picked pixel's centre on screen
+            const float x = r.x + (float(picked_x_) + 0.5f) * r.w / float(layout_.render_width);
+            const float y = r.y + (float(picked_y_) + 0.5f) * r.h / float(layout_.render_height);
+            ImGui::GetForegroundDrawList()->AddRect(ImVec2(x - 2.5f, y - 2.5f), ImVec2(x + 2.5f, y + 2.5f), IM_COL32(255, 255, 0, 255));
+        }
         return changed;
     }
 
-    // The panel window beside the render; returns whether the view changed. A map to load (from the
-    // environment panel or the script's --load-env of frame n) starts its worker.
+    // The panel window beside the render, in one or two columns of sections; returns whether the
+    // view changed. A map to load (from the environment panel or the script's --load-env of frame n)
+    // starts its worker.
     bool draw_panels(int n) {
         bool changed = false;
-        ImGui::SetNextWindowPos(ImVec2(float(config_.width), 0.0f));
-        ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(window_.height())));
-        ImGui::Begin("dtoadq view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+        const Rect& p = layout_.panel;
+        ImGui::SetNextWindowPos(ImVec2(p.x, p.y));
+        ImGui::SetNextWindowSize(ImVec2(p.w, p.h));
+        ImGui::Begin("dtoadq view", nullptr,
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoScrollbar |
+                         ImGuiWindowFlags_NoScrollWithMouse);
         ImGui::Text("%d spp   %.3g samples/s%s", frame_.samples_per_pixel, frame_.samples_per_second, frame_.scale > 1 ? "   (first pass, reduced)" : "");
         if (worker_b_) {
             ImGui::SameLine();
             ImGui::Text("   B: %d spp", frame_b_.samples_per_pixel);
         }
         ImGui::Checkbox("A/B split view (B: --compare)", &ui_.split);
+        int sizing = int(sizing_);
+        ImGui::SetNextItemWidth(150.0f);
+        if (ImGui::Combo("window size changes", &sizing, "the render's size\0the display's scale\0")) sizing_ = DisplaySizing(sizing);
+        ImGui::SameLine();
+        ImGui::Text("render %dx%d", layout_.render_width, layout_.render_height);
         if (next_worker_) ImGui::TextUnformatted("loading the environment map...");
         ImGui::TextWrapped("%s", worker_->status().c_str());
         const std::string error = worker_->error();
         if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", error.c_str());
         if (!ui_.message.empty()) ImGui::TextWrapped("%s", ui_.message.c_str());
-        if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
-            if (material_panel(&ui_.preset.material, ui_.reference.material)) {
-                material_edited();
-                changed = true;
-            }
-        }
-        if (ImGui::CollapsingHeader("Checks", ImGuiTreeNodeFlags_DefaultOpen)) checks_.draw();
-        if (ImGui::CollapsingHeader("Lobe")) lobes_.draw();
+
         std::string load_env;
-        if (ImGui::CollapsingHeader("Environment")) environment_panel(&ui_, &changed, &retone_, &load_env);
+        const float spacing = ImGui::GetStyle().ItemSpacing.x;
+        const ImVec2 avail = ImGui::GetContentRegionAvail();
+        const float column_width = (avail.x - spacing * float(layout_.columns - 1)) / float(layout_.columns);
+        for (int c = 0; c < layout_.columns; ++c) {
+            if (c > 0) ImGui::SameLine();
+            ImGui::BeginChild(c == 0 ? "first column" : "second column", ImVec2(column_width, avail.y), false);
+            draw_column(c, &changed, &load_env);
+            ImGui::EndChild();
+        }
         for (const ScriptedSet& s : config_.env_loads)
             if (s.frame == n) load_env = s.value;
         if (!load_env.empty() && config_.factory_for_env) {
@@ -308,14 +389,62 @@ private:
             next_worker_ = std::make_unique<RenderWorker>(next_factory_, ui_.view, config_.chunk_seconds, config_.max_samples);
             ui_.message.clear();
         }
-        if (ImGui::CollapsingHeader("Presets") && preset_panel(&ui_)) {
-            material_edited();
-            changed = true;
-        }
-        if (ImGui::CollapsingHeader("Inspector")) inspector_panel(config_, ui_, frame_, *worker_, picked_x_, picked_y_);
-        if (ImGui::CollapsingHeader("Help")) help_panel();
         ImGui::End();
         return changed;
+    }
+
+    // The sections of one column, each open one's body in a scroll area of its own: the column's
+    // height is shared among them (share_heights), so that they are all in view together.
+    void draw_column(int column, bool* changed, std::string* load_env) {
+        std::vector<size_t> in_column;
+        for (size_t i = 0; i < sections_.size(); ++i)
+            if (layout_.columns == 1 || sections_[i].column_of_two == column) in_column.push_back(i);
+        std::vector<float> wanted;
+        for (size_t i : in_column)
+            if (sections_[i].open) wanted.push_back(sections_[i].wanted);
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float headers = float(in_column.size()) * ImGui::GetFrameHeightWithSpacing();
+        const float available = ImGui::GetContentRegionAvail().y - headers - float(wanted.size()) * style.ItemSpacing.y;
+        const std::vector<float> heights = share_heights(wanted, available, kMinSectionHeight);
+        size_t k = 0;
+        for (size_t i : in_column) {
+            PanelSection& s = sections_[i];
+            const bool was_open = s.open;
+            ImGui::SetNextItemOpen(s.open, ImGuiCond_Always);
+            s.open = ImGui::CollapsingHeader(s.name);
+            // A section opened by this click has no share yet: the least, until the next frame.
+            const float height = was_open ? heights[k++] : kMinSectionHeight;
+            if (!s.open) continue;
+            ImGui::BeginChild(s.name, ImVec2(0.0f, height), true);
+            draw_section(SectionId(i), changed, load_env);
+            s.wanted = ImGui::GetCursorPosY() + style.WindowPadding.y;  // the content's height, whatever the scroll
+            ImGui::EndChild();
+            const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+            s.rect = Rect{lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+        }
+    }
+
+    void draw_section(SectionId id, bool* changed, std::string* load_env) {
+        switch (id) {
+        case kMaterial:
+            if (material_panel(&ui_.preset.material, ui_.reference.material)) {
+                material_edited();
+                *changed = true;
+            }
+            break;
+        case kChecks: checks_.draw(); break;
+        case kLobe: lobes_.draw(); break;
+        case kEnvironment: environment_panel(&ui_, changed, &retone_, load_env); break;
+        case kPresets:
+            if (preset_panel(&ui_)) {
+                material_edited();
+                *changed = true;
+            }
+            break;
+        case kInspector: inspector_panel(config_, ui_, frame_, *worker_, picked_x_, picked_y_); break;
+        case kHelp: help_panel(); break;
+        case kSectionCount: break;
+        }
     }
 
     // A headless run ends once the image shows the last state with enough samples (the screenshot,
@@ -323,6 +452,7 @@ private:
     // kScriptTimeoutSeconds. Returns whether it ended.
     bool script_ended(int n, Clock::time_point now, int fb_width, int fb_height) {
         const bool current = frame_.generation >= submitted_ && frame_.scale == 1 && frame_.samples_per_pixel >= config_.min_samples &&
+                             resize_pending_[0] == 0 &&
                              (!worker_b_ || (frame_b_.scale == 1 && frame_b_.samples_per_pixel >= config_.min_samples)) && !next_worker_;
         if (script_end_ == Clock::time_point{}) script_end_ = now;
         if (current || !worker_->error().empty() || worker_->status() == "no renderer") {
@@ -360,6 +490,9 @@ private:
                 std::this_thread::sleep_for(std::chrono::milliseconds(20));
             std::printf("checks: %s\n", checks_.summary().c_str());
         }
+        if (config_.print_layout)
+            for (const PanelSection& s : sections_)
+                if (s.open) std::printf("section %s: %.0f,%.0f %.0fx%.0f\n", s.name, s.rect.x, s.rect.y, s.rect.w, s.rect.h);
         if (config_.stats)
             std::printf("%ssamples/s in the viewer: %.4g (at %d spp)\n", describe(stats_).c_str(), frame_.samples_per_second, frame_.samples_per_pixel);
     }
@@ -382,7 +515,12 @@ private:
     std::vector<std::pair<uint64_t, Clock::time_point>> waiting_;  // scripted changes not yet on screen
     Clock::time_point last_ = Clock::now(), script_end_{};
     bool retone_ = false;
-    int picked_x_ = -1, picked_y_ = -1;
+    int picked_x_ = -1, picked_y_ = -1;  // of the render, as it is now
+    std::vector<PanelSection> sections_;
+    DisplaySizing sizing_ = config_.sizing;  // the panel can change it
+    WindowLayout layout_;
+    std::string layout_printed_;
+    std::array<int, 2> resize_pending_{0, 0};  // a scripted window size not seen yet
 };
 
 // What the script asked to write on exit: the edited preset, and the material exported to a scene.

@@ -25,6 +25,13 @@ std::string describe(const FrameStats& s) {
                       quantile(s.change_seconds, 1.0) * 1e3);
         out += line;
     }
+    if (!s.display_seconds.empty()) {
+        std::vector<double> per_pixel;
+        for (size_t i = 0; i < s.display_seconds.size(); ++i) per_pixel.push_back(s.display_seconds[i] / std::max(1.0, s.display_pixels[i]));
+        std::snprintf(line, sizeof line, "display: %zu images shown, median %.2f ms each (%.1f ns per pixel: tone map and upload)\n",
+                      s.display_seconds.size(), quantile(s.display_seconds, 0.5) * 1e3, quantile(per_pixel, 0.5) * 1e9);
+        out += line;
+    }
     return out;
 }
 

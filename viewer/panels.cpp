@@ -81,30 +81,31 @@ bool preset_panel(UiState* ui) {
 
 // Mouse over the render: orbit, pan, zoom, turn the environment, pick a pixel to inspect.
 // Returns whether the view changed.
-bool mouse_on_render(UiState* ui, int width, int height, int* picked_x, int* picked_y) {
+bool mouse_on_render(UiState* ui, const Rect& image, int render_width, int render_height, int* picked_x, int* picked_y) {
     ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureMouse || io.MousePos.x < 0 || io.MousePos.x >= float(width) || io.MousePos.y < 0 || io.MousePos.y >= float(height))
-        return false;
+    if (io.WantCaptureMouse || !image.contains(io.MousePos.x, io.MousePos.y)) return false;
     bool changed = false;
     const ImVec2 d = io.MouseDelta;
+    const float divider = image.x + ui->split_x * image.w;
     static bool moving_divider = false;  // one mouse, one window
-    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-        moving_divider = ui->split && std::fabs(io.MousePos.x - ui->split_x * float(width)) < 6.0f;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) moving_divider = ui->split && std::fabs(io.MousePos.x - divider) < 6.0f;
     if (moving_divider && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-        ui->split_x = std::clamp(io.MousePos.x / float(width), 0.0f, 1.0f);
+        ui->split_x = std::clamp((io.MousePos.x - image.x) / image.w, 0.0f, 1.0f);
         return false;  // both renders go on: nothing to restart
     }
+    // Drags pan by screen pixels of the image as drawn, whatever the render's own size.
+    const int drawn_width = std::max(1, int(image.w));
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f) && (d.x != 0.0f || d.y != 0.0f)) {
         if (io.KeyCtrl)
             ui->view.env_rotation_degrees = std::fmod(ui->view.env_rotation_degrees + d.x * 0.5f + 540.0f, 360.0f) - 180.0f;
         else if (io.KeyShift)
-            pan(&ui->view.camera, d.x, d.y, width);
+            pan(&ui->view.camera, d.x, d.y, drawn_width);
         else
             orbit(&ui->view.camera, d.x, d.y);
         changed = true;
     }
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f) && (d.x != 0.0f || d.y != 0.0f)) {
-        pan(&ui->view.camera, d.x, d.y, width);
+        pan(&ui->view.camera, d.x, d.y, drawn_width);
         changed = true;
     }
     if (io.MouseWheel != 0.0f) {
@@ -112,8 +113,8 @@ bool mouse_on_render(UiState* ui, int width, int height, int* picked_x, int* pic
         changed = true;
     }
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
-        *picked_x = int(io.MousePos.x);
-        *picked_y = int(io.MousePos.y);
+        *picked_x = std::min(render_width - 1, int((io.MousePos.x - image.x) * float(render_width) / image.w));
+        *picked_y = std::min(render_height - 1, int((io.MousePos.y - image.y) * float(render_height) / image.h));
     }
     return changed;
 }
@@ -133,7 +134,8 @@ std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState
     kernel::RenderKernelSettings launch_settings;
     if (!worker.kernel_settings(&launch_settings)) return lines;
     try {
-        kernel::Camera camera = render::make_camera(ui.view.camera, config.width, config.height, config.scene.file);
+        const int width = ui.view.width > 0 ? ui.view.width : config.width, height = ui.view.height > 0 ? ui.view.height : config.height;
+        kernel::Camera camera = render::make_camera(ui.view.camera, width, height, config.scene.file);
         PixelProbe p = probe_pixel(config.scene, launch_settings, camera, x, y);
         if (!p.hit) {
             lines.push_back("no surface: the environment");

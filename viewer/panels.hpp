@@ -11,6 +11,7 @@
 #include "viewer/render_worker.hpp"
 #include "viewer/view_state.hpp"
 #include "viewer/viewer_config.hpp"
+#include "viewer/window_layout.hpp"
 
 namespace lab::viewer {
 
@@ -36,8 +37,9 @@ void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* lo
 // whether a preset was loaded (it is then both ui->preset and ui->reference).
 bool preset_panel(UiState* ui);
 // Mouse over the render: orbit, pan, zoom, Ctrl+drag turns the environment, a drag near the A/B
-// divider moves it, right-click picks a pixel. Returns whether the view changed.
-bool mouse_on_render(UiState* ui, int width, int height, int* picked_x, int* picked_y);
+// divider moves it, right-click picks a pixel (of the render_width x render_height render drawn in
+// `image`). Returns whether the view changed.
+bool mouse_on_render(UiState* ui, const Rect& image, int render_width, int render_height, int* picked_x, int* picked_y);
 // The inspector's lines for pixel (x, y): film radiance and samples, then the probe's geometry.
 std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x,
                                        int y);

@@ -265,8 +265,15 @@ bool RenderWorker::take_state(Loop& loop, const ViewState& next, uint64_t next_g
     }
     loop.generation = next_generation;
     loop.first_pass = film::ImageRgb();
+    // A new full size (the window's render area changed): the cost per pixel measured so far still holds.
+    const bool resized = next.width > 0 && next.height > 0 && (next.width != loop.width || next.height != loop.height);
+    if (resized) {
+        loop.width = next.width;
+        loop.height = next.height;
+        loop.row_seconds.assign(size_t(loop.height), 0.0);
+    }
     const int wanted = first_pass_scale(loop.pixel_seconds, kFirstPassShare * chunk_seconds_.load(), loop.width, loop.height);
-    if (wanted != loop.scale) {
+    if (wanted != loop.scale || resized) {
         renderer.resize(loop.width / wanted, loop.height / wanted);  // resets
         loop.scale = wanted;
     }

@@ -16,6 +16,7 @@ struct ViewState {
     float env_rotation_degrees = 0.0f;      // absolute, as ibl::EnvironmentOptions
     float env_exposure_stops = 0.0f;
     bool show_background = true;
+    int width = 0, height = 0;  // the render's full size (the window's render area); 0: the renderer's own
 };
 
 }  // namespace lab::viewer

@@ -13,6 +13,7 @@
 #include "viewer/render_worker.hpp"
 #include "viewer/script.hpp"
 #include "viewer/view_state.hpp"
+#include "viewer/window_layout.hpp"
 
 namespace lab::viewer {
 
@@ -23,7 +24,11 @@ struct ViewerConfig {
     std::function<RenderWorker::RendererFactory(const std::string& env)> factory_for_env;
     ViewState initial;
     scene::Scene scene;                // as the renderer has it: for the pixel inspector's rays
-    int width = 256, height = 256;     // of the render; the window adds the panel beside it
+    int width = 256, height = 256;     // of the render as opened (and its aspect); the window adds the panel beside it
+    int window_width = 0, window_height = 0;  // the window's first size; 0: the render's and the panel's
+    DisplaySizing sizing = DisplaySizing::Render;  // what resizing the window changes
+    long max_render_pixels = 512 * 512;  // under DisplaySizing::Render: larger areas show the render scaled up (docs/viewer.md: what it keeps)
+    std::vector<std::string> open_sections;  // panel sections open from the start (besides Material and Checks); "all"
     int edited_slot = 0;               // the slot the material panel edits
     brdf::Preset preset;               // its material as loaded: what "reset" returns to
     brdf::Preset compare;              // B of the lobe panel's A/B overlay
@@ -41,11 +46,13 @@ struct ViewerConfig {
     std::vector<ScriptedSet> sets;
     std::vector<ScriptedSet> moves;      // --move KEY=VALUE@FRAME: camera and environment changes (viewer/script.hpp)
     std::vector<ScriptedSet> env_loads;  // --load-env PATH@FRAME: as the environment panel's "load map" (key unused)
+    std::vector<ScriptedSet> resizes;    // --resize WxH@FRAME: the window resized, as a window manager does (key unused)
     std::string screenshot;            // PNG of the whole window at the last frame
     std::string save_preset;           // written on exit
     std::string export_scene, export_name;  // written on exit
     std::vector<std::array<int, 2>> inspect;  // pixels whose inspector lines are printed at the end
     bool stats = false;                // print frame times, samples/s and change latency on exit
+    bool print_layout = false;         // print each new layout of the window, and the open sections' places on exit
 };
 
 }  // namespace lab::viewer

@@ -478,6 +478,14 @@ cli_bad_input(NAME view.set_unknown_key EXPECT "${E}--set: roughnes: unknown key
 cli_bad_input(NAME view.set_out_of_range EXPECT "${E}--set: roughness: value 2 is out of range \\[0, 1\\]$" ARGS view --frames 2 --set roughness=2@1)
 cli_bad_input(NAME view.bad_export_target EXPECT "${E}--export-to: expected SCENE\\.json:NAME" ARGS view --export-to nope)
 cli_bad_input(NAME view.move_unknown_key EXPECT "${E}--move: spin: unknown key \\(orbit, env_rotation, env_exposure\\)$" ARGS view --frames 2 --move spin=3@1)
+cli_bad_input(NAME view.window_too_small EXPECT "${E}--window: 300x200 is smaller than the panel and a render beside it \\(504x240 at least\\)$"
+              ARGS view --window 300x200)
+cli_bad_input(NAME view.resize_not_a_size EXPECT "${E}--resize: expected WIDTHxHEIGHT, e\\.g\\. 512x512, got \"wide\"$" ARGS view --frames 2 --resize wide@1)
+cli_bad_input(NAME view.resize_needs_frames EXPECT "${E}--resize: needs --frames \\(a scripted run\\)$" ARGS view --resize 800x600@1)
+cli_bad_input(NAME view.unknown_display EXPECT "${E}--display: unknown value \"stretch\" \\(render, scale\\)$" ARGS view --display stretch)
+cli_bad_input(NAME view.unknown_section EXPECT "${E}--open: unknown section \"Lobes\" \\(Material, Checks, Lobe, Environment, Presets, Inspector, Help, all\\)$"
+              ARGS view --open Lobes)
+cli_bad_input(NAME view.max_render_pixels_too_few EXPECT "${E}--max-render-pixels: must be in \\[64, 268435456\\]$" ARGS view --max-render-pixels 10)
 cli_bad_input(NAME view.move_bad_orbit EXPECT "${E}--move: orbit: expected DX,DY in pixels, got \"3\"$" ARGS view --frames 2 --move orbit=3@1)
 # The window itself, under Xvfb with Mesa's software OpenGL when there is no DISPLAY (skipped, exit
 # 77, when neither is there). The Debian python3: the PNGs are read with its matplotlib.
@@ -485,12 +493,14 @@ find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT VIEW_TEST_PYTHON)
   find_program(VIEW_TEST_PYTHON python3)
 endif()
-foreach(view_case accumulate set preset export env)
+foreach(view_case accumulate set preset export env resize sections frame_time)
   add_test(NAME cli.view.${view_case}
            COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
   # One at a time: xvfb-run -a started twice at once can pick the same display number.
   set_tests_properties(cli.view.${view_case} PROPERTIES LABELS cli TIMEOUT 240 SKIP_RETURN_CODE 77 RESOURCE_LOCK xvfb)
 endforeach()
+# The frame time is the interface's own: no other test shares the two cores while it is measured.
+set_tests_properties(cli.view.frame_time PROPERTIES RUN_SERIAL ON)
 
 # --- fit (docs/fitting.md): a bad measured file and bad options, each one line, no preset written --
 set(FIT fit -o ${PNG}.json --quiet --measured)

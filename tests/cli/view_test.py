@@ -3,7 +3,9 @@
 no DISPLAY): the window opens and samples accumulate, the screenshot shows the model on the backdrop,
 a scripted --set changes the model and not the backdrop, a saved preset loads back identical,
 --export-to writes a scene that `dtoadq render` renders with the material, the rest unchanged, and a
-map loaded in the window replaces the environment, or, when missing, leaves it and shows the error.
+map loaded in the window replaces the environment, or, when missing, leaves it and shows the error;
+a resize changes the render area and the render, every panel section opens without overlap, and the
+interface's median frame time stays within 50 ms at 1280 x 800.
 
 usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
 """
@@ -39,9 +41,9 @@ def run(args, expect_ok=True):
     return p
 
 
-def view(extra, shot):
+def view(extra, shot, frames=4, min_spp=2):
     args = ["view", "--size", "%dx%d" % (SIZE, SIZE), "--device", "host", "--env", ENV, "--ground", "off",
-            "--frames", "4", "--min-spp", "2", "--screenshot", shot] + extra
+            "--frames", str(frames), "--min-spp", str(min_spp), "--screenshot", shot] + extra
     return run(args).stdout
 
 
@@ -151,7 +153,78 @@ def case_env():
     print("env: a missing map keeps the old one and says why; a good one replaces it")
 
 
-CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env}
+LAYOUT = re.compile(r"layout: window (\d+)x(\d+), render area (\d+)x(\d+), image (\d+),(\d+) (\d+)x(\d+), render (\d+)x(\d+), "
+                    r"panel (\d+),(\d+) (\d+)x(\d+), columns (\d)")
+SECTION = re.compile(r"section (\w+): (-?\d+),(-?\d+) (\d+)x(\d+)")
+
+
+def layouts(out):
+    return [tuple(int(g) for g in m.groups()) for m in LAYOUT.finditer(out)]
+
+
+def case_resize():
+    """A resize changes the render area, and the render follows it at its aspect."""
+    out = view(["--seed", "1", "--window", "600x300", "--resize", "700x400@3", "--print-layout"], "resized.png")
+    found = layouts(out)
+    if len(found) != 2:
+        fail("expected the first layout and the resized one: " + out)
+    (w0, h0, aw0, ah0, _, _, iw0, ih0, rw0, rh0, *_), (w1, h1, aw1, ah1, ix1, iy1, iw1, ih1, rw1, rh1, px1, _, pw1, ph1, _) = found
+    if (w0, h0, w1, h1) != (600, 300, 700, 400):
+        fail("the window sizes are not the ones asked for: " + str(found))
+    # The panel keeps its width; the render area takes what the window gained, the render follows it.
+    if (aw1 - aw0, ah1 - ah0) != (100, 100) or (rw0, rh0) != (iw0, ih0) or (rw1, rh1) != (iw1, ih1) or rw1 != rh1 or rw1 <= rw0:
+        fail("the render area and render did not follow the window: " + str(found))
+    if px1 != aw1 or pw1 + aw1 != 700 or ph1 != 400:
+        fail("the panel is not right of the render area: " + str(found))
+    shot = read_png("resized.png")
+    if shot.shape[:2] != (400, 700):
+        fail("the screenshot is %s, not the resized window" % (shot.shape[:2],))
+    # The render fills its square at the top left of the area; below it the window's background.
+    image = shot[iy1:iy1 + ih1, ix1:ix1 + iw1]
+    if image.std() < 5.0 or abs(mean(shot, CORNERS[0]) - [displayed(c) for c in SKY]).max() > 1.0:
+        fail("the render is not drawn in its new place: std %.1f, corner %s" % (image.std(), mean(shot, CORNERS[0])))
+    print("resize: render area %dx%d -> %dx%d, render %dx%d -> %dx%d" % (aw0, ah0, aw1, ah1, rw0, rh0, rw1, rh1))
+
+
+def case_sections():
+    """Every section open at once on a 1920 x 1080 screen: two panel columns, no section over another
+    or outside the panel, and material, checks and lobe wholly in view."""
+    out = view(["--window", "1920x1080", "--open", "all", "--display", "scale", "--print-layout"], "sections.png")
+    found = layouts(out)
+    if not found or found[-1][14] != 2:
+        fail("no two-column layout at 1920x1080: " + out)
+    panel = found[-1][10:14]
+    rects = {m.group(1): tuple(int(g) for g in m.groups()[1:]) for m in SECTION.finditer(out)}
+    names = ["Material", "Checks", "Lobe", "Environment", "Presets", "Inspector", "Help"]
+    if sorted(rects) != sorted(names):
+        fail("not every section is open: " + str(sorted(rects)))
+    for name, (x, y, w, h) in rects.items():
+        if w < 100 or h < 60 or x < panel[0] or x + w > panel[0] + panel[2] or y < 0:
+            fail("section %s at %s is not inside the panel %s" % (name, rects[name], panel))
+    for a in names:
+        for b in names:
+            ra, rb = rects[a], rects[b]
+            if a < b and ra[0] < rb[0] + rb[2] and rb[0] < ra[0] + ra[2] and ra[1] < rb[1] + rb[3] and rb[1] < ra[1] + ra[3]:
+                fail("sections %s %s and %s %s overlap" % (a, ra, b, rb))
+    for name in ("Material", "Checks", "Lobe"):
+        if rects[name][1] + rects[name][3] > 1080:
+            fail("section %s %s is not wholly in view" % (name, rects[name]))
+    print("sections: %s" % rects)
+
+
+def case_frame_time():
+    """The interface's median frame time at 1280 x 800 with material, checks and lobe open, rendering."""
+    out = view(["--window", "1280x800", "--open", "Lobe", "--stats"], "frames.png", frames=120, min_spp=1)
+    m = re.search(r"interface: (\d+) frames, median ([0-9.]+) ms", out)
+    if not m:
+        fail("no frame times: " + out)
+    if float(m.group(2)) > 50.0:
+        fail("the median frame time is %s ms, over 50 ms: %s" % (m.group(2), out))
+    print("frame time: " + m.group(0))
+
+
+CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env,
+         "resize": case_resize, "sections": case_sections, "frame_time": case_frame_time}
 
 if __name__ == "__main__":
     if not os.environ.get("DISPLAY"):
@@ -159,7 +232,7 @@ if __name__ == "__main__":
             print("SKIP: no DISPLAY and no xvfb-run (install xvfb: tools/install-deps.sh)")
             sys.exit(SKIP)
         # -a: a free display number, so parallel tests do not collide
-        sys.exit(subprocess.call(["xvfb-run", "-a", "-s", "-screen 0 640x640x24", sys.executable] + sys.argv))
+        sys.exit(subprocess.call(["xvfb-run", "-a", "-s", "-screen 0 1920x1080x24", sys.executable] + sys.argv))
     os.makedirs(SCRATCH, exist_ok=True)
     for name in (sys.argv[3:] or CASES):
         CASES[name]()
