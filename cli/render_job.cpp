@@ -11,6 +11,7 @@
 #include "render/interrupt.hpp"
 #include "render/opencl_renderer.hpp"
 #include "render/scene_environment.hpp"
+#include "scene/look_dev_references.hpp"
 #include "scene/load_scene.hpp"
 #include "scene/test_model.hpp"
 
@@ -34,6 +35,10 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
     cmd.add_option("--max-steps", o->max_steps, "Sphere-tracing steps per ray before it counts as lost")->capture_default_str();
     cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain; a scene that is not a distance bound uses 1)")->capture_default_str();
     cmd.add_option("--seed", o->seed, "Seed of the random numbers (same seed, same image)")->capture_default_str();
+    cmd.add_option("--references", o->references,
+                   "Look-dev references in the view's lower corners: none, all, or a list of chrome (a chrome ball), grey (an 18 % grey "
+                   "ball), chart (a ColorChecker)")
+        ->capture_default_str();
     cmd.add_option("--device", o->device,
                    "OpenCL device: P:D, gpu, cpu or part of its name (dtoadq devices lists them); host: the C++ build on the CPU's threads");
 }
@@ -93,6 +98,7 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     require_within(o.env_rotation, "--env-rotation", -36000.0f, 36000.0f);
     require_within(o.env_exposure, "--env-exposure", -64.0f, 64.0f);
     parse_on_off(o.ground, "--ground");
+    scene::parse_look_dev_references(o.references, "--references");
     settings.object_bounds = parse_on_off(o.object_bounds, "--object-bounds");
     if (o.geometry != "auto" && o.geometry != "march") throw InputError("--geometry", "", "expected auto or march, got \"" + o.geometry + "\"");
     settings.march_everything = o.geometry == "march";
@@ -114,6 +120,8 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     if (!parse_on_off(o.ground, "--ground")) compile.disabled_objects.push_back(scene::kGroundObject);
     compile.march_everything = settings.march_everything;  // the scene as the renderer has it (the viewer's probe reads it)
     scene::Scene scene = scene::apply_options(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), compile);
+    scene = scene::with_look_dev_references(scene, scene::parse_look_dev_references(o.references, "--references"),
+                                            float(settings.width) / float(settings.height));
 
     std::string env_name;
     std::optional<ibl::Environment> environment = load_job_environment(o, scene, &env_name);
@@ -124,6 +132,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     job.env_rotation = o.env_rotation;
     job.env_exposure = o.env_exposure;
     job.ground = parse_on_off(o.ground, "--ground");
+    job.references = o.references;
     job.input.scene = std::move(scene);
     job.input.environment = std::move(environment);
     job.input.settings = settings;
@@ -150,6 +159,7 @@ film::ImageMetadata job_metadata(const RenderJob& job, const render::Renderer& r
     m.set("env_rotation", job.env_rotation);
     m.set("env_exposure", job.env_exposure);
     m.set("ground", job.ground ? "on" : "off");
+    m.set("references", job.references);
     return m;
 }
 

@@ -27,6 +27,7 @@ struct RenderJobOptions {
     float env_exposure = 0.0f;
     std::string size = "512x512";
     std::string ground = "on";
+    std::string references = "none";  // look-dev references (scene/look_dev_references.hpp)
     std::string integrator = "pt";
     std::string light_sampling = "mis";
     std::string light_sampling_option = "--light-sampling";  // the flag that gave it, for errors
@@ -52,6 +53,7 @@ struct RenderJob {
     std::string scene_name, material_name, environment_name;
     float env_rotation = 0.0f, env_exposure = 0.0f;  // the options' (a scene's own are in its file)
     bool ground = true;
+    std::string references = "none";
     std::string description;  // one line: material, scene, environment, size, integrator, sampling
 };
 

@@ -105,7 +105,8 @@ struct EnvironmentSpec {
     float exposure = 0.0f;            // stops
 };
 
-// A material slot: declared materials first (in file order), then one per emissive sphere.
+// A material slot: declared materials first (in file order), then one per emissive sphere, then
+// the look-dev references' when they are added (scene/look_dev_references.hpp).
 struct MaterialSlot {
     std::string name;        // the declared name, or "emitters[k]"
     std::string source;      // the preset file it came from, or "inline" / "emitter"

@@ -286,6 +286,8 @@ cli_bad_input(NAME preview.unknown_sampling ABSENT ${PNG} EXPECT "${E}--ibl-samp
               ARGS ${PREVIEW} --ibl-sampling light)
 cli_bad_input(NAME preview.unknown_normals ABSENT ${PNG} EXPECT "${E}--normals: unknown value \"sobel\" \\(tetrahedral, central, analytic\\)$"
               ARGS ${PREVIEW} --normals sobel)
+cli_bad_input(NAME preview.unknown_reference ABSENT ${PNG} EXPECT "${E}--references: unknown reference \"teapot\" \\(none, all, or a list of chrome, grey, chart\\)$"
+              ARGS ${PREVIEW} --references grey,teapot)
 cli_bad_input(NAME preview.ground_word ABSENT ${PNG} EXPECT "${E}--ground: expected on or off, got \"maybe\"$"
               ARGS ${PREVIEW} --ground maybe)
 cli_bad_input(NAME preview.unknown_tonemap ABSENT ${PNG} EXPECT "${E}--tonemap: unknown tone map \"filmic\""
