@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
+#include "scene/look_dev_references.hpp"
 #include "scene/test_model.hpp"
 #include "viewer/app.hpp"
 #include "viewer/material_edit.hpp"
@@ -25,7 +26,7 @@ namespace {
 struct ViewOptions {
     RenderJobOptions job;
     std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces", window, display = "render";
-    std::vector<std::string> sets, moves, inspect, env_loads, resizes, open_sections;
+    std::vector<std::string> sets, moves, inspect, env_loads, reference_loads, resizes, open_sections;
     long max_render_pixels = 512 * 512;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
@@ -77,6 +78,8 @@ void run_view(const ViewOptions& o) {
     config.preset.material = config.initial.materials[size_t(config.edited_slot)];
     config.initial.camera = scene.camera;
     config.scene = scene;
+    config.base_scene = job->base_scene;
+    config.references = scene::parse_look_dev_references(o.job.references, "--references");
     if (job->input.environment) {
         config.initial.env_rotation_degrees = job->input.environment->rotation_degrees();
         config.initial.env_exposure_stops = job->input.environment->exposure_stops();
@@ -127,6 +130,12 @@ void run_view(const ViewOptions& o) {
         if (o.frames == 0) throw InputError("--load-env", "", "needs --frames (a scripted run)");
         config.env_loads.push_back(load);
     }
+    for (const std::string& text : o.reference_loads) {
+        viewer::ScriptedSet load = viewer::parse_scripted_set("references=" + text);  // LIST@FRAME
+        if (o.frames == 0) throw InputError("--load-references", "", "needs --frames (a scripted run)");
+        scene::parse_look_dev_references(load.value, "--load-references");
+        config.reference_loads.push_back(load);
+    }
     for (const std::string& text : o.inspect) {
         int x = -1, y = -1;
         char tail = 0;
@@ -161,12 +170,19 @@ void run_view(const ViewOptions& o) {
     const std::string device = o.job.device;
     config.make_renderer = [job, device, runtimes] { return runtimes->make(*job, device); };
     const RenderJobOptions job_options = o.job;
-    config.factory_for_env = [job_options, device, runtimes](const std::string& env) -> viewer::RenderWorker::RendererFactory {
-        return [job_options, env, device, runtimes] {
-            RenderJobOptions with_env = job_options;
-            with_env.env = env;
-            with_env.env_rotation = with_env.env_exposure = 0.0f;  // the viewer's own values are applied next
-            RenderJob job = prepare_render_job(with_env);        // throws for a missing or bad map
+    config.factory_for = [job_options, device, runtimes](const std::string& env,
+                                                         const scene::LookDevReferences& references) -> viewer::RenderWorker::RendererFactory {
+        std::string words;  // the --references words of `references`
+        for (const auto& [on, word] : {std::pair{references.chrome_ball, "chrome"}, {references.grey_ball, "grey"}, {references.color_chart, "chart"}})
+            if (on) words += (words.empty() ? "" : ",") + std::string(word);
+        return [job_options, env, words, device, runtimes] {
+            RenderJobOptions options = job_options;
+            if (!env.empty()) {
+                options.env = env;
+                options.env_rotation = options.env_exposure = 0.0f;  // the viewer's own values are applied next
+            }
+            options.references = words.empty() ? "none" : words;
+            RenderJob job = prepare_render_job(options);  // throws for a missing or bad map
             return runtimes->make(job, device);
         };
     };
@@ -197,6 +213,8 @@ void register_view(CLI::App& app) {
     cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
     cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");
     cmd->add_option("--load-env", o->env_loads, "Headless: PATH@FRAME, load an environment map at a frame as the panel does (errors are shown, not fatal)");
+    cmd->add_option("--load-references", o->reference_loads,
+                    "Headless: LIST@FRAME, the look-dev references switched at a frame as the environment panel does (none, all, or chrome,grey,chart)");
     cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
     cmd->add_flag("--split", o->split, "Start in the A/B split view (B: --compare)");
     cmd->add_option("--window", o->window, "The window's first size, WxH (default: the render's size and the panel's)");

@@ -120,6 +120,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     if (!parse_on_off(o.ground, "--ground")) compile.disabled_objects.push_back(scene::kGroundObject);
     compile.march_everything = settings.march_everything;  // the scene as the renderer has it (the viewer's probe reads it)
     scene::Scene scene = scene::apply_options(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), compile);
+    scene::Scene base_scene = scene;
     scene = scene::with_look_dev_references(scene, scene::parse_look_dev_references(o.references, "--references"),
                                             float(settings.width) / float(settings.height));
 
@@ -133,6 +134,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     job.env_exposure = o.env_exposure;
     job.ground = parse_on_off(o.ground, "--ground");
     job.references = o.references;
+    job.base_scene = std::move(base_scene);
     job.input.scene = std::move(scene);
     job.input.environment = std::move(environment);
     job.input.settings = settings;

@@ -54,6 +54,7 @@ struct RenderJob {
     float env_rotation = 0.0f, env_exposure = 0.0f;  // the options' (a scene's own are in its file)
     bool ground = true;
     std::string references = "none";
+    scene::Scene base_scene;  // input.scene without the look-dev references (the viewer adds and removes them)
     std::string description;  // one line: material, scene, environment, size, integrator, sampling
 };
 

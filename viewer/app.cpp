@@ -112,6 +112,7 @@ int last_scripted_frame(const ViewerConfig& config) {
     for (const ScriptedSet& s : config.sets) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.moves) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.env_loads) last_frame = std::max(last_frame, s.frame + 1);
+    for (const ScriptedSet& s : config.reference_loads) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.resizes) last_frame = std::max(last_frame, s.frame + 1);
     return last_frame;
 }
@@ -257,12 +258,37 @@ private:
         return true;
     }
 
-    // A new map: the old renderer shows until the new one is ready; a failure keeps the old. B
-    // runs while the split view is on.
+    // The view state for a worker rendering `s`: the edited slots of the scene, then the look-dev
+    // references' own (their slots come last: scene/look_dev_references.hpp).
+    ViewState view_for(const scene::Scene& s) const {
+        ViewState v = ui_.view;
+        v.materials.resize(config_.base_scene.materials.size());
+        for (size_t i = v.materials.size(); i < s.materials.size(); ++i) v.materials.push_back(s.materials[i].material);
+        return v;
+    }
+
+    // A renderer under another map or with other references, made on a worker of its own while the
+    // current one keeps showing.
+    void start_next_worker(const std::string& env, const scene::LookDevReferences& references) {
+        if (!config_.factory_for) return;
+        next_env_ = env;
+        next_references_ = references;
+        next_scene_ = scene::with_look_dev_references(config_.base_scene, references, float(config_.width) / float(config_.height));
+        next_factory_ = config_.factory_for(env, references);
+        next_worker_ = std::make_unique<RenderWorker>(next_factory_, view_for(next_scene_), config_.chunk_seconds, config_.max_samples);
+        ui_.message.clear();
+    }
+
+    // A new map or new references: the old renderer shows until the new one is ready; a failure
+    // keeps the old. B runs while the split view is on.
     void follow_workers() {
         if (next_worker_ && next_worker_->ready()) {
             worker_ = std::move(next_worker_);
             factory_ = next_factory_;
+            scene_ = next_scene_;
+            references_ = next_references_;
+            env_ = next_env_;
+            ui_.view = view_for(scene_);  // the edits made while it loaded, its own references
             frame_.sequence = 0;
             if (worker_b_) {
                 worker_b_ = std::make_unique<RenderWorker>(factory_, state_b(), config_.chunk_seconds, config_.max_samples);
@@ -272,6 +298,7 @@ private:
         } else if (next_worker_ && next_worker_->status() == "no renderer") {
             ui_.message = next_worker_->error();
             next_worker_.reset();
+            shown_references_ = references_;  // the boxes show what is rendered
         }
         if (ui_.split && !worker_b_) {
             worker_b_ = std::make_unique<RenderWorker>(factory_, state_b(), config_.chunk_seconds, config_.max_samples);
@@ -384,11 +411,13 @@ private:
         }
         for (const ScriptedSet& s : config_.env_loads)
             if (s.frame == n) load_env = s.value;
-        if (!load_env.empty() && config_.factory_for_env) {
-            next_factory_ = config_.factory_for_env(load_env);
-            next_worker_ = std::make_unique<RenderWorker>(next_factory_, ui_.view, config_.chunk_seconds, config_.max_samples);
-            ui_.message.clear();
-        }
+        for (const ScriptedSet& s : config_.reference_loads)
+            if (s.frame == n) {
+                shown_references_ = scene::parse_look_dev_references(s.value, "--load-references");  // checked before the window opened
+                references_ticked_ = true;
+            }
+        if (!load_env.empty() || references_ticked_) start_next_worker(load_env.empty() ? env_ : load_env, shown_references_);
+        references_ticked_ = false;
         ImGui::End();
         return changed;
     }
@@ -434,14 +463,14 @@ private:
             break;
         case kChecks: checks_.draw(); break;
         case kLobe: lobes_.draw(); break;
-        case kEnvironment: environment_panel(&ui_, changed, &retone_, load_env); break;
+        case kEnvironment: environment_panel(&ui_, changed, &retone_, load_env, &shown_references_, &references_ticked_); break;
         case kPresets:
             if (preset_panel(&ui_)) {
                 material_edited();
                 *changed = true;
             }
             break;
-        case kInspector: inspector_panel(config_, ui_, frame_, *worker_, picked_x_, picked_y_); break;
+        case kInspector: inspector_panel(config_, scene_, ui_, frame_, *worker_, picked_x_, picked_y_); break;
         case kHelp: help_panel(); break;
         case kSectionCount: break;
         }
@@ -463,7 +492,7 @@ private:
             if (!ui_.message.empty()) std::printf("view: message: %s\n", ui_.message.c_str());
             for (const std::array<int, 2>& px : config_.inspect) {
                 std::string joined;
-                for (const std::string& l : inspect_pixel(config_, ui_, frame_, *worker_, px[0], px[1])) joined += (joined.empty() ? "" : "; ") + l;
+                for (const std::string& l : inspect_pixel(config_, scene_, ui_, frame_, *worker_, px[0], px[1])) joined += (joined.empty() ? "" : "; ") + l;
                 std::printf("inspect: %s\n", joined.c_str());
             }
             return true;
@@ -508,6 +537,11 @@ private:
     ValidationBadges checks_;
     GlTexture texture_, texture_b_;
     RenderWorker::RendererFactory factory_, next_factory_;
+    scene::Scene scene_ = config_.scene, next_scene_;  // what worker_ and next_worker_ render
+    scene::LookDevReferences references_ = config_.references, next_references_;
+    scene::LookDevReferences shown_references_ = config_.references;  // the panel's boxes
+    bool references_ticked_ = false;
+    std::string env_, next_env_;  // the map loaded last (empty: the one the viewer opened with)
     std::unique_ptr<RenderWorker> worker_;
     std::unique_ptr<RenderWorker> next_worker_, worker_b_;  // a new map being loaded; B of the split view
     RenderFrame frame_, frame_b_;

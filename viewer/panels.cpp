@@ -15,7 +15,8 @@
 
 namespace lab::viewer {
 
-void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* load_env) {
+void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* load_env, scene::LookDevReferences* references,
+                       bool* references_changed) {
     // The maps in envmaps/ (from the working folder), or any path typed in.
     std::error_code ec;
     std::vector<std::string> maps;
@@ -41,6 +42,13 @@ void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* lo
         *retone = true;
     }
     *retone |= ImGui::SliderFloat("display exposure", &ui->display_exposure, -8.0f, 8.0f, "%.2f");
+    ImGui::TextUnformatted("references:");
+    ImGui::SameLine();
+    *references_changed |= ImGui::Checkbox("chrome ball", &references->chrome_ball);
+    ImGui::SameLine();
+    *references_changed |= ImGui::Checkbox("grey ball", &references->grey_ball);
+    ImGui::SameLine();
+    *references_changed |= ImGui::Checkbox("chart", &references->color_chart);
 }
 
 bool preset_panel(UiState* ui) {
@@ -120,8 +128,8 @@ bool mouse_on_render(UiState* ui, const Rect& image, int render_width, int rende
 }
 
 // The inspector's lines for pixel (x, y): film radiance and samples, then the probe's geometry.
-std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x,
-                                       int y) {
+std::vector<std::string> inspect_pixel(const ViewerConfig& config, const scene::Scene& scene, const UiState& ui, const RenderFrame& frame,
+                                       const RenderWorker& worker, int x, int y) {
     std::vector<std::string> lines;
     char line[256];
     std::snprintf(line, sizeof line, "pixel %d,%d", x, y);
@@ -135,8 +143,8 @@ std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState
     if (!worker.kernel_settings(&launch_settings)) return lines;
     try {
         const int width = ui.view.width > 0 ? ui.view.width : config.width, height = ui.view.height > 0 ? ui.view.height : config.height;
-        kernel::Camera camera = render::make_camera(ui.view.camera, width, height, config.scene.file);
-        PixelProbe p = probe_pixel(config.scene, launch_settings, camera, x, y);
+        kernel::Camera camera = render::make_camera(ui.view.camera, width, height, scene.file);
+        PixelProbe p = probe_pixel(scene, launch_settings, camera, x, y);
         if (!p.hit) {
             lines.push_back("no surface: the environment");
             return lines;
@@ -145,8 +153,8 @@ std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState
         lines.push_back(line);
         std::snprintf(line, sizeof line, "normal %.3f %.3f %.3f", p.normal.x, p.normal.y, p.normal.z);
         lines.push_back(line);
-        const bool named = p.material >= 0 && size_t(p.material) < config.scene.materials.size();
-        std::snprintf(line, sizeof line, "material slot %d (%s)", p.material, named ? config.scene.materials[size_t(p.material)].name.c_str() : "?");
+        const bool named = p.material >= 0 && size_t(p.material) < scene.materials.size();
+        std::snprintf(line, sizeof line, "material slot %d (%s)", p.material, named ? scene.materials[size_t(p.material)].name.c_str() : "?");
         lines.push_back(line);
     } catch (const std::exception& e) {
         lines.push_back(e.what());
@@ -154,12 +162,13 @@ std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState
     return lines;
 }
 
-void inspector_panel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x, int y) {
+void inspector_panel(const ViewerConfig& config, const scene::Scene& scene, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker,
+                     int x, int y) {
     if (x < 0) {
         ImGui::TextUnformatted("right-click a pixel of the render");
         return;
     }
-    for (const std::string& line : inspect_pixel(config, ui, frame, worker, x, y)) ImGui::TextUnformatted(line.c_str());
+    for (const std::string& line : inspect_pixel(config, scene, ui, frame, worker, x, y)) ImGui::TextUnformatted(line.c_str());
 }
 
 void help_panel() {

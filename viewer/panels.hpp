@@ -31,8 +31,11 @@ struct UiState {
 };
 
 // Environment: rotation, light exposure, background, tone map, display exposure; a map from
-// envmaps/ or a path (*load_env gets it: the window swaps renderers once the new one is ready).
-void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* load_env);
+// envmaps/ or a path (*load_env gets it: the window swaps renderers once the new one is ready);
+// the look-dev references (*references; *references_changed when a box was ticked, for a new
+// renderer the same way).
+void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* load_env, scene::LookDevReferences* references,
+                       bool* references_changed);
 // Load (a bad file leaves everything as it was and says why), save, export to scene; returns
 // whether a preset was loaded (it is then both ui->preset and ui->reference).
 bool preset_panel(UiState* ui);
@@ -41,9 +44,11 @@ bool preset_panel(UiState* ui);
 // `image`). Returns whether the view changed.
 bool mouse_on_render(UiState* ui, const Rect& image, int render_width, int render_height, int* picked_x, int* picked_y);
 // The inspector's lines for pixel (x, y): film radiance and samples, then the probe's geometry.
-std::vector<std::string> inspect_pixel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x,
-                                       int y);
-void inspector_panel(const ViewerConfig& config, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker, int x, int y);
+// `scene` is the one the worker renders (with its look-dev references).
+std::vector<std::string> inspect_pixel(const ViewerConfig& config, const scene::Scene& scene, const UiState& ui, const RenderFrame& frame,
+                                       const RenderWorker& worker, int x, int y);
+void inspector_panel(const ViewerConfig& config, const scene::Scene& scene, const UiState& ui, const RenderFrame& frame, const RenderWorker& worker,
+                     int x, int y);
 void help_panel();
 
 }  // namespace lab::viewer

@@ -9,6 +9,7 @@
 
 #include "brdf/host/preset.hpp"
 #include "film/tone_map.hpp"
+#include "scene/look_dev_references.hpp"
 #include "scene/scene.hpp"
 #include "viewer/render_worker.hpp"
 #include "viewer/script.hpp"
@@ -19,11 +20,14 @@ namespace lab::viewer {
 
 struct ViewerConfig {
     RenderWorker::RendererFactory make_renderer;
-    // The factory of a renderer under another environment map (the environment panel); its errors
-    // (a missing or bad map) come from the worker that calls it.
-    std::function<RenderWorker::RendererFactory(const std::string& env)> factory_for_env;
+    // The factory of a renderer under another environment map (empty: the one the viewer opened
+    // with) and with other look-dev references (the environment panel); its errors (a missing or bad
+    // map) come from the worker that calls it.
+    std::function<RenderWorker::RendererFactory(const std::string& env, const scene::LookDevReferences& references)> factory_for;
     ViewState initial;
     scene::Scene scene;                // as the renderer has it: for the pixel inspector's rays
+    scene::Scene base_scene;           // the same without look-dev references
+    scene::LookDevReferences references;  // those in `scene`
     int width = 256, height = 256;     // of the render as opened (and its aspect); the window adds the panel beside it
     int window_width = 0, window_height = 0;  // the window's first size; 0: the render's and the panel's
     DisplaySizing sizing = DisplaySizing::Render;  // what resizing the window changes
@@ -46,6 +50,7 @@ struct ViewerConfig {
     std::vector<ScriptedSet> sets;
     std::vector<ScriptedSet> moves;      // --move KEY=VALUE@FRAME: camera and environment changes (viewer/script.hpp)
     std::vector<ScriptedSet> env_loads;  // --load-env PATH@FRAME: as the environment panel's "load map" (key unused)
+    std::vector<ScriptedSet> reference_loads;  // --load-references LIST@FRAME: as the environment panel's checkboxes (key unused)
     std::vector<ScriptedSet> resizes;    // --resize WxH@FRAME: the window resized, as a window manager does (key unused)
     std::string screenshot;            // PNG of the whole window at the last frame
     std::string save_preset;           // written on exit

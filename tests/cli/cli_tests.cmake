@@ -480,6 +480,8 @@ cli_bad_input(NAME view.set_unknown_key EXPECT "${E}--set: roughnes: unknown key
 cli_bad_input(NAME view.set_out_of_range EXPECT "${E}--set: roughness: value 2 is out of range \\[0, 1\\]$" ARGS view --frames 2 --set roughness=2@1)
 cli_bad_input(NAME view.bad_export_target EXPECT "${E}--export-to: expected SCENE\\.json:NAME" ARGS view --export-to nope)
 cli_bad_input(NAME view.move_unknown_key EXPECT "${E}--move: spin: unknown key \\(orbit, env_rotation, env_exposure\\)$" ARGS view --frames 2 --move spin=3@1)
+cli_bad_input(NAME view.unknown_reference_load EXPECT "${E}--load-references: unknown reference \"ball\" \\(none, all, or a list of chrome, grey, chart\\)$"
+              ARGS view --frames 2 --load-references ball@1)
 cli_bad_input(NAME view.window_too_small EXPECT "${E}--window: 300x200 is smaller than the panel and a render beside it \\(504x240 at least\\)$"
               ARGS view --window 300x200)
 cli_bad_input(NAME view.resize_not_a_size EXPECT "${E}--resize: expected WIDTHxHEIGHT, e\\.g\\. 512x512, got \"wide\"$" ARGS view --frames 2 --resize wide@1)
@@ -495,7 +497,7 @@ find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT VIEW_TEST_PYTHON)
   find_program(VIEW_TEST_PYTHON python3)
 endif()
-foreach(view_case accumulate set preset export env resize sections frame_time)
+foreach(view_case accumulate set preset export env references resize sections frame_time)
   add_test(NAME cli.view.${view_case}
            COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
   # One at a time: xvfb-run -a started twice at once can pick the same display number.

@@ -4,7 +4,7 @@ no DISPLAY): the window opens and samples accumulate, the screenshot shows the m
 a scripted --set changes the model and not the backdrop, a saved preset loads back identical,
 --export-to writes a scene that `dtoadq render` renders with the material, the rest unchanged, and a
 map loaded in the window replaces the environment, or, when missing, leaves it and shows the error;
-a resize changes the render area and the render, every panel section opens without overlap, and the
+the look-dev references come and go, a resize changes the render area and the render, every panel section opens without overlap, and the
 interface's median frame time stays within 50 ms at 1280 x 800.
 
 usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
@@ -153,6 +153,18 @@ def case_env():
     print("env: a missing map keeps the old one and says why; a good one replaces it")
 
 
+def case_references():
+    """The look-dev references switched on and off in the window: the grey ball's pixel (at 0.73, 0.86
+    of the view: scene/look_dev_references.hpp) shows it, then the sky again."""
+    out = view(["--load-references", "grey@1", "--inspect", "46,55"], "refs_on.png")
+    if not re.search(r"inspect: pixel 46,55; radiance .*; material slot \d+ \(reference_grey\)", out):
+        fail("the grey ball did not appear: " + out)
+    out = view(["--references", "all", "--load-references", "none@1", "--inspect", "46,55"], "refs_off.png")
+    if not re.search(r"inspect: pixel 46,55; radiance 0.2 0.4 1 .*; no surface: the environment", out):
+        fail("the references did not go: " + out)
+    print("references: the grey ball comes and goes")
+
+
 LAYOUT = re.compile(r"layout: window (\d+)x(\d+), render area (\d+)x(\d+), image (\d+),(\d+) (\d+)x(\d+), render (\d+)x(\d+), "
                     r"panel (\d+),(\d+) (\d+)x(\d+), columns (\d)")
 SECTION = re.compile(r"section (\w+): (-?\d+),(-?\d+) (\d+)x(\d+)")
@@ -224,7 +236,7 @@ def case_frame_time():
 
 
 CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env,
-         "resize": case_resize, "sections": case_sections, "frame_time": case_frame_time}
+         "references": case_references, "resize": case_resize, "sections": case_sections, "frame_time": case_frame_time}
 
 if __name__ == "__main__":
     if not os.environ.get("DISPLAY"):
