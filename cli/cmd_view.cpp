@@ -11,6 +11,7 @@
 #include "brdf/host/preset.hpp"
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
+#include "cli/turntable.hpp"
 #include "common/input_error.hpp"
 #include "scene/look_dev_references.hpp"
 #include "scene/test_model.hpp"
@@ -28,6 +29,7 @@ struct ViewOptions {
     std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces", window, display = "render";
     std::vector<std::string> sets, moves, inspect, env_loads, reference_loads, resizes, open_sections;
     long max_render_pixels = 512 * 512;
+    TurntableOptions turntable;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
@@ -51,6 +53,13 @@ void parse_window_size(const std::string& text, const std::string& option, int* 
 const char* const kSectionNames[] = {"Material", "Checks", "Lobe", "Environment", "Presets", "Inspector", "Help", "all"};
 
 void run_view(const ViewOptions& o) {
+    if (o.turntable.frames != 0) {  // headless: no window
+        TurntableOptions t = o.turntable;
+        t.tone_map = o.tone_map;
+        t.exposure = o.exposure;
+        render_turntable(o.job, t);
+        return;
+    }
     film::ToneMap tone_map = film::parse_tone_map(o.tone_map);
     if (o.frames < 0 || o.frames > 10000000) throw InputError("--frames", "", "must be in [0, 10000000]");
     if (o.min_spp < 1 || o.min_spp > o.max_spp) throw InputError("--min-spp", "", "must be in [1, --max-spp]");
@@ -228,6 +237,14 @@ void register_view(CLI::App& app) {
     cmd->add_option("--resize", o->resizes, "Headless: WxH@FRAME, the window resized at a frame as a window manager does (repeatable)");
     cmd->add_flag("--stats", o->stats, "Print interface frame times, samples/s and change-to-frame latency on exit");
     cmd->add_flag("--print-layout", o->print_layout, "Print each new layout of the window, and where the open panel sections are on exit");
+    cmd->add_option("--turntable", o->turntable.frames,
+                    "N: no window; render one turn in N frames (--turn, --spp) to -o, a video (.mp4, made with FFmpeg) or frames (frame_%04d.png or .exr)");
+    cmd->add_option("--turn", o->turntable.turn, "With --turntable: model (it turns under fixed lighting) or environment (the map turns)")
+        ->capture_default_str();
+    cmd->add_option("--spp", o->turntable.spp, "With --turntable: samples per pixel of each frame")->capture_default_str();
+    cmd->add_option("--fps", o->turntable.fps, "With --turntable: frames per second of the video")->capture_default_str();
+    cmd->add_option("-o,--output", o->turntable.output, "With --turntable: the video (.mp4) or the frames' pattern (frame_%04d.png or .exr)");
+    cmd->add_flag("--quiet", o->turntable.quiet, "With --turntable: no line per frame");
     cmd->add_option("--max-spp", o->max_spp, "Stop accumulating at this many samples per pixel")->capture_default_str();
     cmd->add_option("--chunk-ms", o->chunk_ms, "Render time per chunk between published images, ms")->capture_default_str();
     cmd->add_option("--tonemap", o->tone_map, "Display tone map: aces, reinhard or clamp")->capture_default_str();

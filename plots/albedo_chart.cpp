@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "common/child_process.hpp"
 #include "common/input_error.hpp"
 #include "plots/output_file.hpp"
 #include "plots/python_runner.hpp"
@@ -46,7 +47,7 @@ void write_albedo_chart(const std::vector<brdf::Preset>& presets, const std::vec
     if (presets.empty() || curves.size() != presets.size()) throw std::invalid_argument("albedo chart: no materials, or not one curve each");
     require_writable(png_path, "");
     if (!csv_path.empty()) require_writable(csv_path, "");
-    TempFolder folder;
+    TempFolder folder("plot");
     write_table(presets, curves, (folder.path() / "albedo.csv").string(), "");
     fs::path png = folder.path() / "albedo.png";
     char phi[32];

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "common/child_process.hpp"
 #include "analysis/lobe_data.hpp"
 #include "plots/output_file.hpp"
 #include "plots/python_runner.hpp"
@@ -27,7 +28,7 @@ void write_fit_chart(const brdf::MeasuredTable& table, const brdf::Preset& fitte
     if (data.error_map.size() != std::size_t(MERL_THETA_H_BINS) * MERL_THETA_D_BINS)
         throw std::invalid_argument("fit chart: the error map has the wrong size");
     require_writable(png_path, "--chart");
-    TempFolder folder;
+    TempFolder folder("plot");
     {
         std::ofstream lobes = open_output((folder.path() / "lobes.csv").string(), "");
         lobes << "theta_in_deg,angle_deg,measured,fitted\n";

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "common/child_process.hpp"
 #include "analysis/lobe_data.hpp"
 #include "analysis/luminance.hpp"
 #include "common/input_error.hpp"
@@ -82,7 +83,7 @@ void write_lobe_plot(const std::vector<brdf::Preset>& presets, float theta_in_de
 
     std::vector<analysis::LobeData> lobes;
     for (const brdf::Preset& p : presets) lobes.push_back(analysis::compute_lobe(p, theta_in_deg, phi_in_deg, kPlotResolution));
-    TempFolder folder;
+    TempFolder folder("plot");
     write_plot_data(lobes, folder.path());
     fs::path png = folder.path() / "lobe.png";
     std::vector<std::string> args = {"--data", folder.path().string(), "--out", png.string(), "--theta-in", number(theta_in_deg),

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "common/child_process.hpp"
 #include "common/input_error.hpp"
 #include "plots/output_file.hpp"
 #include "plots/python_runner.hpp"
@@ -13,7 +14,7 @@ namespace fs = std::filesystem;
 void write_preview_sheet(const std::vector<SheetImage>& images, const std::string& title, const std::string& png_path) {
     if (images.empty()) throw std::invalid_argument("preview sheet: no images");
     require_writable(png_path, "");
-    TempFolder folder;
+    TempFolder folder("plot");
     const fs::path list = folder.path() / "images.csv";
     {
         std::ofstream out = open_output(list.string(), "");

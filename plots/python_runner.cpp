@@ -1,21 +1,13 @@
 #include "plots/python_runner.hpp"
 
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <string_view>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
+#include "common/child_process.hpp"
 #include "common/input_error.hpp"
 #include "plots/output_file.hpp"
-
-extern char** environ;
 
 namespace lab::plots {
 
@@ -26,48 +18,6 @@ const std::vector<std::string_view>& embedded_paths();
 }  // namespace embedded
 
 namespace fs = std::filesystem;
-
-namespace {
-
-// Runs argv (looked up on PATH when it has no slash) with both output streams sent to `log`.
-// Returns the exit status, or -1 when it could not be started or was killed.
-int run_process(const std::vector<std::string>& argv, const std::string& log) {
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-
-    std::vector<std::string> env_text;
-    for (char** e = environ; *e; ++e)
-        if (std::strncmp(*e, "MPLBACKEND=", 11) != 0) env_text.push_back(*e);
-    env_text.push_back("MPLBACKEND=Agg");  // never try to open a window
-    std::vector<char*> env;
-    for (std::string& e : env_text) env.push_back(e.data());
-    env.push_back(nullptr);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    pid_t pid;
-    int rc = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), env.data());
-    posix_spawn_file_actions_destroy(&actions);
-    if (rc != 0) return -1;
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string last_line(const fs::path& file) {
-    std::ifstream in(file);
-    std::string line, last;
-    while (std::getline(in, line))
-        if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-    return last;
-}
-
-}  // namespace
 
 std::vector<std::string> python_candidates() {
     std::vector<std::string> c;
@@ -86,17 +36,6 @@ std::string find_matplotlib_python(const std::vector<std::string>& candidates) {
     throw std::runtime_error("matplotlib not found: install python3-matplotlib (or set DTOADQ_PYTHON); tried " + tried);
 }
 
-TempFolder::TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "dtoadq-plot-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder in " + fs::temp_directory_path().string() + ": " + std::strerror(errno));
-    path_ = pattern;
-}
-
-TempFolder::~TempFolder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-}
-
 void run_plot_script(const std::string& script, const std::vector<std::string>& args, const fs::path& folder) {
     // looked up once per process: each probe starts an interpreter
     static const std::string python = find_matplotlib_python(python_candidates());
@@ -110,7 +49,7 @@ void run_plot_script(const std::string& script, const std::vector<std::string>& 
     std::vector<std::string> argv = {python, (folder / script).string()};
     argv.insert(argv.end(), args.begin(), args.end());
     fs::path log = folder / (script + ".log");
-    int status = run_process(argv, log.string());
+    int status = run_process(argv, log.string(), {"MPLBACKEND=Agg"});  // never try to open a window
     if (status != 0)
         throw std::runtime_error(script + " (" + python + ") failed with status " + std::to_string(status) + ": " + last_line(log));
 }
@@ -119,7 +58,7 @@ void draw_chart(const std::string& script, const std::string& header, const std:
                 const std::vector<std::string>& args, const std::string& png_path, const std::string& csv_path) {
     require_writable(png_path, "");
     if (!csv_path.empty()) require_writable(csv_path, "");
-    TempFolder folder;
+    TempFolder folder("plot");
     const std::filesystem::path csv = folder.path() / "chart.csv";
     const std::filesystem::path png = folder.path() / "chart.png";
     {

@@ -17,19 +17,6 @@ std::vector<std::string> python_candidates();
 // "matplotlib not found: install python3-matplotlib ..." when none can.
 std::string find_matplotlib_python(const std::vector<std::string>& candidates);
 
-// A private temporary folder, removed with everything in it when this goes out of scope.
-class TempFolder {
-public:
-    TempFolder();
-    ~TempFolder();
-    TempFolder(const TempFolder&) = delete;
-    TempFolder& operator=(const TempFolder&) = delete;
-    const std::filesystem::path& path() const { return path_; }
-
-private:
-    std::filesystem::path path_;
-};
-
 // Writes the embedded scripts into `folder` and runs `script` there with the Agg backend. The
 // script's output goes to a log in `folder`; a failure throws with the log's last line.
 void run_plot_script(const std::string& script, const std::vector<std::string>& args, const std::filesystem::path& folder);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "common/child_process.hpp"
 #include "common/input_error.hpp"
 #include "plots/output_file.hpp"
 #include "plots/python_runner.hpp"
@@ -49,7 +50,7 @@ void write_speed_accuracy_chart(const std::vector<ConvergenceSeries>& series, co
     require_writable(png_path, "");
     if (!csv_path.empty()) require_writable(csv_path, "");
 
-    TempFolder folder;
+    TempFolder folder("plot");
     const fs::path csv = folder.path() / "speed_accuracy.csv";
     const fs::path png = folder.path() / "speed_accuracy.png";
     write_table(series, csv.string());

@@ -16,6 +16,7 @@
 
 #include <sys/resource.h>
 
+#include "common/child_process.hpp"
 #include "common/input_error.hpp"
 #include "film/atomic_file.hpp"
 #include "film/image_output.hpp"
@@ -28,7 +29,7 @@ using lab::film::ToneMap;
 namespace {
 
 struct Scratch {
-    lab::plots::TempFolder folder;
+    lab::TempFolder folder{"test"};
     std::string operator/(const std::string& name) const { return (folder.path() / name).string(); }
     std::vector<std::string> files() const {
         std::vector<std::string> names;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/child_process.hpp"
 #include "common/input_error.hpp"
 #include "plots/python_runner.hpp"
 #include "plots/speed_accuracy_chart.hpp"
@@ -31,7 +32,7 @@ std::vector<ConvergenceSeries> two_strategies() {
 }  // namespace
 
 TEST_CASE("the speed-accuracy chart is a PNG, and its CSV has one row per point", "[film][python]") {
-    lab::plots::TempFolder folder;
+    lab::TempFolder folder("test");
     const fs::path png = folder.path() / "speed.png", csv = folder.path() / "speed.csv";
     lab::plots::write_speed_accuracy_chart(two_strategies(), "-- box scene, 256x256", png.string(), csv.string());
     std::ifstream in(png, std::ios::binary);
@@ -55,7 +56,7 @@ TEST_CASE("the speed-accuracy chart refuses bad paths and points it cannot draw"
     } catch (const lab::InputError& e) {
         CHECK(std::string(e.what()) == "/nonexistent-folder/speed.png: cannot write: folder /nonexistent-folder does not exist");
     }
-    lab::plots::TempFolder folder;
+    lab::TempFolder folder("test");
     const std::string png = (folder.path() / "x.png").string();
     CHECK_THROWS_AS(lab::plots::write_speed_accuracy_chart({}, "t", png, ""), std::invalid_argument);
     CHECK_THROWS_AS(lab::plots::write_speed_accuracy_chart({{"a", {1.0, 2.0}, {0.1}}}, "t", png, ""), std::invalid_argument);

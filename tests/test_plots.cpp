@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/child_process.hpp"
 #include "analysis/albedo_curve.hpp"
 #include "analysis/lobe_data.hpp"
 #include "brdf/host/parameters.hpp"
@@ -67,7 +68,7 @@ bool is_png(const fs::path& file) {
 }
 
 struct ScratchFolder {
-    lab::plots::TempFolder folder;
+    lab::TempFolder folder{"test"};
     fs::path operator/(const std::string& name) const { return folder.path() / name; }
 };
 

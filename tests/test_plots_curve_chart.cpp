@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/child_process.hpp"
 #include "plots/curve_chart.hpp"
 #include "plots/python_runner.hpp"
 #include "tests/chart_files.hpp"
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 using lab::plots::Curve;
 
 TEST_CASE("the curve chart is a PNG, and its CSV has one row per curve and point", "[film][python]") {
-    lab::plots::TempFolder folder;
+    lab::TempFolder folder("test");
     const fs::path png = folder.path() / "curves.png", csv = folder.path() / "curves.csv";
     const std::vector<Curve> curves = {{"largest, error", {1.0, 10.0, 100.0}, {3e-4, 3e-4, 2e-3}, false},
                                        {"threshold", {1.0, 100.0}, {2e-4, 2e-4}, true}};

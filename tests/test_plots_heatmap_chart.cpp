@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/child_process.hpp"
 #include "plots/heatmap_chart.hpp"
 #include "plots/python_runner.hpp"
 #include "tests/chart_files.hpp"
@@ -17,7 +18,7 @@ namespace fs = std::filesystem;
 using lab::plots::HeatmapPanel;
 
 TEST_CASE("the heat-map chart is a PNG, and its CSV has one row per panel and point", "[film][python]") {
-    lab::plots::TempFolder folder;
+    lab::TempFolder folder("test");
     const fs::path png = folder.path() / "heat.png", csv = folder.path() / "heat.csv";
     const std::vector<HeatmapPanel> panels = {{"loses", {0.5, 0.7, 0.9, 1.0, 1.0, 1.0}}, {"creates, a lot", {1.0, 1.2, 1.5, 2.0, 1.1, 1.0}}};
     lab::plots::write_heatmap_chart(panels, {0.1, 0.5, 1.0}, {0.0, 45.0}, "roughness", "theta", "albedo", 1.0, "t", png.string(), csv.string());
@@ -45,7 +46,7 @@ TEST_CASE("the heat-map chart refuses no panels, an empty axis, a panel of the w
 }
 
 TEST_CASE("the heat-map chart draws a logarithmic x axis, and a quantity on one side of its centre", "[film][python]") {
-    lab::plots::TempFolder folder;
+    lab::TempFolder folder("test");
     const fs::path png = folder.path() / "heat.png";
     // rays lost, 0 at best: nothing below the centre
     lab::plots::write_heatmap_chart({{"lost", {0.0, 50.0, 0.0, 10.0, 0.0, 0.0}}}, {0.3, 1.0, 3.0}, {1.0, 1.5}, "factor", "omega", "lost (%)", 0.0,

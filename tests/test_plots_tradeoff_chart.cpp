@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/child_process.hpp"
 #include "plots/python_runner.hpp"
 #include "tests/chart_files.hpp"
 #include "plots/tradeoff_chart.hpp"
@@ -18,7 +19,7 @@ namespace fs = std::filesystem;
 using lab::plots::TradeoffPoint;
 
 TEST_CASE("the trade-off chart is a PNG, and its CSV has one row per setting", "[film][python]") {
-    lab::plots::TempFolder folder;
+    lab::TempFolder folder("test");
     const fs::path png = folder.path() / "tradeoff.png", csv = folder.path() / "tradeoff.csv";
     const std::vector<TradeoffPoint> points = {{"ω 1, central", 0.016, 0.0}, {"ω 1.8, tetrahedral", 0.012, 0.003}};
     lab::plots::write_tradeoff_chart(points, 0.002, "metaballs", "relative error", png.string(), csv.string());

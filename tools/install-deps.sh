@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages DTOADQ lab needs that are not installed yet (run as root, or with sudo available).
 #   sh tools/install-deps.sh            the build and the main job (dtoadq report)
 #   sh tools/install-deps.sh --tests    and what the test run needs besides: a virtual display for the
-#                                       viewer's tests, a browser and an HTML parser for the report page's
+#                                       viewer's tests, a browser and an HTML parser for the report page's,
+#                                       FFmpeg for the turntable's video
 #   sh tools/install-deps.sh --fuzz     and clang 16 with its libFuzzer runtime, for tools/fuzz.sh
 # Each set only what it needs: on a fresh machine every package is a download and an unpack, and the
 # main job and the test run count that time too.
@@ -14,7 +15,7 @@ libglfw3-dev libimgui-dev libglm-dev catch2 nlohmann-json3-dev libcli11-dev libn
 python3 python3-matplotlib python3-numpy"
 for set in "$@"; do
   case $set in
-    --tests) packages="$packages xvfb xauth libgl1-mesa-dri chromium python3-html5lib" ;;
+    --tests) packages="$packages xvfb xauth libgl1-mesa-dri chromium python3-html5lib ffmpeg" ;;
     --fuzz) packages="$packages clang-16 libclang-rt-16-dev" ;;
     *) echo "install-deps: unknown option $set (--tests, --fuzz)" >&2; exit 2 ;;
   esac

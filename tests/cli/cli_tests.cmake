@@ -506,6 +506,21 @@ endforeach()
 # The frame time is the interface's own: no other test shares the two cores while it is measured.
 set_tests_properties(cli.view.frame_time PROPERTIES RUN_SERIAL ON)
 
+# The turntable (headless, on the host renderer): the model turns under still lighting, the map
+# turns around the model, a video has every frame (skipped, exit 77, without ffmpeg).
+foreach(turntable_case model environment video)
+  add_test(NAME cli.view.turntable_${turntable_case}
+           COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/turntable_test.py $<TARGET_FILE:dtoadq> ${PROJECT_SOURCE_DIR}/envmaps/studio.exr
+                   ${CLI_SCRATCH}/turntable_${turntable_case} ${turntable_case})
+  set_tests_properties(cli.view.turntable_${turntable_case} PROPERTIES LABELS cli TIMEOUT 300 SKIP_RETURN_CODE 77)
+endforeach()
+cli_bad_input(NAME view.turntable_frames EXPECT "${E}--turntable: must be a number of frames in \\[1, 100000\\]$" ARGS view --turntable -2 -o x.mp4)
+cli_bad_input(NAME view.turntable_no_output EXPECT "${E}--output: --turntable needs -o: " ARGS view --turntable 4)
+cli_bad_input(NAME view.turntable_turn EXPECT "${E}--turn: expected model or environment, got \"spin\"$"
+              ARGS view --turntable 4 --turn spin -o ${CLI_SCRATCH}/f_%02d.png)
+cli_bad_input(NAME view.turntable_output EXPECT "${E}${CLI_SCRATCH}/turn\\.gif: expected a video \\(\\.mp4\\) or a frame pattern with one %d"
+              ARGS view --turntable 4 -o ${CLI_SCRATCH}/turn.gif)
+
 # --- fit (docs/fitting.md): a bad measured file and bad options, each one line, no preset written --
 set(FIT fit -o ${PNG}.json --quiet --measured)
 cli_bad_input(NAME fit.missing_file ABSENT ${PNG}.json EXPECT "${E}${D}/absent\\.binary: cannot open the measured BRDF file$"
