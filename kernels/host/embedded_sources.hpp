@@ -1,5 +1,5 @@
 // The lab's kernel sources as the binary carries them: every kernels/*.cl and every single-source
-// header (kernels/, brdf/, sdf/, ibl/, single_source/) is embedded at build time, so a kernel builds
+// header (kernels/, brdf/, sdf/, ibl/, film/, single_source/) is embedded at build time, so a kernel builds
 // without the source tree.
 #pragma once
 

@@ -1,0 +1,81 @@
+#include "film/denoise.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "single_source/host_vocabulary.hpp"
+
+namespace lab::film {
+
+// The filter's single-source pass, compiled for the host here.
+namespace atrous {
+using namespace single_source;
+#include "film/denoise_atrous.h"
+}  // namespace atrous
+
+namespace {
+
+using single_source::float4;
+
+static_assert(sizeof(float4) == sizeof(std::array<float, 4>), "the buffers' float4 must be four packed floats, as OpenCL's");
+
+// An albedo channel small enough to divide noise up unboundedly: such a pixel is filtered as it is.
+constexpr float kMinAlbedo = 1e-3f;
+
+float demodulator(float albedo) { return albedo > kMinAlbedo ? albedo : 1.0f; }
+
+const float4* as_float4(const std::vector<std::array<float, 4>>& v) { return reinterpret_cast<const float4*>(v.data()); }
+
+}  // namespace
+
+AtrousBuffers demodulate(const ImageRgb& radiance, const DenoiseGuide& guide) {
+    const size_t n = radiance.pixel_count();
+    if (!radiance.valid() || guide.albedo.width != radiance.width || guide.albedo.height != radiance.height ||
+        guide.normal.width != radiance.width || guide.normal.height != radiance.height || guide.depth.size() != n || guide.variance.size() != n)
+        throw std::invalid_argument("denoise: the guide's buffers are not of the image's size");
+    AtrousBuffers b;
+    b.width = radiance.width;
+    b.height = radiance.height;
+    b.illumination.resize(n);
+    b.guide.resize(n);
+    for (size_t p = 0; p < n; ++p) {
+        const float* c = radiance.rgb.data() + 3 * p;
+        const float* a = guide.albedo.rgb.data() + 3 * p;
+        const float* nn = guide.normal.rgb.data() + 3 * p;
+        const float4 albedo(demodulator(a[0]), demodulator(a[1]), demodulator(a[2]), 0.0f);
+        const float albedo_luminance = atrous::atrous_luminance(albedo);
+        // the variance of the illumination's luminance, the albedo taken as exact
+        b.illumination[p] = {c[0] / albedo.x, c[1] / albedo.y, c[2] / albedo.z, guide.variance[p] / (albedo_luminance * albedo_luminance)};
+        b.guide[p] = {nn[0], nn[1], nn[2], guide.depth[p]};
+    }
+    return b;
+}
+
+ImageRgb remodulate(const AtrousBuffers& filtered, const DenoiseGuide& guide) {
+    ImageRgb out(filtered.width, filtered.height);
+    for (size_t p = 0; p < out.pixel_count(); ++p)
+        for (size_t c = 0; c < 3; ++c) out.rgb[3 * p + c] = filtered.illumination[p][c] * demodulator(guide.albedo.rgb[3 * p + c]);
+    return out;
+}
+
+void atrous_passes(AtrousBuffers* b, const DenoiseOptions& options) {
+    std::vector<std::array<float, 4>> next(b->illumination.size());
+    for (int i = 0; i < options.passes; ++i) {
+        const atrous::AtrousPass pass =
+            atrous::atrous_pass(b->width, b->height, 1 << i, options.sigma_normal, options.sigma_depth, options.sigma_luminance);
+        for (int y = 0; y < b->height; ++y)
+            for (int x = 0; x < b->width; ++x) {
+                const float4 v = atrous::atrous_pixel(&pass, as_float4(b->illumination), as_float4(b->guide), x, y);
+                next[size_t(y) * size_t(b->width) + size_t(x)] = {v.x, v.y, v.z, v.w};
+            }
+        b->illumination.swap(next);
+    }
+}
+
+ImageRgb denoise(const ImageRgb& radiance, const DenoiseGuide& guide, const DenoiseOptions& options) {
+    AtrousBuffers buffers = demodulate(radiance, guide);
+    atrous_passes(&buffers, options);
+    return remodulate(buffers, guide);
+}
+
+}  // namespace lab::film

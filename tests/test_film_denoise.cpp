@@ -1,0 +1,172 @@
+// The display denoiser (film/denoise): on synthetic renders whose noise-free image is known, it
+// removes noise as much as the a-trous filter's own footprint allows where the surface is one, and
+// keeps albedo, normal and depth edges and the background sharp.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "film/denoise.hpp"
+
+namespace {
+
+// A synthetic render: per pixel a true radiance, an albedo, a normal and a depth; the "render" adds
+// Gaussian noise of standard deviation sigma (the variance of the pixel's mean, as the render core
+// estimates it, is sigma^2).
+struct Synthetic {
+    int size;
+    lab::film::ImageRgb truth, noisy;
+    lab::film::DenoiseGuide guide;
+};
+
+template <class Pixel>
+Synthetic make_synthetic(int size, float sigma, uint32_t seed, Pixel pixel) {
+    Synthetic s{size, lab::film::ImageRgb(size, size), lab::film::ImageRgb(size, size), {}};
+    s.guide.albedo = lab::film::ImageRgb(size, size);
+    s.guide.normal = lab::film::ImageRgb(size, size);
+    s.guide.depth.assign(size_t(size * size), 0.0f);
+    s.guide.variance.assign(size_t(size * size), sigma * sigma);
+    std::mt19937 rng(seed);
+    std::normal_distribution<float> noise(0.0f, sigma);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            float radiance[3], albedo[3], normal[3], depth;
+            pixel(x, y, radiance, albedo, normal, &depth);
+            const size_t p = size_t(y * size + x);
+            s.truth.set(x, y, radiance[0], radiance[1], radiance[2]);
+            const float n = depth > 0.0f ? noise(rng) : 0.0f;  // the background is seen without noise
+            s.noisy.set(x, y, radiance[0] + n * albedo[0], radiance[1] + n * albedo[1], radiance[2] + n * albedo[2]);
+            s.guide.albedo.set(x, y, albedo[0], albedo[1], albedo[2]);
+            s.guide.normal.set(x, y, normal[0], normal[1], normal[2]);
+            s.guide.depth[p] = depth;
+            s.guide.variance[p] = depth > 0.0f ? sigma * sigma * (0.2126f * albedo[0] + 0.7152f * albedo[1] + 0.0722f * albedo[2]) *
+                                                     (0.2126f * albedo[0] + 0.7152f * albedo[1] + 0.0722f * albedo[2])
+                                               : 0.0f;
+        }
+    return s;
+}
+
+// Root mean square difference of the green channel over the pixels where `inside` holds.
+template <class Inside>
+double rmse(const lab::film::ImageRgb& a, const lab::film::ImageRgb& b, Inside inside) {
+    double sum = 0.0;
+    int n = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            if (inside(x, y)) {
+                sum += std::pow(double(a.at(x, y)[1]) - double(b.at(x, y)[1]), 2.0);
+                ++n;
+            }
+    return std::sqrt(sum / n);
+}
+
+// The a-trous filter with its edges switched off is a linear filter: the B3 spline [1 4 6 4 1] / 16
+// dilated by 1, 2, 4, ... and convolved, separable. Noise of variance s^2 comes out of it with
+// variance s^2 sum(k^2): the best any edge-stopping weighting can do.
+double linear_filter_noise_gain(int passes) {
+    std::vector<double> kernel = {1.0};
+    for (int i = 0; i < passes; ++i) {
+        const int step = 1 << i;
+        const double b3[5] = {1.0 / 16, 4.0 / 16, 6.0 / 16, 4.0 / 16, 1.0 / 16};
+        std::vector<double> next(kernel.size() + size_t(4 * step), 0.0);
+        for (size_t k = 0; k < kernel.size(); ++k)
+            for (int t = 0; t < 5; ++t) next[k + size_t(t * step)] += kernel[k] * b3[t];
+        kernel = next;
+    }
+    double sum_sq = 0.0;
+    for (double k : kernel) sum_sq += k * k;
+    return sum_sq * sum_sq;  // two dimensions
+}
+
+constexpr float kUp[3] = {0.0f, 0.0f, 1.0f};
+
+}  // namespace
+
+TEST_CASE("Denoiser: on one flat surface it removes the noise the filter's footprint can", "[denoise]") {
+    const int size = 160;
+    const float sigma = 0.05f;
+    Synthetic s = make_synthetic(size, sigma, 1, [](int, int, float* radiance, float* albedo, float* normal, float* depth) {
+        for (int c = 0; c < 3; ++c) {
+            albedo[c] = 0.5f;
+            radiance[c] = 0.4f;
+            normal[c] = kUp[c];
+        }
+        *depth = 5.0f;
+    });
+    const lab::film::ImageRgb denoised = lab::film::denoise(s.noisy, s.guide);
+    // Away from the borders (where the footprint is cut), far enough that the widest pass's taps
+    // all land inside: 2 (2^0 + ... + 2^4) = 62 pixels.
+    auto centre = [&](int x, int y) { return x >= 62 && y >= 62 && x < size - 62 && y < size - 62; };
+    const double raw = rmse(s.noisy, s.truth, centre), filtered = rmse(denoised, s.truth, centre);
+    // No weighting of the same taps does better on white noise than the linear filter (its gain
+    // is the floor, less a 10 % allowance for the sample's own spread over 36 x 36 pixels); the
+    // luminance weight, exponential in the neighbours' noisy differences, gives up part of it. At
+    // least a tenfold cut is asked (the target is half at 4 spp).
+    const double floor = std::sqrt(linear_filter_noise_gain(5));
+    INFO("raw " << raw << ", denoised " << filtered << ", linear filter's floor " << raw * floor);
+    CHECK(filtered >= 0.9 * raw * floor);
+    CHECK(filtered <= 0.1 * raw);
+}
+
+TEST_CASE("Denoiser: albedo, normal and depth edges and the background stay sharp", "[denoise]") {
+    // A noise-free image whose variance says it is noisy (sigma 0.2 of the illumination): the
+    // luminance weight then lets steps of one sigma through, so whatever moves a pixel is the filter
+    // mixing across an edge that only the guides (and the demodulation by albedo) can stop.
+    const int size = 96;
+    const float sigma = 0.2f;
+    // Four quadrants: top left | top right differ in albedo only (0.3 | 0.9, the same light: one
+    // flat illumination); top left | bottom left in normal (up | +x) with the light one sigma apart;
+    // bottom left | bottom right in depth (5 | 20, the same normal), the light one sigma apart again;
+    // a strip of background (the sky, seen directly) at x = 0..3.
+    Synthetic s = make_synthetic(size, 0.0f, 2, [&](int x, int y, float* radiance, float* albedo, float* normal, float* depth) {
+        const bool right = x >= size / 2, bottom = y >= size / 2;
+        const float a = !bottom && right ? 0.9f : 0.3f;
+        const float light = !bottom ? 1.0f : (right ? 1.4f : 1.2f);
+        for (int c = 0; c < 3; ++c) {
+            normal[c] = bottom ? (c == 0 ? 1.0f : 0.0f) : kUp[c];
+            albedo[c] = a;
+            radiance[c] = a * light;
+        }
+        *depth = bottom && right ? 20.0f : 5.0f;
+        if (x < 4) {
+            *depth = 0.0f;
+            for (int c = 0; c < 3; ++c) {
+                radiance[c] = 0.7f;
+                albedo[c] = 0.0f;
+            }
+        }
+    });
+    for (size_t p = 0; p < s.guide.variance.size(); ++p)
+        if (s.guide.depth[p] > 0.0f) s.guide.variance[p] = sigma * sigma * s.guide.albedo.rgb[3 * p] * s.guide.albedo.rgb[3 * p];
+    const lab::film::ImageRgb denoised = lab::film::denoise(s.noisy, s.guide);
+    // Each pixel is its own side's truth to 1e-3 of the illumination: the weights that stop the
+    // filter at these edges are below exp(-9) (depth: |5 - 20| against 5 x 32 / 96 at the widest
+    // tap) or 0 (normals at right angles), and float rounding is 1e-6; mixing across any edge moves
+    // the pixels beside it by about half its step, 0.1 to 0.3.
+    auto check_band = [&](const char* edge, int x0, int x1, int y0, int y1) {
+        double worst = 0.0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x)
+                worst = std::max(worst, double(std::fabs(denoised.at(x, y)[1] - s.truth.at(x, y)[1])) / s.guide.albedo.at(x, y)[1]);
+        INFO(edge << ": largest illumination error beside it " << worst);
+        CHECK(worst <= 1e-3);
+    };
+    check_band("albedo edge", size / 2 - 2, size / 2 + 2, 4, size / 2);
+    check_band("normal edge", 4, size / 2, size / 2 - 2, size / 2 + 2);
+    check_band("depth edge", size / 2 - 2, size / 2 + 2, size / 2, size);
+    // The background is left exactly as it was.
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < 4; ++x) REQUIRE(denoised.at(x, y) == s.noisy.at(x, y));
+}
+
+TEST_CASE("Denoiser: a guide of another size is refused", "[denoise]") {
+    lab::film::ImageRgb image(8, 8);
+    lab::film::DenoiseGuide guide;
+    guide.albedo = lab::film::ImageRgb(8, 8);
+    guide.normal = lab::film::ImageRgb(8, 7);
+    guide.depth.assign(64, 1.0f);
+    guide.variance.assign(64, 0.0f);
+    CHECK_THROWS_AS(lab::film::denoise(image, guide), std::invalid_argument);
+}
