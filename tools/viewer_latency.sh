@@ -9,7 +9,7 @@ set -e
 DTOADQ=${1:?usage: tools/viewer_latency.sh DTOADQ [viewer options]}
 shift
 RUN=""
-[ -z "$DISPLAY" ] && RUN="xvfb-run -a -s -screen\ 0\ 1024x768x24"
+[ -z "$DISPLAY" ] && RUN="xvfb-run -a -s -screen\ 0\ 1920x1080x24"
 COMMON="--material presets/gold.json --env envmaps/courtyard.exr --size 256x256 --stats"
 burst=""
 f=60
@@ -31,6 +31,10 @@ if "$DTOADQ" view --help | grep -q -- --move; then
         if [ $((i % 2)) = 0 ]; then mv="$mv --move orbit=20,0@$((i * 60))"; else mv="$mv --move env_rotation=$((i * 20))@$((i * 60))"; fi
     done
     eval $RUN "$DTOADQ" view $COMMON --frames 780 $mv "$@"
+fi
+if "$DTOADQ" view --help | grep -q -- --window; then
+    echo "== interface at 1280x800 with material, checks and lobe open, rendering (docs/viewer.md: median at most 50 ms on llvmpipe)"
+    eval $RUN "$DTOADQ" view $COMMON --frames 150 --window 1280x800 --open Lobe "$@"
 fi
 echo "== samples/s: the viewer without changes to 8 spp, then dtoadq preview alone (same size and map)"
 eval $RUN "$DTOADQ" view $COMMON --frames 10 --min-spp 8 "$@"

@@ -497,14 +497,12 @@ find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT VIEW_TEST_PYTHON)
   find_program(VIEW_TEST_PYTHON python3)
 endif()
-foreach(view_case accumulate set preset export env references resize sections frame_time)
+foreach(view_case accumulate set preset export env references resize sections)
   add_test(NAME cli.view.${view_case}
            COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
   # One at a time: xvfb-run -a started twice at once can pick the same display number.
   set_tests_properties(cli.view.${view_case} PROPERTIES LABELS cli TIMEOUT 240 SKIP_RETURN_CODE 77 RESOURCE_LOCK xvfb)
 endforeach()
-# The frame time is the interface's own: no other test shares the two cores while it is measured.
-set_tests_properties(cli.view.frame_time PROPERTIES RUN_SERIAL ON)
 
 # The turntable (headless, on the host renderer): the model turns under still lighting, the map
 # turns around the model, a video has every frame (skipped, exit 77, without ffmpeg).

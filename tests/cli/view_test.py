@@ -4,8 +4,8 @@ no DISPLAY): the window opens and samples accumulate, the screenshot shows the m
 a scripted --set changes the model and not the backdrop, a saved preset loads back identical,
 --export-to writes a scene that `dtoadq render` renders with the material, the rest unchanged, and a
 map loaded in the window replaces the environment, or, when missing, leaves it and shows the error;
-the look-dev references come and go, a resize changes the render area and the render, every panel section opens without overlap, and the
-interface's median frame time stays within 50 ms at 1280 x 800.
+the look-dev references come and go, a resize changes the render area and the render, and every
+panel section opens without overlap.
 
 usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
 """
@@ -224,19 +224,8 @@ def case_sections():
     print("sections: %s" % rects)
 
 
-def case_frame_time():
-    """The interface's median frame time at 1280 x 800 with material, checks and lobe open, rendering."""
-    out = view(["--window", "1280x800", "--open", "Lobe", "--stats"], "frames.png", frames=120, min_spp=1)
-    m = re.search(r"interface: (\d+) frames, median ([0-9.]+) ms", out)
-    if not m:
-        fail("no frame times: " + out)
-    if float(m.group(2)) > 50.0:
-        fail("the median frame time is %s ms, over 50 ms: %s" % (m.group(2), out))
-    print("frame time: " + m.group(0))
-
-
 CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env,
-         "references": case_references, "resize": case_resize, "sections": case_sections, "frame_time": case_frame_time}
+         "references": case_references, "resize": case_resize, "sections": case_sections}
 
 if __name__ == "__main__":
     if not os.environ.get("DISPLAY"):
