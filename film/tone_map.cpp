@@ -1,6 +1,8 @@
 #include "film/tone_map.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <cmath>
 #include <stdexcept>
 
@@ -55,8 +57,67 @@ float srgb_decode(float encoded) {
 
 uint8_t quantize8(float encoded) { return uint8_t(std::lround(clamp01(encoded) * 255.0f)); }
 
-void tone_map_pixel(const float in[3], ToneMap tone_map, float exposure_stops, float out[3]) {
-    const float scale = std::exp2(exposure_stops);
+namespace {
+
+// Where quantize8(srgb_encode(x)) steps up to 1, 2, ..., 255: the smallest float with that code,
+// found by bisection over the bit patterns of the floats in [0, 1] (for positive floats they order
+// as the integers do). The code never decreases as x grows, so counting the thresholds at or below
+// x gives it.
+const std::array<float, 255>& srgb8_thresholds() {
+    static const std::array<float, 255> thresholds = [] {
+        auto code = [](uint32_t bits) {
+            float x;
+            std::memcpy(&x, &bits, sizeof x);
+            return int(quantize8(srgb_encode(x)));
+        };
+        uint32_t one;
+        const float one_f = 1.0f;
+        std::memcpy(&one, &one_f, sizeof one);
+        std::array<float, 255> t{};
+        for (int k = 1; k <= 255; ++k) {
+            uint32_t lo = 0, hi = one;  // code(lo) < k <= code(hi)
+            while (hi - lo > 1) {
+                const uint32_t mid = lo + (hi - lo) / 2;
+                (code(mid) >= k ? hi : lo) = mid;
+            }
+            std::memcpy(&t[size_t(k - 1)], &hi, sizeof hi);
+        }
+        return t;
+    }();
+    return thresholds;
+}
+
+// The code at the start of each of 4096 equal buckets of [0, 1]. Neighbouring codes' steps are at
+// least 1 / (255 * 12.92) = 3.0e-4 apart (the curve's linear foot is its steepest part), more than a
+// bucket's 2.4e-4, so a bucket holds at most one step: the bucket's code, plus one past its step.
+constexpr int kSrgb8Buckets = 4096;
+
+const std::array<uint8_t, kSrgb8Buckets>& srgb8_bucket_codes() {
+    static const std::array<uint8_t, kSrgb8Buckets> codes = [] {
+        const std::array<float, 255>& t = srgb8_thresholds();
+        std::array<uint8_t, kSrgb8Buckets> c{};
+        for (int b = 0; b < kSrgb8Buckets; ++b)
+            c[size_t(b)] = uint8_t(std::upper_bound(t.begin(), t.end(), float(b) / float(kSrgb8Buckets)) - t.begin());
+        return c;
+    }();
+    return codes;
+}
+
+}  // namespace
+
+uint8_t srgb8_code(float display) {
+    const std::array<float, 255>& t = srgb8_thresholds();
+    const std::array<uint8_t, kSrgb8Buckets>& codes = srgb8_bucket_codes();
+    if (!(display > 0.0f)) return 0;
+    if (display >= 1.0f) return 255;
+    const int code = codes[size_t(display * float(kSrgb8Buckets))];  // exact: a power of two
+    return uint8_t(code + (code < 255 && display >= t[size_t(code)]));
+}
+
+namespace {
+
+// tone_map_pixel with the exposure as its factor, 2^stops, worked out once per image.
+void tone_map_scaled(const float in[3], ToneMap tone_map, float scale, float out[3]) {
     float c[3];
     for (int i = 0; i < 3; ++i) {
         const float v = in[i] * scale;
@@ -78,10 +139,17 @@ void tone_map_pixel(const float in[3], ToneMap tone_map, float exposure_stops, f
     }
 }
 
+}  // namespace
+
+void tone_map_pixel(const float in[3], ToneMap tone_map, float exposure_stops, float out[3]) {
+    tone_map_scaled(in, tone_map, std::exp2(exposure_stops), out);
+}
+
 std::vector<uint8_t> to_srgb8(const ImageRgb& image, ToneMap tone_map, float exposure_stops) {
     if (!image.valid()) throw std::invalid_argument("to_srgb8: the image's sizes do not match its data");
     if (!std::isfinite(exposure_stops)) throw std::invalid_argument("to_srgb8: the exposure is not finite");
     std::vector<uint8_t> out(image.rgb.size());
+    const float scale = std::exp2(exposure_stops);
     for (size_t p = 0; p < image.rgb.size(); p += 3) {
         const float* in = &image.rgb[p];
         if (!std::isfinite(in[0]) || !std::isfinite(in[1]) || !std::isfinite(in[2])) {
@@ -89,8 +157,8 @@ std::vector<uint8_t> to_srgb8(const ImageRgb& image, ToneMap tone_map, float exp
             continue;
         }
         float display[3];
-        tone_map_pixel(in, tone_map, exposure_stops, display);
-        for (int i = 0; i < 3; ++i) out[p + size_t(i)] = quantize8(srgb_encode(display[i]));
+        tone_map_scaled(in, tone_map, scale, display);
+        for (int i = 0; i < 3; ++i) out[p + size_t(i)] = srgb8_code(display[i]);
     }
     return out;
 }

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -120,4 +121,43 @@ TEST_CASE("to_srgb8: tone map then sRGB then 8 bits - non-finite pixels are mage
     std::vector<uint8_t> brighter = lab::film::to_srgb8(image, ToneMap::Clamp, 1.0f);
     CHECK(int(brighter[9]) == 188);
     CHECK_THROWS_AS(lab::film::to_srgb8(image, ToneMap::Aces, std::numeric_limits<float>::quiet_NaN()), std::invalid_argument);
+}
+
+TEST_CASE("srgb8_code gives quantize8(srgb_encode(x)) for every float it was checked on", "[film][tone_map]") {
+    // Every 61st float of [0, 1], and the floats within 3 ulps of every code's step.
+    auto check = [](float x) {
+        const int direct = int(lab::film::quantize8(lab::film::srgb_encode(x)));
+        if (int(lab::film::srgb8_code(x)) != direct) {
+            INFO("x = " << x);
+            CHECK(int(lab::film::srgb8_code(x)) == direct);
+            return false;
+        }
+        return true;
+    };
+    const float one = 1.0f;
+    uint32_t top;
+    std::memcpy(&top, &one, sizeof top);
+    size_t checked = 0, wrong = 0;
+    for (uint32_t bits = 0; bits <= top; bits += 61) {
+        float x;
+        std::memcpy(&x, &bits, sizeof x);
+        wrong += !check(x);
+        ++checked;
+    }
+    for (int code = 1; code <= 255; ++code) {
+        // the step itself, from the closed form: encoded (code - 0.5) / 255, decoded
+        const float step = lab::film::srgb_decode((float(code) - 0.5f) / 255.0f);
+        uint32_t bits;
+        std::memcpy(&bits, &step, sizeof bits);
+        for (uint32_t b = bits - 3; b <= bits + 3; ++b) {
+            float x;
+            std::memcpy(&x, &b, sizeof x);
+            wrong += !check(x);
+            ++checked;
+        }
+    }
+    CHECK(wrong == 0);
+    CHECK(checked > 17000000);
+    CHECK(lab::film::srgb8_code(-1.0f) == 0);
+    CHECK(lab::film::srgb8_code(2.0f) == 255);
 }
