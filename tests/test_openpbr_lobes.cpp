@@ -2,10 +2,51 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
 
 #include "brdf/brdf.hpp"
+#include "brdf/host/angles.hpp"
+#include "tests/chi_square_suite.hpp"
 
 using brdf::float3;
+
+namespace {
+
+using LobeFunction = float3 (*)(float3 rho, float sigma, float3 wo, float3 wi);
+
+// Directional albedo of a lobe by the midpoint rule, in double: n cells in mu_i on each side of
+// mu_o and 2n in phi_i from phi_o, so that the lobe's kinks (at mu_i = mu_o, where t switches, and at
+// phi_i - phi_o = +-90 degrees, where s changes sign) lie on cell edges and it is smooth in each cell.
+double eon_albedo_midpoint(LobeFunction f, float sigma, float3 wo, int n) {
+    double phi_o = std::atan2(double(wo.y), double(wo.x)), sum = 0.0;
+    double edges[3] = {0.0, double(wo.z), 1.0};
+    for (int piece = 0; piece < 2; ++piece) {
+        double lo = edges[piece], width = (edges[piece + 1] - lo) / n;
+        for (int i = 0; i < n; ++i) {
+            double mu = lo + (i + 0.5) * width, sin_t = std::sqrt(1.0 - mu * mu);
+            for (int j = 0; j < 2 * n; ++j) {
+                double phi = phi_o + M_PI * (j + 0.5) / n;
+                float3 wi(float(sin_t * std::cos(phi)), float(sin_t * std::sin(phi)), float(mu));
+                sum += double(f(float3(1.0f), sigma, wo, wi).x) * mu * width * (M_PI / n);
+            }
+        }
+    }
+    return sum;
+}
+
+// The albedo with n = 128, and its error bound: the midpoint rule's error is O(h^2) for an
+// integrand smooth in each cell, so the estimate with n = 64 is four times as far off and their
+// difference bounds the finer one's error (3x over).
+struct EonQuadrature {
+    double albedo, error;
+};
+EonQuadrature eon_albedo_quadrature(LobeFunction f, float sigma, float3 wo) {
+    double coarse = eon_albedo_midpoint(f, sigma, wo, 64), fine = eon_albedo_midpoint(f, sigma, wo, 128);
+    return {fine, std::fabs(fine - coarse) + 1e-6};  // + float rounding of the lobe's values, summed in double
+}
+
+}  // namespace
 
 TEST_CASE("F82 tint: white is Schlick exactly, 1/7 reaches tint times Schlick, values stay in [0, 1]", "[brdf][openpbr]") {
     const float f0s[] = {0.0f, 0.04f, 0.3f, 0.7f, 0.95f, 1.0f};
@@ -35,4 +76,69 @@ TEST_CASE("F82 tint: white is Schlick exactly, 1/7 reaches tint times Schlick, v
             }
         }
     }
+}
+
+TEST_CASE("EON: roughness 0 is Lambert exactly, and the lobe is reciprocal", "[brdf][openpbr]") {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    float3 rho(0.8f, 0.35f, 0.05f);
+    float3 lambert = rho * brdf::lambert_brdf();
+    double worst = 0.0;
+    for (int k = 0; k < 20000; ++k) {
+        float3 wo = brdf::square_to_cosine_hemisphere(u(rng), u(rng)), wi = brdf::square_to_uniform_sphere(u(rng), u(rng));
+        wi.z = std::fabs(wi.z);
+        float3 f = brdf::eon_brdf(rho, 0.0f, wo, wi);
+        CHECK(f.x == lambert.x);  // the same bits
+        CHECK(f.y == lambert.y);
+        CHECK(f.z == lambert.z);
+        for (float sigma : {0.1f, 0.5f, 1.0f}) {
+            float3 a = brdf::eon_brdf(rho, sigma, wo, wi), b = brdf::eon_brdf(rho, sigma, wi, wo);
+            for (int c = 0; c < 3; ++c) worst = std::fmax(worst, std::fabs(a[c] - b[c]) / std::fmax(a[c], b[c]));
+        }
+    }
+    std::printf("EON reciprocity: largest relative difference %.2e\n", worst);
+    CHECK(worst <= 1e-6);  // float rounding: the same terms multiplied in another order, a few ulps
+    CHECK(brdf::eon_brdf(rho, 0.5f, float3(0, 0.6f, 0.8f), float3(0, 0.6f, -0.8f)).x == 0.0f);
+    CHECK(brdf::eon_brdf(rho, 0.5f, float3(0, 0.6f, -0.8f), float3(0, 0.6f, 0.8f)).x == 0.0f);
+}
+
+TEST_CASE("EON: a white lobe reflects everything; Fujii's lobe alone matches its closed-form albedo and fails that", "[brdf][openpbr]") {
+    for (float sigma : {0.25f, 0.5f, 1.0f}) {
+        for (float theta : {0.0f, 30.0f, 60.0f, 80.0f, 89.0f}) {
+            float3 wo = brdf::direction_from_degrees(theta, 40.0f);
+            EonQuadrature eon = eon_albedo_quadrature(brdf::eon_brdf, sigma, wo);
+            EonQuadrature fujii = eon_albedo_quadrature(brdf::eon_single_scattering_brdf, sigma, wo);
+            double a = 1.0 / (1.0 + (0.5 - 2.0 / (3.0 * M_PI)) * sigma);  // the paper's A, in double
+            double closed_form = a + sigma * a / M_PI * brdf::eon_albedo_g(wo.z);
+            std::printf("EON sigma %.2f theta %4.1f: albedo %.7f +- %.1e (Fujii alone %.6f, closed form %.6f)\n", sigma,
+                        theta, eon.albedo, eon.error, fujii.albedo, closed_form);
+            INFO("sigma " << sigma << ", theta " << theta);
+            CHECK(std::fabs(eon.albedo - 1.0) <= eon.error);
+            CHECK(std::fabs(fujii.albedo - closed_form) <= fujii.error);
+            if (theta < 89.0f) CHECK(std::fabs(fujii.albedo - 1.0) > 100.0 * fujii.error);  // the check has power
+        }
+    }
+}
+
+TEST_CASE("EON: its cosine sampler passes the chi-square suite's test, and a wrong pdf fails it", "[brdf][openpbr][chi_square]") {
+    using namespace lab::validation;
+    ChiSquareOptions options = chi_square_suite_options();
+    options.tests = 2;  // Sidak over the true pdf and the wrong one
+    DirectionSampler sampler = [](float3 u) {
+        DirectionSample s;
+        s.kind = SampleKind::Continuous;
+        s.wi = brdf::eon_sample(u.x, u.y);
+        return s;
+    };
+    // the sampler and its pdf do not depend on wo or sigma (cosine-weighted): one direction tests them
+    float3 wo = brdf::direction_from_degrees(60.0f, 30.0f);
+    ChiSquareResult r = chi_square_test(sampler, [wo](float3 wi) { return double(brdf::eon_pdf(wo, wi)); }, options);
+    std::printf("EON chi-square: %s\n", describe(r).c_str());
+    INFO(describe(r));
+    CHECK(r.passed);
+    // uniform over the hemisphere: integrates to 1 as the true pdf does, and must be rejected
+    ChiSquareResult wrong = chi_square_test(sampler, [](float3 wi) { return wi.z > 0.0f ? 0.5 / M_PI : 0.0; }, options);
+    std::printf("EON chi-square against a uniform pdf: %s\n", describe(wrong).c_str());
+    INFO(describe(wrong));
+    CHECK_FALSE(wrong.passed);
 }
