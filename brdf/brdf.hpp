@@ -10,4 +10,5 @@ using namespace single_source;
 #include "merl.h"
 // lobes of the OpenPBR model, which no model includes yet (docs/materials.md)
 #include "eon_diffuse.h"
+#include "thin_film.h"
 }  // namespace brdf

@@ -33,6 +33,13 @@ SS_FN float3 specular_f0(float3 albedo, float fresnel, float metallic) {
     return mix(float3_splat(fresnel), albedo, metallic);
 }
 
+/* Fresnel's amplitude reflection coefficient (a cos_i - b cos_t) / (a cos_i + b cos_t) of an
+ * interface from index n_i into n_t: s-polarised with a = n_i, b = n_t; p-polarised with a = n_t,
+ * b = n_i. */
+SS_FN float fresnel_amplitude(float a, float b, float cos_i, float cos_t) {
+    return (a * cos_i - b * cos_t) / (a * cos_i + b * cos_t);
+}
+
 /* Exact unpolarised Fresnel reflectance of a dielectric interface. cos_i is measured on the side
  * of the normal (negative: from inside); eta = eta_inside / eta_outside. */
 SS_FN float fresnel_dielectric(float cos_i, float eta) {
@@ -45,8 +52,8 @@ SS_FN float fresnel_dielectric(float cos_i, float eta) {
     float sin2_t = (1.0f - cos_i * cos_i) / (eta * eta);
     if (sin2_t >= 1.0f) return 1.0f;
     float cos_t = safe_sqrt(1.0f - sin2_t);
-    float r_parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    float r_perpendicular = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    float r_parallel = fresnel_amplitude(eta, 1.0f, cos_i, cos_t);
+    float r_perpendicular = fresnel_amplitude(1.0f, eta, cos_i, cos_t);
     return 0.5f * (r_parallel * r_parallel + r_perpendicular * r_perpendicular);
 }
 

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <random>
 
@@ -45,6 +46,28 @@ EonQuadrature eon_albedo_quadrature(LobeFunction f, float sigma, float3 wo) {
     double coarse = eon_albedo_midpoint(f, sigma, wo, 64), fine = eon_albedo_midpoint(f, sigma, wo, 128);
     return {fine, std::fabs(fine - coarse) + 1e-6};  // + float rounding of the lobe's values, summed in double
 }
+
+// The textbook reflectance of a film on a substrate (Born and Wolf, 1.6.4), for one wavelength, in
+// complex double: per polarisation r = (r12 + r23 e^{i delta}) / (1 + r12 r23 e^{i delta}),
+// delta = 4 pi n2 d cos theta2 / lambda, with complex cosines past a critical angle; unpolarised R.
+double thin_film_textbook(double cos1, double n1, double n2, double n3, double d_um, double lambda_um) {
+    using C = std::complex<double>;
+    double sin2_1 = 1.0 - cos1 * cos1;
+    C cos2 = std::sqrt(C(1.0 - (n1 / n2) * (n1 / n2) * sin2_1)), cos3 = std::sqrt(C(1.0 - (n1 / n3) * (n1 / n3) * sin2_1));
+    C phase = std::exp(C(0.0, 1.0) * (4.0 * M_PI * n2 * d_um / lambda_um) * cos2);
+    auto amplitude = [](C a, C b, C ci, C ct) { return (a * ci - b * ct) / (a * ci + b * ct); };
+    double r = 0.0;
+    for (int p = 0; p < 2; ++p) {
+        C r12 = p == 0 ? amplitude(n1, n2, cos1, cos2) : amplitude(n2, n1, cos1, cos2);
+        C r23 = p == 0 ? amplitude(n2, n3, cos2, cos3) : amplitude(n3, n2, cos2, cos3);
+        r += 0.5 * std::norm((r12 + r23 * phase) / (1.0 + r12 * r23 * phase));
+    }
+    return r;
+}
+
+struct FilmCase {
+    double n1, n2, n3, theta_deg;
+};
 
 }  // namespace
 
@@ -141,4 +164,62 @@ TEST_CASE("EON: its cosine sampler passes the chi-square suite's test, and a wro
     std::printf("EON chi-square against a uniform pdf: %s\n", describe(wrong).c_str());
     INFO(describe(wrong));
     CHECK_FALSE(wrong.passed);
+}
+
+TEST_CASE("thin film: the Airy series equals the textbook film reflectance; thickness 0 is no film", "[brdf][openpbr]") {
+    const FilmCase cases[] = {
+        {1.0, 1.33, 1.0, 0.0},  {1.0, 1.33, 1.0, 50.0}, {1.0, 1.33, 1.5, 30.0},  // soap film in air, water on glass
+        {1.0, 2.0, 1.5, 0.0},   {1.0, 2.0, 1.5, 70.0},                           // TiO2-like film on glass
+        {1.0, 1.4, 2.4, 45.0},                                                   // film below the base's index
+        {1.6, 2.0, 1.3, 60.0},  // under a coat: total reflection inside the film at the base (1.6 sin 60 > 1.3)
+    };
+    double worst = 0.0;
+    for (const FilmCase& c : cases) {
+        float cos1 = float(std::cos(c.theta_deg * M_PI / 180.0));
+        for (double d : {0.05, 0.25, 0.5, 1.2}) {
+            for (double lambda : {0.42, 0.55, 0.68}) {
+                double expected = thin_film_textbook(cos1, c.n1, c.n2, c.n3, d, lambda);
+                float r = brdf::thin_film_reflectance(cos1, float(c.n1), float(c.n2), float(c.n3), float(d), float(1.0 / lambda), 0.0f);
+                INFO("n " << c.n1 << " " << c.n2 << " " << c.n3 << ", theta " << c.theta_deg << ", d " << d << " um, lambda " << lambda);
+                // float rounding: the phase (up to 75 rad) is good to ~1e-5 rad, and dR/dphase <= 2 sum m C_m < 0.2 here
+                CHECK(std::fabs(r - expected) <= 1e-5);
+                worst = std::fmax(worst, std::fabs(r - expected));
+            }
+        }
+        // thickness 0 is the base's own Fresnel reflectance, bit for bit; a film 1e-6 um thin is within rounding of it
+        float bare = brdf::fresnel_dielectric(cos1, float(c.n3 / c.n1));
+        CHECK(brdf::thin_film_reflectance(cos1, float(c.n1), float(c.n2), float(c.n3), 0.0f, 1.8f, 0.1f) == bare);
+        CHECK(brdf::thin_film_reflectance(cos1, float(c.n1), float(c.n2), float(c.n3), 1e-6f, 1.8f, 0.0f) == Approx(bare).margin(1e-6));
+        float3 rgb = brdf::thin_film_reflectance_rgb(cos1, float(c.n1), float(c.n2), float(c.n3), 0.0f);
+        CHECK((rgb.x == bare && rgb.y == bare && rgb.z == bare));
+    }
+    std::printf("thin film against the textbook: largest difference %.2e\n", worst);
+    // a film of the base's index, or of the outside's, is no film at any thickness
+    for (double d : {0.1, 0.37, 0.9}) {
+        CHECK(brdf::thin_film_reflectance(0.8f, 1.0f, 1.5f, 1.5f, float(d), 2.0f, 0.0f) == Approx(brdf::fresnel_dielectric(0.8f, 1.5f)).margin(1e-6));
+        CHECK(brdf::thin_film_reflectance(0.8f, 1.0f, 1.0f, 1.5f, float(d), 2.0f, 0.0f) == Approx(brdf::fresnel_dielectric(0.8f, 1.5f)).margin(1e-6));
+    }
+}
+
+TEST_CASE("thin film: the series over a Gaussian in wavenumber equals the textbook reflectance averaged over it", "[brdf][openpbr]") {
+    double worst = 0.0;
+    for (double d : {0.2, 0.6, 2.0}) {
+        for (double theta : {0.0, 60.0}) {
+            float cos1 = float(std::cos(theta * M_PI / 180.0));
+            const double nu = 1.0 / 0.55, sigma = 0.1;
+            // midpoint rule over +-6 sigma (the Gaussian's mass outside: 2e-9), 4000 cells for a few periods
+            const int n = 4000;
+            double average = 0.0;
+            for (int i = 0; i < n; ++i) {
+                double x = -6.0 + 12.0 * (i + 0.5) / n;
+                average += std::exp(-0.5 * x * x) / std::sqrt(2.0 * M_PI) * (12.0 / n) *
+                           thin_film_textbook(cos1, 1.0, 1.33, 1.5, d, 1.0 / (nu + sigma * x));
+            }
+            float r = brdf::thin_film_reflectance(cos1, 1.0f, 1.33f, 1.5f, float(d), float(nu), float(sigma));
+            INFO("d " << d << ", theta " << theta);
+            CHECK(std::fabs(r - average) <= 1e-5);
+            worst = std::fmax(worst, std::fabs(r - average));
+        }
+    }
+    std::printf("thin film over a Gaussian in wavenumber: largest difference %.2e\n", worst);
 }
