@@ -49,8 +49,9 @@ EonQuadrature eon_albedo_quadrature(LobeFunction f, float sigma, float3 wo) {
 
 // The textbook reflectance of a film on a substrate (Born and Wolf, 1.6.4), for one wavelength, in
 // complex double: per polarisation r = (r12 + r23 e^{i delta}) / (1 + r12 r23 e^{i delta}),
-// delta = 4 pi n2 d cos theta2 / lambda, with complex cosines past a critical angle; unpolarised R.
-double thin_film_textbook(double cos1, double n1, double n2, double n3, double d_um, double lambda_um) {
+// delta = 4 pi n2 d cos theta2 / lambda, with complex cosines past a critical angle and a complex
+// index n3 for a conductor (principal roots throughout); unpolarised R.
+double thin_film_textbook(double cos1, double n1, double n2, std::complex<double> n3, double d_um, double lambda_um) {
     using C = std::complex<double>;
     double sin2_1 = 1.0 - cos1 * cos1;
     C cos2 = std::sqrt(C(1.0 - (n1 / n2) * (n1 / n2) * sin2_1)), cos3 = std::sqrt(C(1.0 - (n1 / n3) * (n1 / n3) * sin2_1));
@@ -161,7 +162,7 @@ TEST_CASE("EON: its cosine sampler passes the chi-square suite's test, and a wro
     CHECK(r.passed);
     // uniform over the hemisphere: integrates to 1 as the true pdf does, and must be rejected
     ChiSquareResult wrong = chi_square_test(sampler, [](float3 wi) { return wi.z > 0.0f ? 0.5 / M_PI : 0.0; }, options);
-    std::printf("EON chi-square against a uniform pdf: %s\n", describe(wrong).c_str());
+    std::printf("EON chi-square against a uniform pdf (must be rejected): %s\n", describe(wrong).c_str());
     INFO(describe(wrong));
     CHECK_FALSE(wrong.passed);
 }
@@ -222,4 +223,39 @@ TEST_CASE("thin film: the series over a Gaussian in wavenumber equals the textbo
         }
     }
     std::printf("thin film over a Gaussian in wavenumber: largest difference %.2e\n", worst);
+}
+
+TEST_CASE("thin film over a conductor: the Airy series equals the textbook reflectance; thickness 0 is the bare conductor", "[brdf][openpbr]") {
+    // complex indices of gold, copper and aluminium near 550 nm, held fixed over wavelength (no dispersion)
+    const std::complex<double> metals[] = {{0.43, 2.45}, {0.94, 2.6}, {0.96, 6.69}};
+    double worst = 0.0, worst_bare = 0.0;
+    for (std::complex<double> n3 : metals) {
+        brdf::float2 base(float(n3.real()), float(n3.imag()));
+        for (double n2 : {1.33, 2.0}) {
+            for (double theta : {0.0, 45.0, 75.0, 88.0}) {  // at 88 degrees |r12 r23| reaches 0.96: the series past 64 terms
+                float cos1 = float(std::cos(theta * M_PI / 180.0));
+                for (double d : {0.05, 0.3, 0.9}) {
+                    for (double lambda : {0.42, 0.55, 0.68}) {
+                        double expected = thin_film_textbook(cos1, 1.0, n2, n3, d, lambda);
+                        float r = brdf::thin_film_conductor_reflectance(cos1, 1.0f, float(n2), base, float(d), float(1.0 / lambda), 0.0f);
+                        INFO("n3 " << n3 << ", film " << n2 << ", theta " << theta << ", d " << d << ", lambda " << lambda);
+                        CHECK(std::fabs(r - expected) <= 1e-5);  // float rounding, as for the dielectric base
+                        worst = std::fmax(worst, std::fabs(r - expected));
+                    }
+                }
+                // thickness 0: the bare conductor, |r13|^2 of the textbook with no film; a film 1e-9 um thin within rounding of it
+                double bare = thin_film_textbook(cos1, 1.0, 1.0, n3, 0.0, 0.55);
+                float r0 = brdf::thin_film_conductor_reflectance(cos1, 1.0f, float(n2), base, 0.0f, 1.8f, 0.1f);
+                CHECK(std::fabs(r0 - bare) <= 1e-6);
+                CHECK(std::fabs(brdf::thin_film_conductor_reflectance(cos1, 1.0f, float(n2), base, 1e-9f, 1.8f, 0.0f) - bare) <= 2e-6);
+                worst_bare = std::fmax(worst_bare, std::fabs(r0 - bare));
+            }
+        }
+    }
+    std::printf("thin film over a conductor against the textbook: largest difference %.2e, bare conductor %.2e\n", worst, worst_bare);
+    // kappa = 0 is the dielectric base
+    for (double d : {0.1, 0.5}) {
+        float a = brdf::thin_film_conductor_reflectance(0.7f, 1.0f, 1.4f, brdf::float2(1.6f, 0.0f), float(d), 1.7f, 0.1f);
+        CHECK(a == Approx(brdf::thin_film_reflectance(0.7f, 1.0f, 1.4f, 1.6f, float(d), 1.7f, 0.1f)).margin(1e-7));
+    }
 }

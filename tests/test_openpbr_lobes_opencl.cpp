@@ -20,8 +20,9 @@ using brdf::float3;
 
 namespace {
 
-// Per item: wo, wi, rho (9 floats), sigma, tint, thickness; out: EON, F82 at wi, film RGB at wo.
-constexpr int kLobeInputs = 12, kLobeOutputs = 9;
+// Per item: wo, wi, rho (9 floats), sigma, tint, thickness; out: EON, F82 at wi, film RGB at wo over a
+// dielectric and over a conductor (eta 0.2 + rho, kappa 3 rho).
+constexpr int kLobeInputs = 12, kLobeOutputs = 12;
 
 const char* const kLobeKernel = R"(
 #pragma OPENCL FP_CONTRACT OFF
@@ -38,18 +39,21 @@ __kernel void openpbr_lobes(int count, __global const float* in, __global float*
     float3 eon = eon_brdf(rho, p[9], wo, wi);
     float3 f82 = fresnel_f82_tint(rho, float3_splat(p[10]), wi.z);
     float3 film = thin_film_reflectance_rgb(wo.z, 1.0f, 1.2f + p[9], 1.5f, p[11]);
-    __global float* o = out + 9 * i;
+    float3 metal = thin_film_conductor_reflectance_rgb(wo.z, 1.0f, 1.2f + p[9], float3_splat(0.2f) + rho, 3.0f * rho, p[11]);
+    __global float* o = out + 12 * i;
     o[0] = eon.x; o[1] = eon.y; o[2] = eon.z;
     o[3] = f82.x; o[4] = f82.y; o[5] = f82.z;
     o[6] = film.x; o[7] = film.y; o[8] = film.z;
+    o[9] = metal.x; o[10] = metal.y; o[11] = metal.z;
 }
 )";
 
 void lobes_on_host(const float* p, float* o) {
     float3 wo(p[0], p[1], p[2]), wi(p[3], p[4], p[5]), rho(p[6], p[7], p[8]);
-    float3 values[3] = {brdf::eon_brdf(rho, p[9], wo, wi), brdf::fresnel_f82_tint(rho, float3(p[10]), wi.z),
-                        brdf::thin_film_reflectance_rgb(wo.z, 1.0f, 1.2f + p[9], 1.5f, p[11])};
-    for (int k = 0; k < 3; ++k)
+    float3 values[4] = {brdf::eon_brdf(rho, p[9], wo, wi), brdf::fresnel_f82_tint(rho, float3(p[10]), wi.z),
+                        brdf::thin_film_reflectance_rgb(wo.z, 1.0f, 1.2f + p[9], 1.5f, p[11]),
+                        brdf::thin_film_conductor_reflectance_rgb(wo.z, 1.0f, 1.2f + p[9], float3(0.2f) + rho, 3.0f * rho, p[11])};
+    for (int k = 0; k < 4; ++k)
         for (int c = 0; c < 3; ++c) o[3 * k + c] = values[k][c];
 }
 
@@ -84,7 +88,7 @@ TEST_CASE("OpenCL: the OpenPBR lobes agree with the C++ build", "[opencl][openpb
     std::vector<float> device(size_t(count) * kLobeOutputs);
     runtime.read(out_buffer, device.data(), device.size() * sizeof(float));
 
-    double worst[3] = {0.0, 0.0, 0.0};
+    double worst[4] = {0.0, 0.0, 0.0, 0.0};
     int failures = 0;
     std::string first_failure;
     for (int i = 0; i < count; ++i) {
@@ -103,6 +107,6 @@ TEST_CASE("OpenCL: the OpenPBR lobes agree with the C++ build", "[opencl][openpb
     }
     INFO(failures << " outputs differ; the first: " << first_failure);
     CHECK(failures == 0);
-    std::printf("OpenPBR lobes, OpenCL against C++: largest relative difference EON %.1e, F82 %.1e, thin film %.1e\n",
-                worst[0], worst[1], worst[2]);
+    std::printf("OpenPBR lobes, OpenCL against C++: largest relative difference EON %.1e, F82 %.1e, thin film %.1e, "
+                "over a conductor %.1e\n", worst[0], worst[1], worst[2], worst[3]);
 }
