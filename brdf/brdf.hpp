@@ -8,4 +8,7 @@ namespace brdf {
 using namespace single_source;
 #include "bsdf.h"
 #include "merl.h"
+// lobes of the OpenPBR model, which no model includes yet (docs/materials.md)
+#include "eon_diffuse.h"
+#include "thin_film.h"
 }  // namespace brdf
