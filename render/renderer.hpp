@@ -130,10 +130,11 @@ public:
     // finite is NaN, so it shows (magenta in a PNG).
     film::ImageRgb image() const;
     RenderStatistics statistics() const;
-    // The first-hit AOVs over the film's sample indices (sample_ranges()), traced on the host's
-    // threads with the kernels' C++ build whatever the device (render/first_hit_aovs.cpp): the
-    // first hit is the same for every integrator. Not during a pass in progress (std::logic_error).
-    FirstHitAovs first_hit_aovs() const;
+    // The first-hit AOVs over the film's sample indices (sample_ranges()): the first hit is the
+    // same for every integrator. Here on the host's threads with the kernels' C++ build
+    // (render/first_hit_aovs.cpp); OpenClRenderer runs the same code as a kernel of its own. Not
+    // during a pass in progress (std::logic_error).
+    virtual FirstHitAovs first_hit_aovs() const;
     // What a launch of `count` samples from `first_sample` is given; public for host-side tools that
     // trace the same rays (the viewer's pixel inspector).
     kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
@@ -160,6 +161,8 @@ protected:
     // The environment the kernels bind: the input's, or a black one when there is none (the kernels
     // take its map and buffers either way; without an environment light nothing reads them).
     const ibl::Environment& bound_environment() const;
+    // The AOVs from each pixel's sums over the film's samples: albedo in xyz; normal in xyz, depth in w.
+    FirstHitAovs first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums) const;
     // The scene as the kernels' host build reads it (kernels/render_scene.h), over this renderer's buffers.
     kernel::RenderScene host_render_scene() const;
 

@@ -16,7 +16,9 @@
 #include <cmath>
 
 #include "render/camera_setup.hpp"
+#include "opencl/runtime.hpp"
 #include "render/host_renderer.hpp"
+#include "render/opencl_renderer.hpp"
 #include "tests/render_inputs.hpp"
 
 namespace {
@@ -27,13 +29,13 @@ const char* const kTintedSphereScene = R"({
   "objects": [{"name": "ball", "material": "sample", "shape": {"type": "sphere", "radius": 1}}]
 })";
 constexpr double kAlbedo[3] = {0.25, 0.5, 0.75};
+constexpr int size = 24, spp = 2;
 
-}  // namespace
+lab::render::RenderInput sphere_input() {
+    return render_input(std::nullopt, "", size, lab::render::LightSampling::bsdf, 7, kTintedSphereScene);
+}
 
-TEST_CASE("First-hit AOVs of a Lambert sphere: its albedo, its analytic normal and distance", "[render][aov]") {
-    const int size = 24, spp = 2;
-    lab::render::RenderInput input = render_input(std::nullopt, "", size, lab::render::LightSampling::bsdf, 7, kTintedSphereScene);
-    lab::render::HostRenderer renderer(input, 2);
+void check_sphere_aovs(lab::render::Renderer& renderer) {
     renderer.set_samples_per_launch(spp);
     renderer.add_samples(spp);
     const lab::render::FirstHitAovs aovs = renderer.first_hit_aovs();
@@ -84,4 +86,17 @@ TEST_CASE("First-hit AOVs of a Lambert sphere: its albedo, its analytic normal a
     CHECK(albedo_error <= 1e-6);
     CHECK(normal_excess <= 1.0);
     CHECK(depth_excess <= 1.0);
+}
+
+}  // namespace
+
+TEST_CASE("First-hit AOVs of a Lambert sphere: its albedo, its analytic normal and distance (host)", "[render][aov]") {
+    lab::render::HostRenderer renderer(sphere_input(), 2);
+    check_sphere_aovs(renderer);
+}
+
+TEST_CASE("First-hit AOVs of a Lambert sphere: its albedo, its analytic normal and distance (OpenCL)", "[render][aov][opencl]") {
+    lab::opencl::Runtime runtime("");
+    lab::render::OpenClRenderer renderer(runtime, sphere_input());
+    check_sphere_aovs(renderer);
 }
