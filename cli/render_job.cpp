@@ -6,6 +6,7 @@
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
+#include "render/aov_layers.hpp"
 #include "render/film_file.hpp"
 #include "render/host_renderer.hpp"
 #include "render/interrupt.hpp"
@@ -176,6 +177,8 @@ void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOption
     cmd.add_flag("--verbose", run->verbose, "Also print which objects are intersected exactly and which are sphere-traced");
     cmd.add_option("--samples", run->samples,
                    "A:B renders exactly the sample indices A to B-1 of every pixel: a part of a render that dtoadq merge combines");
+    cmd.add_option("--aov", run->aov,
+                   "First-hit AOVs as extra EXR layers, a comma-separated list of albedo, normal, depth (albedo.R/G/B, normal.X/Y/Z, depth.Z)");
     cmd.add_option("--resume", run->resume, "An EXR this command wrote: continue it (to --spp samples per pixel in all, or for --time more)");
 }
 
@@ -209,6 +212,7 @@ render::RenderLimits run_limits(const RenderRunOptions& run, const std::optional
 void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra) {
     // Everything that can be wrong with the input is found before the first sample.
     render::check_render_output(run.output);
+    const render::AovSelection aov_selection = render::parse_aov_selection(run.aov, run.output);
     film::ToneMap tone_map = film::parse_tone_map(run.tone_map);
     if (!(run.time_seconds >= 0.0) || run.time_seconds > 1e6) throw InputError("--time", "", "must be in [0, 1e6] seconds");
     if (run.spp < 1 || run.spp > 1 << 24) throw InputError("--spp", "", "must be in [1, 16777216]");
@@ -255,7 +259,9 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (!outcome.failure.empty() && stats.samples_per_pixel == 0) render::fail_after_writing(outcome, 0, "");
     film::ImageMetadata metadata = metadata_now();
     const render::FilmReadback film = renderer->film();
-    render::write_render_images(run.output, renderer->image(), tone_map, run.exposure, metadata, &film);
+    const std::vector<film::ImageChannel> aovs =
+        aov_selection.any() ? render::aov_channels(renderer->first_hit_aovs(), aov_selection) : std::vector<film::ImageChannel>();
+    render::write_render_images(run.output, renderer->image(), tone_map, run.exposure, metadata, &film, aovs);
     std::printf("wrote %s%s\n", run.output.c_str(), render::is_exr_path(run.output) ? (" and " + render::png_beside(run.output)).c_str() : "");
     if (!outcome.failure.empty()) render::fail_after_writing(outcome, stats.samples_per_pixel, run.output);
     render::print_render_statistics(stats, run.quiet);

@@ -85,6 +85,7 @@ struct RenderRunOptions {
     bool verbose = false;  // also print which objects are intersected exactly
     std::string samples;  // --samples A:B: exactly the sample indices A to B-1 (a part of a render to merge)
     std::string resume;   // --resume FILE.exr: continue that render (its film) up to --spp in all, or for --time more
+    std::string aov;      // --aov albedo,normal,depth: first-hit AOVs as EXR layers (render/aov_layers.hpp)
 };
 void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOptions>& run);
 

@@ -27,10 +27,7 @@ void HostRenderer::clear_film() {
 }
 
 void HostRenderer::launch(const kernel::RenderKernelSettings& launch_settings, PixelRange range) {
-    const ibl::Environment& env = bound_environment();
-    kernel::RenderScene scene = kernel::render_scene_make(compiled_.materials.data(), brdf::measured_tables(), emission_.data(), lights_.lights.data(),
-                                                          lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(),
-                                                          env.texels().data(), env.alias().data());
+    const kernel::RenderScene scene = host_render_scene();
 
     const int pixels = range.first + range.count;
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());

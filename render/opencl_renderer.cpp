@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <stdexcept>
 
 #include "brdf/host/measured_registry.hpp"
 #include "kernels/host/material_layout.hpp"
@@ -66,6 +67,7 @@ void OpenClRenderer::build_kernel() {
     local_size_ = s.opencl.local_size > 0 ? size_t(s.opencl.local_size) : size_t(kLaunchGranularity);
     while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     program_.emplace(std::move(program));
+    first_hit_program_.reset();  // the scene's source or features changed
     kernel_ = std::move(kernel);
     if (wavefront()) wavefront_driver_.build(*program_, compiled_, options);
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -137,6 +139,31 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& launch_settings,
         launch_range(runtime_, kernel_, pixels, local_size_, size_t(image));
     }
     runtime_.finish();
+}
+
+FirstHitAovs OpenClRenderer::first_hit_aovs() const {
+    if (pass_pixels() > 0) throw std::logic_error("Renderer::first_hit_aovs: a pass is in progress (add_samples ended inside a pass)");
+    if (!first_hit_program_) {
+        first_hit_program_.emplace(runtime_.build(kernels::assemble_scene_kernel("kernels/first_hit.cl", compiled_), build_options_));
+        first_hit_kernel_ = first_hit_program_->kernel("render_first_hits");
+    }
+    const int image = input_.settings.width * input_.settings.height;
+    const size_t bytes = size_t(image) * sizeof(brdf::float4);
+    std::vector<brdf::float4> albedo(size_t(image), brdf::float4(0.0f)), normal_depth(size_t(image), brdf::float4(0.0f));
+    opencl::BufferHandle albedo_sums = runtime_.buffer(bytes, CL_MEM_READ_WRITE), normal_depth_sums = runtime_.buffer(bytes, CL_MEM_READ_WRITE);
+    runtime_.write(albedo_sums, albedo.data(), bytes);
+    runtime_.write(normal_depth_sums, normal_depth.data(), bytes);
+    const SampleRanges ranges = sample_ranges();
+    for (const auto& [first, end] : ranges.ranges()) {
+        cl_uint a = bind_render_arguments(first_hit_kernel_, kernel_settings(int(first), int(end - first)));
+        opencl::set_kernel_arg(first_hit_kernel_, a++, albedo_sums);
+        opencl::set_kernel_arg(first_hit_kernel_, a++, normal_depth_sums);
+        launch_range(runtime_, first_hit_kernel_, PixelRange{0, image}, local_size_, size_t(image));
+        runtime_.finish();
+    }
+    runtime_.read(albedo_sums, albedo.data(), bytes);
+    runtime_.read(normal_depth_sums, normal_depth.data(), bytes);
+    return first_hit_means(albedo, normal_depth);
 }
 
 FilmReadback OpenClRenderer::read_film() const {

@@ -31,6 +31,10 @@ public:
     // light (-DSCENE_LIGHT_TYPES, kernels/lights/light_selection.h).
     const std::string& build_options() const { return build_options_; }
 
+    // The first-hit AOVs by render_first_hits (kernels/first_hit.cl), a program built at the first
+    // call after each build of the integrator's, so a render without AOVs never compiles it.
+    FirstHitAovs first_hit_aovs() const override;
+
 private:
     void build_kernel() override;
     void upload_scene() override;
@@ -44,6 +48,8 @@ private:
     std::optional<opencl::Program> program_;
     std::string build_options_;
     opencl::KernelHandle kernel_;
+    mutable std::optional<opencl::Program> first_hit_program_;  // built by first_hit_aovs
+    mutable opencl::KernelHandle first_hit_kernel_;
     // Arguments 0 .. 14, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
     cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& launch_settings) const;
     WavefrontDriver wavefront_driver_;  // used when wavefront()

@@ -109,8 +109,9 @@ void check_render_output(const std::string& output) {
 }
 
 void write_render_images(const std::string& output, const film::ImageRgb& image, film::ToneMap tone_map, float exposure_stops,
-                         const film::ImageMetadata& metadata, const FilmReadback* film) {
-    const std::vector<film::ImageChannel> channels = film ? film_channels(*film) : std::vector<film::ImageChannel>();
+                         const film::ImageMetadata& metadata, const FilmReadback* film, const std::vector<film::ImageChannel>& aovs) {
+    std::vector<film::ImageChannel> channels = film ? film_channels(*film) : std::vector<film::ImageChannel>();
+    channels.insert(channels.end(), aovs.begin(), aovs.end());
     try {
         if (is_exr_path(output)) {
             film::write_exr(output, image, metadata, channels);

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "film/image.hpp"
 #include "film/image_metadata.hpp"
+#include "film/image_output.hpp"
 #include "film/tone_map.hpp"
 #include "render/renderer.hpp"
 
@@ -56,9 +58,11 @@ void check_render_output(const std::string& output);
 // An .exr output gets the linear EXR and the tone-mapped PNG beside it; a .png only the PNG. When
 // they cannot be written the EXR goes to the temporary folder instead, and the InputError thrown
 // says where: a finished render is never lost to a bad path. With `film`, the EXR holds the film's
-// buffers too (render/film_file.hpp), so it can be merged with other parts or resumed.
+// buffers too (render/film_file.hpp), so it can be merged with other parts or resumed; `aovs`
+// (render/aov_layers.hpp) are further layers of the EXR.
 void write_render_images(const std::string& output, const film::ImageRgb& image, film::ToneMap tone_map, float exposure_stops,
-                         const film::ImageMetadata& metadata, const FilmReadback* film = nullptr);
+                         const film::ImageMetadata& metadata, const FilmReadback* film = nullptr,
+                         const std::vector<film::ImageChannel>& aovs = {});
 
 // Samples, time, paths/s, rays/s and rays that ran out of steps; non-finite samples, if any, on
 // stderr as a warning even when quiet (they are never silently dropped).

@@ -139,6 +139,13 @@ const ibl::Environment& Renderer::bound_environment() const {
     return black;
 }
 
+kernel::RenderScene Renderer::host_render_scene() const {
+    const ibl::Environment& env = bound_environment();
+    return kernel::render_scene_make(compiled_.materials.data(), brdf::measured_tables(), emission_.data(), lights_.lights.data(),
+                                     lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(), env.texels().data(),
+                                     env.alias().data());
+}
+
 int Renderer::add_samples(int max_samples, double budget_seconds) {
     Clock::time_point start = Clock::now();
     int added = 0;

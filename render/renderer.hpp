@@ -35,6 +35,15 @@ struct RenderInput {
     LightSelection light_selection = LightSelection::power;
 };
 
+// First-hit AOVs (kernels/first_hit.h), each pixel's mean over the film's samples: albedo
+// (directional, estimated by one BSDF sample per camera ray), world-space shading normal (the mean
+// of unit normals, not renormalised, so an edge pixel shows its mix), camera-ray distance. A ray
+// that escapes adds zeros, so a pixel partly on the background holds the covered fraction's share.
+struct FirstHitAovs {
+    film::ImageRgb albedo, normal;
+    std::vector<float> depth;  // one per pixel
+};
+
 struct RenderStatistics {
     int samples_per_pixel = 0;
     double render_seconds = 0.0;  // in add_samples(): launches and waiting for them
@@ -121,6 +130,11 @@ public:
     // finite is NaN, so it shows (magenta in a PNG).
     film::ImageRgb image() const;
     RenderStatistics statistics() const;
+    // The first-hit AOVs over the film's sample indices (sample_ranges()): the first hit is the
+    // same for every integrator. Here on the host's threads with the kernels' C++ build
+    // (render/first_hit_aovs.cpp); OpenClRenderer runs the same code as a kernel of its own. Not
+    // during a pass in progress (std::logic_error).
+    virtual FirstHitAovs first_hit_aovs() const;
     // What a launch of `count` samples from `first_sample` is given; public for host-side tools that
     // trace the same rays (the viewer's pixel inspector).
     kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
@@ -147,6 +161,10 @@ protected:
     // The environment the kernels bind: the input's, or a black one when there is none (the kernels
     // take its map and buffers either way; without an environment light nothing reads them).
     const ibl::Environment& bound_environment() const;
+    // The AOVs from each pixel's sums over the film's samples: albedo in xyz; normal in xyz, depth in w.
+    FirstHitAovs first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums) const;
+    // The scene as the kernels' host build reads it (kernels/render_scene.h), over this renderer's buffers.
+    kernel::RenderScene host_render_scene() const;
 
     RenderInput input_;
     scene::CompiledScene compiled_;

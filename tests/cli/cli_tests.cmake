@@ -340,6 +340,11 @@ cli_bad_input(NAME render.unknown_light_sampling ABSENT ${PNG} EXPECT "${E}--lig
               ARGS ${RENDER} --light-sampling all)
 cli_bad_input(NAME render.unknown_light_selection ABSENT ${PNG} EXPECT "${E}--light-selection: unknown value \"random\" "
               ARGS ${RENDER} --light-selection random)
+# --aov: an unknown AOV, and AOVs asked of a PNG (no layers), stop the command before the render
+cli_bad_input(NAME render.unknown_aov ABSENT ${PNG} EXPECT "${E}--aov: unknown AOV \"albdo\" \\(expected a comma-separated list of albedo, normal, depth\\)$"
+              ARGS ${RENDER} --aov albedo,albdo)
+cli_bad_input(NAME preview.aov_to_png ABSENT ${PNG} EXPECT "${E}--aov: AOVs are EXR layers, and .*\\.png is not an \\.exr"
+              ARGS preview --size 8x8 --spp 1 --aov depth -o ${PNG})
 cli_bad_input(NAME render.no_sample_slot ABSENT ${PNG} EXPECT "${E}${D}/scene_no_sample\\.json: materials: no material named \"sample\""
               ARGS render ${D}/scene_no_sample.json --material presets/gold.json --size 16x16 --spp 1 -o ${PNG})
 
@@ -348,6 +353,10 @@ add_test(NAME cli.render.writes_exr_and_png
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/render_output -DSOURCE=${PROJECT_SOURCE_DIR}
                  -P ${CLI_TEST_DIR}/expect_render_output.cmake)
 set_tests_properties(cli.render.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT 120)
+add_test(NAME cli.render.writes_aov_layers
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/aov_layers -DSOURCE=${PROJECT_SOURCE_DIR}
+                 -P ${CLI_TEST_DIR}/expect_aov_layers.cmake)
+set_tests_properties(cli.render.writes_aov_layers PROPERTIES LABELS cli TIMEOUT 60)
 
 cli_bad_input(NAME bench.compare_to_missing EXPECT "${E}${D}/absent_binary: is not an executable file$"
               ARGS bench compare --to ${D}/absent_binary)

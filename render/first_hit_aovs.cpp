@@ -1,0 +1,56 @@
+// Renderer::first_hit_aovs: the first-hit AOVs (kernels/first_hit.h) of the film's samples, on the
+// host's threads (OpenClRenderer overrides it with the same code as a kernel). One march per
+// sample, against a path's several marches and shadow rays, and only when a caller asks (`--aov`):
+// a render without AOVs runs none of this.
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+#include <thread>
+
+#include "render/host_kernels.hpp"
+#include "render/renderer.hpp"
+
+namespace lab::render {
+
+FirstHitAovs Renderer::first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums) const {
+    const int width = input_.settings.width, height = input_.settings.height;
+    FirstHitAovs aovs{film::ImageRgb(width, height), film::ImageRgb(width, height), std::vector<float>(size_t(width) * size_t(height), 0.0f)};
+    const int64_t samples = sample_ranges().count();
+    if (samples == 0) return aovs;
+    const float scale = float(1.0 / double(samples));
+    for (size_t p = 0; p < aovs.depth.size(); ++p) {
+        for (int c = 0; c < 3; ++c) {
+            aovs.albedo.rgb[3 * p + size_t(c)] = albedo_sums[p][c] * scale;
+            aovs.normal.rgb[3 * p + size_t(c)] = normal_depth_sums[p][c] * scale;
+        }
+        aovs.depth[p] = normal_depth_sums[p][3] * scale;
+    }
+    return aovs;
+}
+
+FirstHitAovs Renderer::first_hit_aovs() const {
+    if (pass_pixels_ > 0) throw std::logic_error("Renderer::first_hit_aovs: a pass is in progress (add_samples ended inside a pass)");
+    const int pixels = input_.settings.width * input_.settings.height;
+    std::vector<brdf::float4> albedo(size_t(pixels), brdf::float4(0.0f)), normal_depth(size_t(pixels), brdf::float4(0.0f));
+    const SampleRanges ranges = sample_ranges();
+    const kernel::RenderScene scene = host_render_scene();
+    const kernel::RenderKernelSettings settings = kernel_settings(0, 0);
+    std::atomic<int> next{0};
+    auto work = [&] {
+        const HostSceneScope scene_scope(input_.scene);
+        for (int pixel = next++; pixel < pixels; pixel = next++)
+            for (const auto& [first, end] : ranges.ranges())
+                for (int64_t sample = first; sample < end; ++sample) {
+                    const host_kernels::FirstHit h = host_kernels::first_hit_sample(&settings, &camera_, &scene, pixel, int(sample));
+                    albedo[size_t(pixel)] += brdf::float4(h.albedo, 0.0f);
+                    normal_depth[size_t(pixel)] += brdf::float4(h.normal, h.depth);
+                }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    return first_hit_means(albedo, normal_depth);
+}
+
+}  // namespace lab::render
