@@ -7,6 +7,7 @@
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "render/aov_layers.hpp"
+#include "render/display_denoise.hpp"
 #include "render/film_file.hpp"
 #include "render/host_renderer.hpp"
 #include "render/interrupt.hpp"
@@ -179,6 +180,9 @@ void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOption
                    "A:B renders exactly the sample indices A to B-1 of every pixel: a part of a render that dtoadq merge combines");
     cmd.add_option("--aov", run->aov,
                    "First-hit AOVs as extra EXR layers, a comma-separated list of albedo, normal, depth (albedo.R/G/B, normal.X/Y/Z, depth.Z)");
+    cmd.add_option("--denoise", run->denoise,
+                   "on: the image denoised for looking at (guided by the first-hit AOVs), the raw one kept as the EXR layer noisy.R/G/B")
+        ->capture_default_str();
     cmd.add_option("--resume", run->resume, "An EXR this command wrote: continue it (to --spp samples per pixel in all, or for --time more)");
 }
 
@@ -213,6 +217,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     // Everything that can be wrong with the input is found before the first sample.
     render::check_render_output(run.output);
     const render::AovSelection aov_selection = render::parse_aov_selection(run.aov, run.output);
+    const bool denoise = parse_on_off(run.denoise, "--denoise");
     film::ToneMap tone_map = film::parse_tone_map(run.tone_map);
     if (!(run.time_seconds >= 0.0) || run.time_seconds > 1e6) throw InputError("--time", "", "must be in [0, 1e6] seconds");
     if (run.spp < 1 || run.spp > 1 << 24) throw InputError("--spp", "", "must be in [1, 16777216]");
@@ -258,10 +263,19 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     render::RenderStatistics stats = renderer->statistics();
     if (!outcome.failure.empty() && stats.samples_per_pixel == 0) render::fail_after_writing(outcome, 0, "");
     film::ImageMetadata metadata = metadata_now();
+    metadata.set("denoise", denoise ? "on" : "off");
     const render::FilmReadback film = renderer->film();
-    const std::vector<film::ImageChannel> aovs =
-        aov_selection.any() ? render::aov_channels(renderer->first_hit_aovs(), aov_selection) : std::vector<film::ImageChannel>();
-    render::write_render_images(run.output, renderer->image(), tone_map, run.exposure, metadata, &film, aovs);
+    const film::ImageRgb raw = renderer->image();
+    std::optional<render::FirstHitAovs> first_hits;
+    if (aov_selection.any() || denoise) first_hits = renderer->first_hit_aovs();
+    std::vector<film::ImageChannel> layers = aov_selection.any() ? render::aov_channels(*first_hits, aov_selection) : std::vector<film::ImageChannel>();
+    film::ImageRgb shown = raw;
+    if (denoise) {
+        shown = render::denoised(raw, *first_hits, runtime ? &*runtime : nullptr);
+        const std::vector<film::ImageChannel> noisy = render::noisy_channels(raw);
+        layers.insert(layers.end(), noisy.begin(), noisy.end());
+    }
+    render::write_render_images(run.output, shown, tone_map, run.exposure, metadata, &film, layers);
     std::printf("wrote %s%s\n", run.output.c_str(), render::is_exr_path(run.output) ? (" and " + render::png_beside(run.output)).c_str() : "");
     if (!outcome.failure.empty()) render::fail_after_writing(outcome, stats.samples_per_pixel, run.output);
     render::print_render_statistics(stats, run.quiet);

@@ -86,6 +86,7 @@ struct RenderRunOptions {
     std::string samples;  // --samples A:B: exactly the sample indices A to B-1 (a part of a render to merge)
     std::string resume;   // --resume FILE.exr: continue that render (its film) up to --spp in all, or for --time more
     std::string aov;      // --aov albedo,normal,depth: first-hit AOVs as EXR layers (render/aov_layers.hpp)
+    std::string denoise = "off";  // --denoise on: the image denoised, the raw one kept as noisy.R/G/B (render/display_denoise.hpp)
 };
 void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOptions>& run);
 

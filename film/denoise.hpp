@@ -17,7 +17,7 @@ struct DenoiseGuide {
     ImageRgb albedo;                 // the first hit's albedo (0 where the camera ray hit nothing)
     ImageRgb normal;                 // the first hit's unit shading normal
     std::vector<float> depth;        // the camera ray's distance to the first hit; <= 0 where it hit nothing
-    std::vector<float> variance;     // the variance of the pixel's mean radiance (luminance)
+    std::vector<float> variance;     // the variance of the pixel's mean radiance (luminance); empty: estimated from the image
 };
 
 struct DenoiseOptions {
@@ -35,7 +35,11 @@ struct AtrousBuffers {
     std::vector<std::array<float, 4>> illumination, guide;
 };
 
-// The radiance divided by the albedo (a channel under 1e-3 is left as it is) and the guide packed.
+// The radiance divided by the albedo (a channel under 1e-3 is left as it is) and the guide packed
+// (normals made unit: a pixel's mean normal is shorter at an edge). Without a variance in the guide,
+// each pixel's is estimated from the image, as SVGF does before it has a history: the spread of the
+// illumination's luminance over the 7 x 7 pixels around it on the same surface (normals within 25
+// degrees, depths within 5 %), which is the variance of a pixel's mean where the image is flat.
 // Throws std::invalid_argument when the guide's sizes differ from the image's.
 AtrousBuffers demodulate(const ImageRgb& radiance, const DenoiseGuide& guide);
 // The filtered illumination times the albedo again.

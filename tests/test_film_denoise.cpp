@@ -82,12 +82,9 @@ double linear_filter_noise_gain(int passes) {
 
 constexpr float kUp[3] = {0.0f, 0.0f, 1.0f};
 
-}  // namespace
-
-TEST_CASE("Denoiser: on one flat surface it removes the noise the filter's footprint can", "[denoise]") {
-    const int size = 160;
-    const float sigma = 0.05f;
-    Synthetic s = make_synthetic(size, sigma, 1, [](int, int, float* radiance, float* albedo, float* normal, float* depth) {
+// One flat surface facing the camera: albedo 0.5, radiance 0.4, depth 5.
+Synthetic flat_surface(int size, float sigma, uint32_t seed) {
+    return make_synthetic(size, sigma, seed, [](int, int, float* radiance, float* albedo, float* normal, float* depth) {
         for (int c = 0; c < 3; ++c) {
             albedo[c] = 0.5f;
             radiance[c] = 0.4f;
@@ -95,6 +92,14 @@ TEST_CASE("Denoiser: on one flat surface it removes the noise the filter's footp
         }
         *depth = 5.0f;
     });
+}
+
+}  // namespace
+
+TEST_CASE("Denoiser: on one flat surface it removes the noise the filter's footprint can", "[denoise]") {
+    const int size = 160;
+    const float sigma = 0.05f;
+    Synthetic s = flat_surface(size, sigma, 1);
     const lab::film::ImageRgb denoised = lab::film::denoise(s.noisy, s.guide);
     // Away from the borders (where the footprint is cut), far enough that the widest pass's taps
     // all land inside: 2 (2^0 + ... + 2^4) = 62 pixels.
@@ -108,6 +113,31 @@ TEST_CASE("Denoiser: on one flat surface it removes the noise the filter's footp
     INFO("raw " << raw << ", denoised " << filtered << ", linear filter's floor " << raw * floor);
     CHECK(filtered >= 0.9 * raw * floor);
     CHECK(filtered <= 0.1 * raw);
+}
+
+TEST_CASE("Denoiser: without a variance it estimates each pixel's from the image, and still denoises", "[denoise]") {
+    const int size = 160;
+    const float sigma = 0.05f;
+    Synthetic s = flat_surface(size, sigma, 3);
+    s.guide.variance.clear();
+    // The illumination's noise is sigma (the render's, divided by the albedo it was multiplied by):
+    // its luminance's variance sigma^2. The estimate from 49 pixels is unbiased; over the image's
+    // 154^2 interior pixels its mean is within 5 % (the windows overlap, so fewer than that many are
+    // independent: about 154^2 / 49 windows of relative spread sqrt(2 / 48) = 0.2 give 0.3 %).
+    const lab::film::AtrousBuffers b = lab::film::demodulate(s.noisy, s.guide);
+    double sum = 0.0;
+    int n = 0;
+    for (int y = 3; y < size - 3; ++y)
+        for (int x = 3; x < size - 3; ++x) {
+            sum += b.illumination[size_t(y * size + x)][3];
+            ++n;
+        }
+    const double estimate = sum / n;
+    INFO("mean estimated variance " << estimate << " against " << sigma * sigma);
+    CHECK(estimate == Approx(double(sigma) * sigma).epsilon(0.05));
+    auto centre = [&](int x, int y) { return x >= 62 && y >= 62 && x < size - 62 && y < size - 62; };
+    const lab::film::ImageRgb denoised = lab::film::denoise(s.noisy, s.guide);
+    CHECK(rmse(denoised, s.truth, centre) <= 0.1 * rmse(s.noisy, s.truth, centre));
 }
 
 TEST_CASE("Denoiser: albedo, normal and depth edges and the background stay sharp", "[denoise]") {

@@ -353,6 +353,11 @@ add_test(NAME cli.render.writes_exr_and_png
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/render_output -DSOURCE=${PROJECT_SOURCE_DIR}
                  -P ${CLI_TEST_DIR}/expect_render_output.cmake)
 set_tests_properties(cli.render.writes_exr_and_png PROPERTIES LABELS cli TIMEOUT 120)
+add_test(NAME cli.preview.denoise_keeps_the_raw_image
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/denoise_layers -P ${CLI_TEST_DIR}/expect_denoise_layers.cmake)
+set_tests_properties(cli.preview.denoise_keeps_the_raw_image PROPERTIES LABELS cli TIMEOUT 60)
+cli_bad_input(NAME preview.denoise_word ABSENT ${PNG} EXPECT "${E}--denoise: expected on or off, got \"yes\"$"
+              ARGS preview --size 8x8 --spp 1 --denoise yes -o ${PNG})
 add_test(NAME cli.render.writes_aov_layers
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/aov_layers -DSOURCE=${PROJECT_SOURCE_DIR}
                  -P ${CLI_TEST_DIR}/expect_aov_layers.cmake)
