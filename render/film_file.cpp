@@ -15,10 +15,11 @@ const std::vector<std::string>& channel_names() {
     return names;
 }
 
-// Metadata that differs between parts of one render and does not change what it estimates.
+// Metadata that differs between parts of one render and does not change what it estimates (the
+// display's tone map, exposure and denoising change the image shown, never the film).
 bool is_per_part(const std::string& key) {
-    static const std::set<std::string> keys = {"spp",       "sample_ranges", "seconds",  "device",
-                                               "nonfinite_samples", "lost_rays", "tonemap", "exposure", "merged_parts"};
+    static const std::set<std::string> keys = {"spp",      "sample_ranges", "seconds",  "device",       "nonfinite_samples",
+                                               "lost_rays", "tonemap",      "exposure", "merged_parts", "denoise"};
     return keys.count(key) > 0;
 }
 
@@ -132,6 +133,7 @@ FilmFile merge_film_files(const std::vector<FilmFile>& parts) {
     for (const std::string& d : devices) device += (device.empty() ? "" : "; ") + d;
     merged.metadata.set("device", device);
     merged.metadata.set("merged_parts", merged_parts);
+    merged.metadata.set("denoise", "off");  // the merge resolves its image from the film, as rendered
     return merged;
 }
 
