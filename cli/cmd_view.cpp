@@ -45,9 +45,9 @@ int find_slot(const scene::Scene& scene, const std::string& name) {
 // --window and --resize: a size the window can take (the panel and a sliver of render beside it).
 void parse_window_size(const std::string& text, const std::string& option, int* width, int* height) {
     render::parse_image_size(text, option, width, height);
-    if (*width < viewer::kPanelColumnWidth + 64 || *height < 240)
-        throw InputError(option, "", text + " is smaller than the panel and a render beside it (" +
-                                         std::to_string(viewer::kPanelColumnWidth + 64) + "x240 at least)");
+    if (*width < viewer::kSmallestWindowWidth || *height < viewer::kSmallestWindowHeight)
+        throw InputError(option, "", text + " is smaller than the panel and a render beside it (" + std::to_string(viewer::kSmallestWindowWidth) +
+                                         "x" + std::to_string(viewer::kSmallestWindowHeight) + " at least)");
 }
 
 const char* const kSectionNames[] = {"Material", "Checks", "Lobe", "Environment", "Presets", "Inspector", "Help", "all"};
@@ -181,16 +181,14 @@ void run_view(const ViewOptions& o) {
     const RenderJobOptions job_options = o.job;
     config.factory_for = [job_options, device, runtimes](const std::string& env,
                                                          const scene::LookDevReferences& references) -> viewer::RenderWorker::RendererFactory {
-        std::string words;  // the --references words of `references`
-        for (const auto& [on, word] : {std::pair{references.chrome_ball, "chrome"}, {references.grey_ball, "grey"}, {references.color_chart, "chart"}})
-            if (on) words += (words.empty() ? "" : ",") + std::string(word);
+        const std::string words = scene::look_dev_references_text(references);
         return [job_options, env, words, device, runtimes] {
             RenderJobOptions options = job_options;
             if (!env.empty()) {
                 options.env = env;
                 options.env_rotation = options.env_exposure = 0.0f;  // the viewer's own values are applied next
             }
-            options.references = words.empty() ? "none" : words;
+            options.references = words;
             RenderJob job = prepare_render_job(options);  // throws for a missing or bad map
             return runtimes->make(job, device);
         };

@@ -1,5 +1,6 @@
 #include "cli/turntable.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -37,10 +38,6 @@ std::pair<size_t, size_t> frame_field(const std::string& pattern) {
     return found;
 }
 
-bool ends_with(const std::string& s, const std::string& tail) {
-    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 // The camera orbited by `degrees` about the vertical axis (+y) through its look-at point: a turn
 // of the world about that axis seen from the camera's side.
 scene::Camera orbited(scene::Camera c, float degrees) {
@@ -69,7 +66,7 @@ void render_turntable(const RenderJobOptions& job_options, const TurntableOption
     const film::ToneMap tone_map = film::parse_tone_map(t.tone_map);
     if (!(t.exposure >= -64.0f && t.exposure <= 64.0f)) throw InputError("--exposure", "", "must be a number of stops in [-64, 64]");
     if (t.output.empty()) throw InputError("--output", "", "--turntable needs -o: a video (.mp4) or a frame pattern (frame_%04d.png or .exr)");
-    const bool video = ends_with(t.output, ".mp4");
+    const bool video = fs::path(t.output).extension() == ".mp4";
     std::optional<TempFolder> frames_folder;
     std::string pattern = t.output;
     if (video) {

@@ -42,6 +42,13 @@ LookDevReferences parse_look_dev_references(const std::string& text, const std::
     return r;
 }
 
+std::string look_dev_references_text(const LookDevReferences& r) {
+    std::string words;
+    for (const auto& [on, word] : {std::pair{r.chrome_ball, "chrome"}, {r.grey_ball, "grey"}, {r.color_chart, "chart"}})
+        if (on) words += (words.empty() ? "" : ",") + std::string(word);
+    return words.empty() ? "none" : words;
+}
+
 namespace {
 
 // "neutral 6.5" -> "neutral_6_5"

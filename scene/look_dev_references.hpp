@@ -20,6 +20,8 @@ struct LookDevReferences {
 };
 // "none", "all", or a comma list of chrome, grey, chart; throws lab::InputError(option, ...) otherwise.
 LookDevReferences parse_look_dev_references(const std::string& text, const std::string& option);
+// The words parse_look_dev_references reads back as `references`: "none", or e.g. "chrome,chart".
+std::string look_dev_references_text(const LookDevReferences& references);
 
 // One ColorChecker Classic patch: its name and its 8-bit sRGB value as published by D. Pascale,
 // "RGB coordinates of the Macbeth ColorChecker", The BabelColor Company, 2006 (the average of

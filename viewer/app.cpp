@@ -36,9 +36,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
-// The window's first height at least, and its smallest size (a sliver of render beside the panel).
+// The window's first height at least.
 constexpr int kMinWindowHeight = 560;
-constexpr int kSmallestWindowWidth = kPanelColumnWidth + 64, kSmallestWindowHeight = 240;
 // An open panel section is never squeezed below this; its content scrolls inside it.
 constexpr float kMinSectionHeight = 90.0f;
 // Headless runs give up waiting for the image to show their last change after this long.

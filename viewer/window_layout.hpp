@@ -44,6 +44,8 @@ struct WindowLayout {
 constexpr int kPanelColumnWidth = 440;
 // The render area is never narrower than this: a second panel column opens only where it stays.
 constexpr int kMinRenderAreaWidth = 640;
+// The smallest window: one panel column and a sliver of render beside it.
+constexpr int kSmallestWindowWidth = kPanelColumnWidth + 64, kSmallestWindowHeight = 240;
 
 WindowLayout layout_window(const LayoutRequest& request);
 // One line for the terminal (`view --stats`): "layout: window WxH, render area ..., image X,Y WxH,
