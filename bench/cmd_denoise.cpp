@@ -71,8 +71,6 @@ void run_bench_denoise(const BenchDenoiseCommand& c) {
 
     std::optional<opencl::Runtime> runtime;
     if (c.job.device != "host") runtime.emplace(c.job.device);
-    std::optional<kernels::DeviceDenoiser> device_filter;
-    if (runtime) device_filter.emplace(*runtime);
     report::RendererFactory make = [&](const render::RenderInput& input) -> std::unique_ptr<render::Renderer> {
         if (runtime) return std::make_unique<render::OpenClRenderer>(*runtime, input);
         return std::make_unique<render::HostRenderer>(input);
@@ -106,17 +104,14 @@ void run_bench_denoise(const BenchDenoiseCommand& c) {
                 const film::DenoiseGuide guide = render::denoise_guide(renderer->first_hit_aovs());
                 row.aov_seconds = seconds_since(aov_start);
                 // the filter's three steps timed apart: demodulation and its variance estimate on
-                // the host, the passes on the device, remodulation on the host
+                // the host, the passes where the render runs, remodulation on the host
                 film::ImageRgb denoised;
                 std::vector<double> filter_times, pass_times;
                 for (int i = 0; i < c.filter_repeats; ++i) {
                     Clock::time_point start = Clock::now();
                     film::AtrousBuffers buffers = film::demodulate(raw, guide);
                     Clock::time_point passes_start = Clock::now();
-                    if (device_filter)
-                        device_filter->passes(&buffers, film::DenoiseOptions{});
-                    else
-                        film::atrous_passes(&buffers, film::DenoiseOptions{});
+                    renderer->display_filter_passes(&buffers, film::DenoiseOptions{});
                     pass_times.push_back(seconds_since(passes_start));
                     denoised = film::remodulate(buffers, guide);
                     filter_times.push_back(seconds_since(start));

@@ -53,13 +53,13 @@ void add_preview_options(CLI::App& cmd, RenderJobOptions* o) {
     o->light_sampling_option = "--ibl-sampling";
 }
 
-namespace {
-
 bool parse_on_off(const std::string& text, const std::string& option) {
     if (text == "on") return true;
     if (text == "off") return false;
     throw InputError(option, "", "expected on or off, got \"" + text + "\"");
 }
+
+namespace {
 
 void require_within(float value, const std::string& option, float lo, float hi) {
     if (!(value >= lo && value <= hi))
@@ -271,7 +271,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     std::vector<film::ImageChannel> layers = aov_selection.any() ? render::aov_channels(*first_hits, aov_selection) : std::vector<film::ImageChannel>();
     film::ImageRgb shown = raw;
     if (denoise) {
-        shown = render::denoised(raw, *first_hits, runtime ? &*runtime : nullptr);
+        shown = render::denoised(raw, render::denoise_guide(*first_hits), *renderer);
         const std::vector<film::ImageChannel> noisy = render::noisy_channels(raw);
         layers.insert(layers.end(), noisy.begin(), noisy.end());
     }

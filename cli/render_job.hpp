@@ -58,6 +58,9 @@ struct RenderJob {
     std::string description;  // one line: material, scene, environment, size, integrator, sampling
 };
 
+// "on" or "off" as a bool; anything else is lab::InputError naming the option.
+bool parse_on_off(const std::string& text, const std::string& option);
+
 // The render settings and light selection the options give, checked before anything is loaded
 // (sizes, words, ranges); throws lab::InputError naming the option.
 render::RenderSettings checked_render_settings(const RenderJobOptions& options, render::LightSelection* selection);

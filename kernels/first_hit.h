@@ -3,9 +3,12 @@
  * samples). The camera ray is the one the sample's path began with (camera_pixel_ray from the
  * same random stream), so the AOVs cover the pixel as its radiance does.
  *
- * Albedo is the directional albedo of the material seen, estimated by one BSDF sample: its weight
- * f |cos| / pdf, whose mean over the samples is the fraction of light the surface reflects toward
- * the viewer. That is what Open Image Denoise asks of its albedo guide (the diffuse colour of a
+ * Albedo is the directional albedo of the material seen, estimated by FIRST_HIT_ALBEDO_SAMPLES BSDF
+ * samples: the mean of their weights f |cos| / pdf, whose expectation is the fraction of light the
+ * surface reflects toward the viewer. One sample would do for the mean over many, but a material
+ * of several lobes weighs each sample by the lobe it drew, and the display denoiser multiplies its
+ * filtered illumination by this albedo again: at one or two samples per pixel its noise would come
+ * straight back into the image. That is what Open Image Denoise asks of its albedo guide (the diffuse colour of a
  * matte surface, the Fresnel colour of a metal, about 1 for glass) and what Blender's denoising
  * albedo pass holds; a Lambert surface's weight is exactly its albedo. The base colour alone would
  * call a black-based metal black and a clear dielectric its tint. Needs the scene declared
@@ -19,6 +22,8 @@
 #include "kernels/path.h"
 #include "kernels/render_scene.h"
 #include "kernels/rng.h"
+
+#define FIRST_HIT_ALBEDO_SAMPLES 8
 
 typedef struct FirstHit {
     float3 albedo; /* one-sample estimate of the directional albedo; 0 where the ray escapes */
@@ -44,9 +49,12 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     h.normal = hit.frame.n;
     h.depth = r.t;
     Material m = scene->materials[hit.slot];
-    float4 u = rng_next4(&rng);
-    BsdfSample b = bsdf_sample_clamped(&m, scene->measured, hit.wo, make_float3(u.x, u.y, u.z));
-    if (b.flags != 0) h.albedo = b.f * (fabs(b.wi.z) / b.pdf);
+    for (int i = 0; i < FIRST_HIT_ALBEDO_SAMPLES; ++i) {
+        float4 u = rng_next4(&rng);
+        BsdfSample b = bsdf_sample_clamped(&m, scene->measured, hit.wo, make_float3(u.x, u.y, u.z));
+        if (b.flags != 0) h.albedo += b.f * (fabs(b.wi.z) / b.pdf);
+    }
+    h.albedo *= 1.0f / (float)FIRST_HIT_ALBEDO_SAMPLES;
     return h;
 }
 

@@ -10,20 +10,11 @@ film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs) {
     return guide;
 }
 
-film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const kernels::DeviceDenoiser* device,
+film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const Renderer& renderer,
                         const film::DenoiseOptions& options) {
     film::AtrousBuffers buffers = film::demodulate(radiance, guide);
-    if (device)
-        device->passes(&buffers, options);
-    else
-        film::atrous_passes(&buffers, options);
+    renderer.display_filter_passes(&buffers, options);
     return film::remodulate(buffers, guide);
-}
-
-film::ImageRgb denoised(const film::ImageRgb& radiance, const FirstHitAovs& aovs, const opencl::Runtime* runtime) {
-    if (!runtime) return denoised(radiance, denoise_guide(aovs), nullptr);
-    const kernels::DeviceDenoiser device(*runtime);
-    return denoised(radiance, denoise_guide(aovs), &device);
 }
 
 std::vector<film::ImageChannel> noisy_channels(const film::ImageRgb& radiance) {

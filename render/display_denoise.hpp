@@ -1,15 +1,13 @@
-// `--denoise on` for `render` and `preview`: the image shown denoised (film/denoise.hpp), guided by
-// the render's first-hit AOVs, with the raw image kept beside it as the EXR layer noisy.R/G/B, as
-// Blender keeps its noisy pass, so nothing rendered is lost. On the OpenCL device when the render
-// ran there.
+// `--denoise on` for `render`, `preview` and the viewer: the image shown denoised
+// (film/denoise.hpp), guided by the render's first-hit AOVs, its passes run where the render runs
+// (Renderer::display_filter_passes). `render` and `preview` keep the raw image beside it as the EXR
+// layer noisy.R/G/B, as Blender keeps its noisy pass, so nothing rendered is lost.
 #pragma once
 
 #include <vector>
 
 #include "film/denoise.hpp"
 #include "film/image_output.hpp"
-#include "kernels/host/denoise_device.hpp"
-#include "opencl/runtime.hpp"
 #include "render/renderer.hpp"
 
 namespace lab::render {
@@ -17,11 +15,9 @@ namespace lab::render {
 // The filter's guide from the render's first-hit AOVs (the variance left to be estimated from the image).
 film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs);
 
-// The denoised image: its passes on `device` when given, else on the host.
-film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const kernels::DeviceDenoiser* device,
+// The denoised image, its passes on `renderer`'s device.
+film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const Renderer& renderer,
                         const film::DenoiseOptions& options = {});
-// The same guided by the AOVs, on `runtime`'s device when given (the filter built there), else on the host.
-film::ImageRgb denoised(const film::ImageRgb& radiance, const FirstHitAovs& aovs, const opencl::Runtime* runtime);
 
 // The raw image as EXR channels noisy.R, noisy.G, noisy.B.
 std::vector<film::ImageChannel> noisy_channels(const film::ImageRgb& radiance);

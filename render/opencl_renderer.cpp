@@ -166,6 +166,11 @@ FirstHitAovs OpenClRenderer::first_hit_aovs() const {
     return first_hit_means(albedo, normal_depth);
 }
 
+void OpenClRenderer::display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const {
+    if (!denoiser_) denoiser_.emplace(runtime_);
+    denoiser_->passes(buffers, options);
+}
+
 FilmReadback OpenClRenderer::read_film() const {
     size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
     FilmReadback film;

@@ -3,6 +3,7 @@
 // the scene and the film in device buffers.
 #pragma once
 
+#include "kernels/host/denoise_device.hpp"
 #include "opencl/runtime.hpp"
 #include "render/renderer.hpp"
 #include "render/wavefront_driver.hpp"
@@ -34,6 +35,7 @@ public:
     // The first-hit AOVs by render_first_hits (kernels/first_hit.cl), a program built at the first
     // call after each build of the integrator's, so a render without AOVs never compiles it.
     FirstHitAovs first_hit_aovs() const override;
+    void display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const override;
 
 private:
     void build_kernel() override;
@@ -50,6 +52,7 @@ private:
     opencl::KernelHandle kernel_;
     mutable std::optional<opencl::Program> first_hit_program_;  // built by first_hit_aovs
     mutable opencl::KernelHandle first_hit_kernel_;
+    mutable std::optional<kernels::DeviceDenoiser> denoiser_;  // built by display_filter_passes
     // Arguments 0 .. 14, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
     cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& launch_settings) const;
     WavefrontDriver wavefront_driver_;  // used when wavefront()

@@ -255,6 +255,10 @@ void Renderer::set_show_background(bool show) {
     reset();
 }
 
+void Renderer::display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const {
+    film::atrous_passes(buffers, options);
+}
+
 film::ImageRgb Renderer::image() const {
     return resolve_film(read_film(), film_samples(), input_.settings.width, input_.settings.height,
                         PartialPass{pass_pixels_, pass_pixels_ > 0 ? pass_samples_ : 0});

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "film/denoise.hpp"
 #include "film/image.hpp"
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
@@ -135,6 +136,9 @@ public:
     // (render/first_hit_aovs.cpp); OpenClRenderer runs the same code as a kernel of its own. Not
     // during a pass in progress (std::logic_error).
     virtual FirstHitAovs first_hit_aovs() const;
+    // The display denoiser's passes (film/denoise.hpp) where this renderer runs: on the host's
+    // thread here; OpenClRenderer runs them on its device (kernels/denoise.cl, built at the first call).
+    virtual void display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const;
     // What a launch of `count` samples from `first_sample` is given; public for host-side tools that
     // trace the same rays (the viewer's pixel inspector).
     kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;

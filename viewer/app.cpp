@@ -102,6 +102,7 @@ UiState initial_ui_state(const ViewerConfig& config) {
     ui.tone_map = config.tone_map;
     ui.display_exposure = config.display_exposure;
     ui.split = config.split;
+    ui.denoise = config.denoise;
     return ui;
 }
 
@@ -145,7 +146,7 @@ public:
           factory_(config.make_renderer), sections_(panel_sections(config.open_sections)) {
         lobes_.set_materials(ui_.preset, config_.compare);
         checks_.set_material(ui_.preset);
-        worker_ = std::make_unique<RenderWorker>(factory_, ui_.view, config_.chunk_seconds, config_.max_samples);
+        worker_ = new_worker(factory_, ui_.view);
     }
 
     // Until the window closes or the script ends; returns the exit status.
@@ -266,6 +267,13 @@ private:
         return v;
     }
 
+    // A worker for `state` that denoises its display as the panel says.
+    std::unique_ptr<RenderWorker> new_worker(const RenderWorker::RendererFactory& factory, const ViewState& state) const {
+        auto worker = std::make_unique<RenderWorker>(factory, state, config_.chunk_seconds, config_.max_samples);
+        worker->set_denoise(ui_.denoise);
+        return worker;
+    }
+
     // A renderer under another map or with other references, made on a worker of its own while the
     // current one keeps showing.
     void start_next_worker(const std::string& env, const scene::LookDevReferences& references) {
@@ -274,8 +282,14 @@ private:
         next_references_ = references;
         next_scene_ = scene::with_look_dev_references(config_.base_scene, references, float(config_.width) / float(config_.height));
         next_factory_ = config_.factory_for(env, references);
-        next_worker_ = std::make_unique<RenderWorker>(next_factory_, view_for(next_scene_), config_.chunk_seconds, config_.max_samples);
+        next_worker_ = new_worker(next_factory_, view_for(next_scene_));
         ui_.message.clear();
+    }
+
+    // The display's denoising on or off, for every worker (the film is not touched: no restart).
+    void set_denoise(bool on) {
+        for (RenderWorker* w : {worker_.get(), worker_b_.get(), next_worker_.get()})
+            if (w) w->set_denoise(on);
     }
 
     // A new map or new references: the old renderer shows until the new one is ready; a failure
@@ -290,7 +304,7 @@ private:
             ui_.view = view_for(scene_);  // the edits made while it loaded, its own references
             frame_.sequence = 0;
             if (worker_b_) {
-                worker_b_ = std::make_unique<RenderWorker>(factory_, state_b(), config_.chunk_seconds, config_.max_samples);
+                worker_b_ = new_worker(factory_, state_b());
                 frame_b_.sequence = 0;
             }
             submitted_ = worker_->submit(ui_.view);
@@ -300,7 +314,7 @@ private:
             shown_references_ = references_;  // the boxes show what is rendered
         }
         if (ui_.split && !worker_b_) {
-            worker_b_ = std::make_unique<RenderWorker>(factory_, state_b(), config_.chunk_seconds, config_.max_samples);
+            worker_b_ = new_worker(factory_, state_b());
             frame_b_ = RenderFrame{};
         } else if (!ui_.split && worker_b_) {
             worker_b_.reset();
@@ -382,11 +396,17 @@ private:
                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoScrollbar |
                          ImGuiWindowFlags_NoScrollWithMouse);
         ImGui::Text("%d spp   %.3g samples/s%s", frame_.samples_per_pixel, frame_.samples_per_second, frame_.scale > 1 ? "   (first pass, reduced)" : "");
+        if (frame_.denoised_samples > 0) {
+            ImGui::SameLine();
+            ImGui::Text("   denoised from %d spp", frame_.denoised_samples);
+        }
         if (worker_b_) {
             ImGui::SameLine();
             ImGui::Text("   B: %d spp", frame_b_.samples_per_pixel);
         }
         ImGui::Checkbox("A/B split view (B: --compare)", &ui_.split);
+        ImGui::SameLine();
+        if (ImGui::Checkbox("denoise", &ui_.denoise)) set_denoise(ui_.denoise);
         int sizing = int(sizing_);
         ImGui::SetNextItemWidth(150.0f);
         if (ImGui::Combo("window size changes", &sizing, "the render's size\0the display's scale\0")) sizing_ = DisplaySizing(sizing);

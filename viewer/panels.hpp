@@ -26,6 +26,7 @@ struct UiState {
     char export_target[512] = "scene.json:material";
     char env_path[512] = "";
     bool split = false;       // A/B split view
+    bool denoise = true;      // the display denoised (viewer/display_denoiser.hpp); the film never is
     float split_x = 0.5f;     // the divider, as a fraction of the width
     std::string message;  // the last error or confirmation, shown in the panel
 };

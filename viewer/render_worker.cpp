@@ -5,6 +5,8 @@
 #include <cstring>
 #include <exception>
 
+#include "viewer/display_denoiser.hpp"
+
 namespace lab::viewer {
 
 namespace {
@@ -113,6 +115,13 @@ bool RenderWorker::take_frame(RenderFrame* out) {
     return true;
 }
 
+void RenderWorker::set_denoise(bool on) {
+    if (denoise_.exchange(on) == on) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    republish_.store(true);
+    wake_.notify_all();
+}
+
 std::string RenderWorker::status() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return status_;
@@ -168,6 +177,7 @@ struct RenderWorker::Loop {
     film::ImageRgb first_pass;   // the last first pass, enlarged: shown where the full size has not reached
     int first_pass_scale_shown = 1;
     uint64_t generation = 0, sequence = 0;
+    DisplayDenoiser denoiser;    // of the full-size render of the current state
     std::vector<double> row_seconds;  // per pixel and sample, by full-size row, as last measured
 
     void measured(double seconds, int pixels) {
@@ -229,9 +239,10 @@ std::unique_ptr<render::Renderer> RenderWorker::make_renderer() {
 
 bool RenderWorker::wait_for_work(const Loop& loop, ViewState* next, uint64_t* next_generation) {
     std::unique_lock<std::mutex> lock(mutex_);
-    // Rendered out: sleep until something changes.
-    if (loop.generation == pending_generation_ && loop.renderer->samples_per_pixel() >= max_samples_)
-        wake_.wait(lock, [&] { return stop_.load() || loop.generation != pending_generation_; });
+    // Rendered out: sleep until something changes, or the display's denoising does.
+    if (loop.generation == pending_generation_ && loop.renderer->samples_per_pixel() >= max_samples_ && !republish_.load())
+        wake_.wait(lock, [&] { return stop_.load() || loop.generation != pending_generation_ || republish_.load(); });
+    republish_.store(false);
     if (stop_.load()) return false;
     if (loop.generation != pending_generation_) {
         *next = pending_;
@@ -265,6 +276,7 @@ bool RenderWorker::take_state(Loop& loop, const ViewState& next, uint64_t next_g
     }
     loop.generation = next_generation;
     loop.first_pass = film::ImageRgb();
+    loop.denoiser.restart();
     // A new full size (the window's render area changed): the cost per pixel measured so far still holds.
     const bool resized = next.width > 0 && next.height > 0 && (next.width != loop.width || next.height != loop.height);
     if (resized) {
@@ -326,6 +338,16 @@ void RenderWorker::publish(Loop& loop) {
         show_first_pass_beyond(&image, loop.first_pass, renderer.pass_pixels());
         shown_scale = loop.first_pass_scale_shown;
     }
+    int denoised_samples = 0;
+    if (denoise_.load() && loop.scale == 1 && renderer.samples_per_pixel() > 0) {
+        try {
+            image = loop.denoiser.shown(renderer, image, renderer.samples_per_pixel() >= max_samples_, &denoised_samples);
+        } catch (const std::exception& e) {  // the filter's kernel failed: show the raw image, say why
+            denoise_.store(false);
+            std::lock_guard<std::mutex> lock(mutex_);
+            error_ = std::string("denoising failed: ") + e.what();
+        }
+    }
     render::RenderStatistics stats = renderer.statistics();
     if (loop.scale > 1 && stats.samples_per_pixel >= std::min(kFirstPassSamples, max_samples_)) {
         try {
@@ -338,6 +360,7 @@ void RenderWorker::publish(Loop& loop) {
     }
     std::lock_guard<std::mutex> lock(mutex_);
     published_.scale = shown_scale;
+    published_.denoised_samples = denoised_samples;
     published_.image = std::move(image);
     published_.samples_per_pixel = stats.samples_per_pixel;
     published_.samples_per_second = stats.paths_per_second();

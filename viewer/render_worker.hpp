@@ -9,7 +9,8 @@
 //   and shown enlarged; then the full size starts on a film of its own, and until its first pass is
 //   complete the enlarged first pass shows where that pass has not reached yet.
 // The full-size image never holds a sample of the first pass. A state the renderer refuses (a bad
-// camera, a failed kernel build) is reported and the last good state is kept.
+// camera, a failed kernel build) is reported and the last good state is kept. With set_denoise(true)
+// the full-size image is published denoised (viewer/display_denoiser.hpp), the film untouched.
 #pragma once
 
 #include <atomic>
@@ -36,6 +37,7 @@ struct RenderFrame {
     uint64_t sequence = 0;            // counts publications
     int scale = 1;                    // > 1: a first pass rendered at 1/scale of the size, shown enlarged (alone, or where
                                       // the first full-size pass has not reached: then samples_per_pixel is 0)
+    int denoised_samples = 0;         // > 0: the image is denoised (viewer/display_denoiser.hpp), filtered from this many samples per pixel
 };
 
 class RenderWorker {
@@ -58,6 +60,9 @@ public:
     bool ready() const { return ready_.load(); }
     std::string device_description() const;
     void set_chunk_seconds(double s) { chunk_seconds_.store(s); }
+    // Whether the published image is denoised (viewer/display_denoiser.hpp); the film is not
+    // touched, so a change only publishes the image again.
+    void set_denoise(bool on);
     // The renderer's launch settings (for the pixel inspector's rays); false before it is made.
     bool kernel_settings(kernel::RenderKernelSettings* out) const;
 
@@ -84,6 +89,7 @@ private:
     std::atomic<double> chunk_seconds_;
     int max_samples_;
     std::atomic<bool> stop_{false}, ready_{false};
+    std::atomic<bool> denoise_{false}, republish_{false};
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

@@ -41,6 +41,7 @@ struct ViewerConfig {
     double chunk_seconds = 1.0 / 30.0; // the render worker's budget per chunk
     film::ToneMap tone_map = film::ToneMap::Aces;
     float display_exposure = 0.0f;
+    bool denoise = true;               // the display denoised while it accumulates (viewer/display_denoiser.hpp)
 
     // Headless automation: with frames > 0 the viewer closes itself after that many frames and
     // once the image shows every scripted change.

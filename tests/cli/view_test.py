@@ -4,8 +4,8 @@ no DISPLAY): the window opens and samples accumulate, the screenshot shows the m
 a scripted --set changes the model and not the backdrop, a saved preset loads back identical,
 --export-to writes a scene that `dtoadq render` renders with the material, the rest unchanged, and a
 map loaded in the window replaces the environment, or, when missing, leaves it and shows the error;
-the look-dev references come and go, a resize changes the render area and the render, and every
-panel section opens without overlap.
+the look-dev references come and go, a resize changes the render area and the render, every panel
+section opens without overlap, and the denoised display is smoother than the raw one and as bright.
 
 usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
 """
@@ -41,8 +41,8 @@ def run(args, expect_ok=True):
     return p
 
 
-def view(extra, shot, frames=4, min_spp=2):
-    args = ["view", "--size", "%dx%d" % (SIZE, SIZE), "--device", "host", "--env", ENV, "--ground", "off",
+def view(extra, shot, frames=4, min_spp=2, size=SIZE, scene=("--env", ENV, "--ground", "off")):
+    args = ["view", "--size", "%dx%d" % (size, size), "--device", "host"] + list(scene) + [
             "--frames", str(frames), "--min-spp", str(min_spp), "--screenshot", shot] + extra
     return run(args).stdout
 
@@ -165,6 +165,31 @@ def case_references():
     print("references: the grey ball comes and goes")
 
 
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def rms(a, b, region):
+    return float((((a[region[0], region[1]] - b[region[0], region[1]]) ** 2).mean()) ** 0.5)
+
+
+def case_denoise():
+    """The display denoised (the default) against the raw mean of as many samples or more, on the
+    case the filter is built for (a matte model on its ground under a real map, 96 x 96): on the
+    model its error against a longer render (32 spp) falls to under 0.7 of the raw's. The longer
+    render's own error is about a quarter of the 2-spp image's: it lowers neither error by more
+    than 4 %. (That the filter leaves the background and the film alone is tested on the renders.)"""
+    scene = ("--env", os.path.join(REPO, "envmaps", "courtyard.exr"), "--material", os.path.join(REPO, "presets", "clay.json"))
+    model = (slice(30, 66), slice(30, 66))
+    view(["--seed", "1"], "on.png", size=96, scene=scene)
+    view(["--seed", "1", "--denoise", "off"], "off.png", size=96, scene=scene)
+    view(["--seed", "2", "--denoise", "off"], "reference.png", frames=4, min_spp=32, size=96, scene=scene)
+    a, b, ref = read_png("on.png"), read_png("off.png"), read_png("reference.png")
+    error_on, error_off = rms(a, ref, model), rms(b, ref, model)
+    if not error_on < 0.7 * error_off:
+        fail("denoising did not bring the model nearer the longer render: RMS %.2f codes denoised against %.2f raw" % (error_on, error_off))
+    print("denoise: RMS against 32 spp %.2f codes denoised, %.2f raw (%.2fx)" % (error_on, error_off, error_on / error_off))
+
+
 LAYOUT = re.compile(r"layout: window (\d+)x(\d+), render area (\d+)x(\d+), image (\d+),(\d+) (\d+)x(\d+), render (\d+)x(\d+), "
                     r"panel (\d+),(\d+) (\d+)x(\d+), columns (\d)")
 SECTION = re.compile(r"section (\w+): (-?\d+),(-?\d+) (\d+)x(\d+)")
@@ -225,7 +250,7 @@ def case_sections():
 
 
 CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env,
-         "references": case_references, "resize": case_resize, "sections": case_sections}
+         "references": case_references, "resize": case_resize, "sections": case_sections, "denoise": case_denoise}
 
 if __name__ == "__main__":
     if not os.environ.get("DISPLAY"):
