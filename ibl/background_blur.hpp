@@ -11,8 +11,8 @@ namespace lab::ibl {
 
 // The widest blur, degrees: at 90 the kernel already spans the sphere.
 constexpr float kMaxBackgroundBlurDegrees = 90.0f;
-// The largest face of a blurred map: its cost grows as the fourth power of the face (about 0.3 s
-// of one core at 64 with a blur of 6 degrees, where four faces of the source are in reach).
+// The largest face of a blurred map: its cost grows as the fourth power of the face (about 0.6 s
+// of CPU time at 64 with a blur of 2 or 6 degrees, docs/environments.md).
 constexpr int kMaxBlurredFaceSize = 64;
 
 struct BlurredCubemap {
