@@ -1,6 +1,5 @@
 #include "cli/render_job.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
