@@ -88,11 +88,13 @@ void run_view(const ViewOptions& o) {
     config.initial.camera = scene.camera;
     config.scene = scene;
     config.base_scene = job->base_scene;
-    config.references = scene::parse_look_dev_references(o.job.references, "--references");
+    config.references = scene::parse_look_dev_references(job->references, "--references");  // --shadow-catcher's included
     if (job->input.environment) {
         config.initial.env_rotation_degrees = job->input.environment->rotation_degrees();
         config.initial.env_exposure_stops = job->input.environment->exposure_stops();
     }
+    config.initial.background_opacity = job->input.settings.background_opacity;
+    config.initial.background_blur_degrees = job->input.settings.background_blur_degrees;
     config.compare = o.compare.empty() ? config.preset : brdf::load_preset(o.compare);
     // Every scripted change is tried once now, so a bad key or value stops before the window opens.
     brdf::Preset trial = config.preset;
@@ -190,6 +192,7 @@ void run_view(const ViewOptions& o) {
                 options.env_rotation = options.env_exposure = 0.0f;  // the viewer's own values are applied next
             }
             options.references = words;
+            options.shadow_catcher = false;  // the words hold it
             RenderJob job = prepare_render_job(options);  // throws for a missing or bad map
             return runtimes->make(job, device);
         };
@@ -216,13 +219,13 @@ void register_view(CLI::App& app) {
     cmd->add_option("--set", o->sets, "Headless: KEY=VALUE@FRAME, a material parameter changed at a frame (repeatable)");
     cmd->add_option("--move", o->moves,
                     "Headless: KEY=VALUE@FRAME, a camera or environment change at a frame: orbit=DX,DY (pixels of drag), "
-                    "env_rotation=DEG, env_exposure=STOPS (repeatable)");
+                    "env_rotation=DEG, env_exposure=STOPS, background_blur=DEG, background_opacity=A (repeatable)");
     cmd->add_option("--screenshot", o->screenshot, "Headless: the window as a PNG at the last frame");
     cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
     cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");
     cmd->add_option("--load-env", o->env_loads, "Headless: PATH@FRAME, load an environment map at a frame as the panel does (errors are shown, not fatal)");
     cmd->add_option("--load-references", o->reference_loads,
-                    "Headless: LIST@FRAME, the look-dev references switched at a frame as the environment panel does (none, all, or chrome,grey,chart)");
+                    "Headless: LIST@FRAME, the look-dev references switched at a frame as the environment panel does (none, all, or chrome,grey,chart,catcher)");
     cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
     cmd->add_option("--denoise", o->denoise,
                     "on: the image shown is denoised while it accumulates (guided by the first-hit AOVs, at most 15 % of the render's "

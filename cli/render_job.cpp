@@ -23,6 +23,12 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
     cmd.add_option("--env", o->env, "Environment: an equirectangular .exr/.hdr or constant:R,G,B (default: the scene's)");
     cmd.add_option("--env-rotation", o->env_rotation, "Environment rotation about +y, degrees")->capture_default_str();
     cmd.add_option("--env-exposure", o->env_exposure, "Environment intensity in stops")->capture_default_str();
+    cmd.add_option("--background-opacity", o->background_opacity,
+                   "How much of the environment camera rays see, in [0, 1] (0: the lights kept, the background hidden; the EXR's alpha "
+                   "channel A says where it is); the lighting is unchanged (default: the scene's, else 1)");
+    cmd.add_option("--background-blur", o->background_blur,
+                   "Blur of the background camera rays see, degrees in [0, 90] (a spherical Gaussian's sigma; 0: sharp); the lighting is "
+                   "unchanged (default: the scene's, else 0)");
     cmd.add_option("--size", o->size, "Image size WxH")->capture_default_str();
     cmd.add_option("--light-selection", o->light_selection, "How a light is chosen for next-event estimation: power or uniform")
         ->capture_default_str();
@@ -41,6 +47,9 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
                    "Look-dev references in the view's lower corners: none, all, or a list of chrome (a chrome ball), grey (an 18 % grey "
                    "ball), chart (a ColorChecker)")
         ->capture_default_str();
+    cmd.add_flag("--shadow-catcher", o->shadow_catcher,
+                 "A ground under the objects that shows the background with their shadows on it (and takes the place of the test "
+                 "model's ground): differential rendering, the path tracer only");
     cmd.add_option("--device", o->device,
                    "OpenCL device: P:D, gpu, cpu or part of its name (dtoadq devices lists them); host: the C++ build on the CPU's threads");
 }
@@ -105,6 +114,9 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     if (o.geometry != "auto" && o.geometry != "march") throw InputError("--geometry", "", "expected auto or march, got \"" + o.geometry + "\"");
     settings.march_everything = o.geometry == "march";
     settings.seed = o.seed;
+    if (o.background_opacity) settings.background_opacity = *o.background_opacity;
+    if (o.background_blur) settings.background_blur_degrees = *o.background_blur;
+    render::check_render_settings(settings);
     return settings;
 }
 
@@ -123,11 +135,16 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     compile.march_everything = settings.march_everything;  // the scene as the renderer has it (the viewer's probe reads it)
     scene::Scene scene = scene::apply_options(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), compile);
     scene::Scene base_scene = scene;
-    scene = scene::with_look_dev_references(scene, scene::parse_look_dev_references(o.references, "--references"),
-                                            float(settings.width) / float(settings.height));
+    scene::LookDevReferences references = scene::parse_look_dev_references(o.references, "--references");
+    references.shadow_catcher = references.shadow_catcher || o.shadow_catcher;  // the catcher takes the ground's place
+    scene = scene::with_look_dev_references(scene, references, float(settings.width) / float(settings.height));
 
     std::string env_name;
     std::optional<ibl::Environment> environment = load_job_environment(o, scene, &env_name);
+    if (scene.environment && o.env.empty()) {  // the scene's backdrop, unless the command line gives its own
+        if (!o.background_opacity) settings.background_opacity = scene.environment->background_opacity;
+        if (!o.background_blur) settings.background_blur_degrees = scene.environment->background_blur_degrees;
+    }
     RenderJob job;
     job.scene_name = o.scene.empty() ? std::string("test model") : o.scene;
     job.material_name = sample ? sample->name : std::string("the scene's materials");
@@ -135,7 +152,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     job.env_rotation = o.env_rotation;
     job.env_exposure = o.env_exposure;
     job.ground = parse_on_off(o.ground, "--ground");
-    job.references = o.references;
+    job.references = scene::look_dev_references_text(references);
     job.base_scene = std::move(base_scene);
     job.input.scene = std::move(scene);
     job.input.environment = std::move(environment);
@@ -267,8 +284,16 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     const render::FilmReadback film = renderer->film();
     const film::ImageRgb raw = renderer->image();
     std::optional<render::FirstHitAovs> first_hits;
-    if (aov_selection.any() || denoise) first_hits = renderer->first_hit_aovs();
-    std::vector<film::ImageChannel> layers = aov_selection.any() ? render::aov_channels(*first_hits, aov_selection) : std::vector<film::ImageChannel>();
+    // a backdrop that is not opaque gets an alpha channel, which the first hits' coverage gives
+    const float opacity = renderer->settings().background_opacity;
+    const bool alpha = opacity < 1.0f && render::is_exr_path(run.output);
+    if (aov_selection.any() || denoise || alpha) first_hits = renderer->first_hit_aovs();
+    std::vector<film::ImageChannel> layers;
+    if (alpha) layers.push_back(render::background_alpha_channel(*first_hits, opacity));
+    if (aov_selection.any()) {
+        const std::vector<film::ImageChannel> aovs = render::aov_channels(*first_hits, aov_selection);
+        layers.insert(layers.end(), aovs.begin(), aovs.end());
+    }
     film::ImageRgb shown = raw;
     if (denoise) {
         shown = render::denoised(raw, render::denoise_guide(*first_hits), *renderer);

@@ -25,9 +25,13 @@ struct RenderJobOptions {
     std::string default_env;  // when neither --env nor the scene gives one; empty: no environment
     float env_rotation = 0.0f;
     float env_exposure = 0.0f;
+    // What camera rays see of the environment (render::RenderSettings); unset: the scene's, else 1 and 0
+    std::optional<float> background_opacity;
+    std::optional<float> background_blur;
     std::string size = "512x512";
     std::string ground = "on";
     std::string references = "none";  // look-dev references (scene/look_dev_references.hpp)
+    bool shadow_catcher = false;       // a shadow-catching ground in the ground's place (scene/shadow_catcher.hpp): the reference word "catcher"
     std::string integrator = "pt";
     std::string light_sampling = "mis";
     std::string light_sampling_option = "--light-sampling";  // the flag that gave it, for errors
@@ -53,7 +57,7 @@ struct RenderJob {
     std::string scene_name, material_name, environment_name;
     float env_rotation = 0.0f, env_exposure = 0.0f;  // the options' (a scene's own are in its file)
     bool ground = true;
-    std::string references = "none";
+    std::string references = "none";  // the references' words, the shadow catcher's ("catcher") among them
     scene::Scene base_scene;  // input.scene without the look-dev references (the viewer adds and removes them)
     std::string description;  // one line: material, scene, environment, size, integrator, sampling
 };

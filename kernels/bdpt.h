@@ -15,6 +15,7 @@
 #ifndef KERNELS_BDPT_H
 #define KERNELS_BDPT_H
 
+#include "kernels/background.h"
 #include "kernels/bdpt_mis.h"
 #include "kernels/bdpt_walk.h"
 #include "kernels/film.h"
@@ -56,8 +57,12 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings ma
         if (!vertex_emits(scene, pt)) return zero;
         bool seen_directly = true; /* through delta lobes only, as the path tracer's backdrop */
         for (int i = 1; i < t - 1; ++i) seen_directly = seen_directly && cam[i].delta;
-        if (pt->type == VERTEX_ENVIRONMENT && seen_directly && !settings->show_background) return zero;
-        L = pt->beta * vertex_le(scene, pt, seen_directly);
+        if (pt->type == VERTEX_ENVIRONMENT && t == 2) { /* the camera ray: the backdrop (kernels/background.h) */
+            if (!(settings->background_opacity > 0.0f)) return zero;
+            L = pt->beta * background_radiance(settings, scene, pt->p);
+        } else {
+            L = pt->beta * vertex_le(scene, pt, seen_directly);
+        }
     } else if (t == 1) {
         const PathVertex* qs = &light[s - 1];
         if (qs->type == VERTEX_ENVIRONMENT || (qs->type == VERTEX_SURFACE && !vertex_scatters(scene, qs))) return zero;

@@ -21,7 +21,7 @@ __kernel void render_first_hits(RenderKernelSettings settings, Camera camera, En
     float4 albedo = albedo_sums[pixel], normal_depth = normal_depth_sums[pixel];
     for (int i = 0; i < settings.sample_count; ++i) {
         FirstHit h = first_hit_sample(&settings, &camera, &scene, pixel, settings.first_sample + i);
-        albedo += make_float4(h.albedo.x, h.albedo.y, h.albedo.z, 0.0f);
+        albedo += make_float4(h.albedo.x, h.albedo.y, h.albedo.z, h.coverage);
         normal_depth += make_float4(h.normal.x, h.normal.y, h.normal.z, h.depth);
     }
     albedo_sums[pixel] = albedo;

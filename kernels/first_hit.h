@@ -29,6 +29,7 @@ typedef struct FirstHit {
     float3 albedo; /* one-sample estimate of the directional albedo; 0 where the ray escapes */
     float3 normal; /* world-space shading normal, facing the camera; 0 where the ray escapes */
     float depth;   /* distance along the camera ray; 0 where it escapes (as Mitsuba's depth AOV) */
+    float coverage; /* 1 where the ray hits a surface, 0 where it sees the backdrop: the EXR's alpha */
 } FirstHit;
 
 SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int pixel, int sample) {
@@ -36,6 +37,7 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     h.albedo = float3_splat(0.0f);
     h.normal = float3_splat(0.0f);
     h.depth = 0.0f;
+    h.coverage = 0.0f;
     MarchSettings march_settings = render_march_settings(settings);
     Rng rng = rng_make((uint)pixel, (uint)sample, settings->seed_lo, settings->seed_hi);
     float3 origin, direction;
@@ -48,6 +50,7 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     SurfaceHit hit = surface_hit(settings, march_settings, origin, direction, r.t, scene_distance(origin) < 0.0f);
     h.normal = hit.frame.n;
     h.depth = r.t;
+    h.coverage = scene->emission[hit.slot].w == EMISSION_CATCHER ? 0.0f : 1.0f; /* a shadow catcher shows the backdrop */
     Material m = scene->materials[hit.slot];
     for (int i = 0; i < FIRST_HIT_ALBEDO_SAMPLES; ++i) {
         float4 u = rng_next4(&rng);

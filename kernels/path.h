@@ -112,8 +112,13 @@ typedef struct ShadowRay {
     float distance;
     int target_slot;
     float contribution[3];
-    int pending; /* 1 while the ray is to be marched and its contribution to be counted */
+    int pending; /* while the ray is to be marched: SHADOW_COUNTS_IF_REACHED, or SHADOW_COUNTS_IF_BLOCKED */
 } ShadowRay;
+
+/* A shadow ray's contribution counts where it reaches its light (next-event estimation), or where
+ * it is blocked: at a shadow catcher, the light the other objects take away (kernels/path_tracer.h). */
+#define SHADOW_COUNTS_IF_REACHED 1
+#define SHADOW_COUNTS_IF_BLOCKED 2
 
 /* Whether the shadow ray got there, given its march (trace_shadow_ray, or a packet kernel's with
  * the same settings). A ray that runs out of steps counts as shadowed. */

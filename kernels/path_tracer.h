@@ -14,6 +14,7 @@
 #include "single_source/vocabulary.h"
 #include "brdf/bsdf.h"
 #include "ibl/environment.h"
+#include "kernels/background.h"
 #include "kernels/camera.h"
 #include "kernels/lights/light_selection.h"
 #include "kernels/mis.h"
@@ -50,7 +51,7 @@ SS_FN SS_INLINE_ALWAYS float light_hit_weight(const RenderKernelSettings* settin
  * nothing). m: the material at the hit, clamped (material_clamped). u: xy for the light sample, z
  * for the choice of light. */
 SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* settings, const RenderScene* scene, const Material* m, const SurfaceHit* hit,
-                                    float3 u, float3 throughput) {
+                                    float3 u, float3 throughput, bool catcher) {
     ShadowRay shadow;
     shadow.pending = 0;
     float pmf;
@@ -69,8 +70,13 @@ SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* settings, const 
     float3_to_array(ls.wi, shadow.direction);
     shadow.distance = ls.distance;
     shadow.target_slot = light.material_slot;
-    float3_to_array(throughput * (f * ls.radiance * (fabs(wl.z) * weight / light_density)), shadow.contribution);
-    shadow.pending = 1;
+    float3 contribution = throughput * (f * ls.radiance * (fabs(wl.z) * weight / light_density));
+    shadow.pending = SHADOW_COUNTS_IF_REACHED;
+    if (catcher && light.type == LIGHT_ENVIRONMENT) { /* the sky the other objects hide (path_scatter) */
+        contribution = -contribution;
+        shadow.pending = SHADOW_COUNTS_IF_BLOCKED;
+    }
+    float3_to_array(contribution, shadow.contribution);
     return shadow;
 }
 
@@ -88,6 +94,7 @@ typedef struct PathState {
     int seen_directly;             /* the camera ray, or only delta events since */
     int inside;                    /* it travels in a solid */
     int active;                    /* its ray is still to be marched */
+    int catcher;                   /* its ray left a shadow catcher the camera sees: it adds the difference (path_scatter) */
     Rng rng;
     ShadowRay shadow;              /* pending: the last light sample, its shadow ray still to be marched */
 } PathState;
@@ -105,6 +112,7 @@ SS_FN PathState path_begin(float3 origin, float3 direction, Rng rng) {
     p.seen_directly = 1;
     p.inside = scene_distance(origin) < 0.0f;
     p.active = 1;
+    p.catcher = 0;
     p.rng = rng;
     p.shadow.pending = 0;
     float3_to_array(origin, p.shadow.origin); /* a defined ray where there is none */
@@ -114,18 +122,42 @@ SS_FN PathState path_begin(float3 origin, float3 direction, Rng rng) {
 
 /* The path's ray found `march_result`: adds what it sees there (the environment, an emitter), and at
  * a surface it scatters from makes the light sample (p->shadow) and samples the BSDF for its next
- * ray. Clears p->active when the path ends. */
+ * ray. Clears p->active when the path ends.
+ *
+ * A shadow catcher the camera ray hits is differential rendering (Debevec 1998): the pixel is the
+ * backdrop behind it plus the catcher's radiance with the other objects less its radiance without
+ * them, each estimated on the same path. Without them the catcher sees only the sky: so a light
+ * sample of the sky counts negated where the other objects block it, one of another light counts as
+ * usual (its light is theirs), and the BSDF's ray adds nothing where it escapes (the same sky either
+ * way) and, where it hits an object, what that object sends less what the sky would have, with the
+ * MIS weight the sky would have had. With nothing above it, every term is 0: the catcher is the
+ * backdrop exactly. Reached by any other ray the catcher is an ordinary surface of its material,
+ * the ground that differential rendering's local scene models. */
 SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings march_settings, const RenderScene* scene, PathState* p, MarchResult march_result) {
     float3 radiance = float3_from_array(p->radiance);
     float3 throughput = float3_from_array(p->throughput);
     float3 origin = float3_from_array(p->origin), direction = float3_from_array(p->direction);
     float3 previous_p = float3_from_array(p->previous_p);
+    bool has_environment = settings->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
+    bool from_catcher = p->catcher != 0;
     p->active = 0;
+    p->catcher = 0;
+    if (from_catcher && has_environment) {
+        if (march_result.status != MARCH_HIT) return; /* the same sky with the objects and without */
+        float env_pdf;
+        float3 le = environment_radiance_pdf(&scene->env, scene->env_buffers.texels, direction, &env_pdf);
+        float weight = light_hit_mis_weight(settings, p->previous_pdf, p->previous_delta,
+                                            light_selection_pmf(scene->light_cdf, settings->light_count, 0) * env_pdf);
+        radiance -= throughput * weight * le; /* the sky this object hides */
+        float3_to_array(radiance, p->radiance);
+    }
     if (march_result.status != MARCH_HIT) {
-        bool has_environment = settings->light_count > 0 && scene->lights[0].type == LIGHT_ENVIRONMENT;
-        if (has_environment && p->seen_directly && settings->show_background) {
-            /* what the eye sees directly or in mirrors is filtered, so the backdrop shows no texels
-             * (it is seen after delta events only: no light sample could have found it) */
+        if (has_environment && p->depth == 0) {
+            /* the camera ray: the backdrop (kernels/background.h); no light sample could have found it */
+            if (settings->background_opacity > 0.0f) radiance += throughput * background_radiance(settings, scene, direction);
+        } else if (has_environment && p->seen_directly) {
+            /* what the eye sees in mirrors is filtered, so it shows no texels (it is seen after delta
+             * events only: no light sample could have found it) */
             float weight = light_hit_weight(settings, scene, 0, previous_p, direction, p->previous_pdf, p->previous_delta);
             if (weight > 0.0f) radiance += throughput * weight * environment_radiance_filtered(&scene->env, scene->env_buffers.texels, direction);
         } else if (has_environment && !p->seen_directly) {
@@ -150,6 +182,11 @@ SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings marc
          * a sphere light is a surface, not a solid the path enters. */
         hit = facing_side(hit);
     }
+    bool catcher = emitted.w == EMISSION_CATCHER && p->depth == 0;
+    if (catcher && has_environment && settings->background_opacity > 0.0f) {
+        radiance += throughput * background_radiance(settings, scene, direction); /* the backdrop behind it */
+        float3_to_array(radiance, p->radiance);
+    }
     if (p->depth >= settings->max_depth) return;
 
     /* bsdf_* take private pointers; the renderer clamped the scene's materials (material_clamped)
@@ -158,7 +195,7 @@ SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings marc
     float4 u_light = rng_next4(&p->rng);
     float4 u_bsdf = rng_next4(&p->rng);
     if (settings->light_sampling != LIGHT_SAMPLING_BSDF && settings->light_count > 0)
-        p->shadow = direct_light_sample(settings, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), throughput);
+        p->shadow = direct_light_sample(settings, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), throughput, catcher);
 
     BsdfSample b = bsdf_sample_clamped(&m, scene->measured, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
     if (b.flags == 0) return;
@@ -167,6 +204,7 @@ SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings marc
     p->previous_pdf = b.pdf;
     p->previous_delta = (b.flags & BSDF_DELTA) != 0;
     p->seen_directly = p->seen_directly && p->previous_delta;
+    p->catcher = catcher;
     if ((b.flags & BSDF_TRANSMISSION) != 0) p->inside = !p->inside;
     float3_to_array(offset_origin(hit.p, hit.frame.n, hit.epsilon, b.wi.z), p->origin);
     float3_to_array(frame_to_world(hit.frame, b.wi), p->direction);
@@ -186,8 +224,9 @@ SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings marc
 
 /* The march of the path's pending shadow ray: its light sample counts if the ray got there. */
 SS_FN void path_resolve_shadow(PathState* p, MarchResult r) {
+    bool counts_if_reached = p->shadow.pending == SHADOW_COUNTS_IF_REACHED;
     p->shadow.pending = 0;
-    if (shadow_reached(&p->shadow, r)) float3_to_array(float3_from_array(p->radiance) + float3_from_array(p->shadow.contribution), p->radiance);
+    if (shadow_reached(&p->shadow, r) == counts_if_reached) float3_to_array(float3_from_array(p->radiance) + float3_from_array(p->shadow.contribution), p->radiance);
 }
 
 /* Radiance arriving at `origin` from `direction`, estimated by one path drawing its numbers from

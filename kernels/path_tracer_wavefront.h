@@ -107,7 +107,7 @@ SS_FN SS_INLINE_ALWAYS void prefetch_step_environment(const RenderKernelSettings
 }
 
 /* Asks the cache for the lines of path `path`'s state that prefetch_step_environment reads (its
- * direction, depth, flags and generator: 36 to 100 bytes into the 148), sixteen paths ahead, so
+ * direction, depth, flags and generator: 36 to 104 bytes into the 152), sixteen paths ahead, so
  * that its peek eight paths ahead does not wait for them: without it, that first touch of the state
  * is a quarter of the peek's time in perf; the hardware's stream prefetcher does not reach so far.
  * PoCL's CPU wavefront only, as prefetch_step_environment; no bit of the image changes. */

@@ -12,7 +12,10 @@
 #include "kernels/lights/light.h"
 
 /* emission[slot].w: the slot emits nothing; it emits and absorbs what reaches it (a black emitter,
- * the path ends there); it emits and scatters by its material too (a reflecting emitter). */
+ * the path ends there); it emits and scatters by its material too (a reflecting emitter); or it is a
+ * shadow catcher, which emits nothing and which the camera sees as the backdrop changed by what
+ * the other objects do to its light (kernels/path_tracer.h, docs/environments.md). */
+#define EMISSION_CATCHER -1.0f
 #define EMISSION_NONE 0.0f
 #define EMISSION_ABSORBS 1.0f
 #define EMISSION_SCATTERS 2.0f

@@ -30,7 +30,12 @@ typedef struct RenderKernelSettings {
     int max_steps;
     float max_distance, over_relaxation, lipschitz;
     int light_count;      /* entries of the light array; the environment, when there is one, is entry 0 */
-    int show_background;  /* 0: camera rays (and mirror paths) that escape see black, lighting unchanged */
+    /* what a camera ray that escapes sees (kernels/background.h); lighting is the environment's:
+     * opacity scales it (0 hides it), and background_face_size > 0 reads a prefiltered copy of the
+     * map of that face size, stored in the environment's texel buffer from texel background_texels on */
+    float background_opacity;
+    int background_face_size;
+    int background_texels;
     BdptKernelSettings bdpt; /* the bidirectional kernels' own (kernels/bdpt_settings.h) */
     float surface_lo[3], surface_hi[3]; /* MarchSettings' surface box */
 } RenderKernelSettings;

@@ -42,4 +42,10 @@ std::vector<film::ImageChannel> aov_channels(const FirstHitAovs& aovs, const Aov
     return channels;
 }
 
+film::ImageChannel background_alpha_channel(const FirstHitAovs& aovs, float background_opacity) {
+    film::ImageChannel alpha{"A", aovs.coverage};
+    for (float& a : alpha.values) a += (1.0f - a) * background_opacity;
+    return alpha;
+}
+
 }  // namespace lab::render

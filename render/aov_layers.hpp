@@ -24,4 +24,9 @@ AovSelection parse_aov_selection(const std::string& text, const std::string& out
 // The selected AOVs as EXR channels, in the order albedo, normal, depth.
 std::vector<film::ImageChannel> aov_channels(const FirstHitAovs& aovs, const AovSelection& selection);
 
+// The image's alpha, channel "A" (premultiplied, as the RGB is: over a plate P a compositor shows
+// RGB + (1 - A) P): a pixel's covered share counts opaque, the rest as the backdrop's opacity, so
+// A = coverage + (1 - coverage) opacity (docs/environments.md, "Background").
+film::ImageChannel background_alpha_channel(const FirstHitAovs& aovs, float background_opacity);
+
 }  // namespace lab::render

@@ -14,7 +14,8 @@ namespace lab::render {
 
 FirstHitAovs Renderer::first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums) const {
     const int width = input_.settings.width, height = input_.settings.height;
-    FirstHitAovs aovs{film::ImageRgb(width, height), film::ImageRgb(width, height), std::vector<float>(size_t(width) * size_t(height), 0.0f)};
+    const size_t pixels = size_t(width) * size_t(height);
+    FirstHitAovs aovs{film::ImageRgb(width, height), film::ImageRgb(width, height), std::vector<float>(pixels, 0.0f), std::vector<float>(pixels, 0.0f)};
     const int64_t samples = sample_ranges().count();
     if (samples == 0) return aovs;
     const float scale = float(1.0 / double(samples));
@@ -24,6 +25,7 @@ FirstHitAovs Renderer::first_hit_means(const std::vector<brdf::float4>& albedo_s
             aovs.normal.rgb[3 * p + size_t(c)] = normal_depth_sums[p][c] * scale;
         }
         aovs.depth[p] = normal_depth_sums[p][3] * scale;
+        aovs.coverage[p] = albedo_sums[p][3] * scale;
     }
     return aovs;
 }
@@ -42,7 +44,7 @@ FirstHitAovs Renderer::first_hit_aovs() const {
             for (const auto& [first, end] : ranges.ranges())
                 for (int64_t sample = first; sample < end; ++sample) {
                     const host_kernels::FirstHit h = host_kernels::first_hit_sample(&settings, &camera_, &scene, pixel, int(sample));
-                    albedo[size_t(pixel)] += brdf::float4(h.albedo, 0.0f);
+                    albedo[size_t(pixel)] += brdf::float4(h.albedo, h.coverage);
                     normal_depth[size_t(pixel)] += brdf::float4(h.normal, h.depth);
                 }
     };

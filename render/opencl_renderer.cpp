@@ -77,10 +77,11 @@ void OpenClRenderer::upload_scene() {
     const ibl::Environment& env = bound_environment();
     // The map's texels and sampling tables (megabytes) stay as they are when the materials, or the
     // environment's rotation and exposure (kernel arguments), change: uploaded once per map.
-    if (env.texels().data() != uploaded_texels_) {
-        texels_ = upload(runtime_, env.texels());
+    if (env.texels().data() != uploaded_texels_ || texels_version() != uploaded_texels_version_) {
+        texels_ = upload(runtime_, bound_texels());  // with the blurred backdrop after them, when there is one
         alias_ = upload(runtime_, env.alias());
         uploaded_texels_ = env.texels().data();
+        uploaded_texels_version_ = texels_version();
     }
     materials_ = upload(runtime_, compiled_.materials);
     // the measured tables only for a scene that has a measured material, and only when they changed

@@ -63,6 +63,7 @@ private:
     opencl::BufferHandle accumulation_, splat_, rays_, lost_;
     size_t film_pixels_ = 0;  // the size the film buffers were made for
     const brdf::float4* uploaded_texels_ = nullptr;  // the environment texels texels_ holds
+    uint64_t uploaded_texels_version_ = 0;           // and Renderer::texels_version() when uploaded
 };
 
 }  // namespace lab::render

@@ -84,7 +84,8 @@ film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatis
     m.set("max_steps", s.max_steps);
     m.set("max_distance", s.max_distance);
     m.set("over_relaxation", s.over_relaxation);
-    m.set("show_background", s.show_background ? 1 : 0);
+    m.set("background_opacity", s.background_opacity);
+    m.set("background_blur", s.background_blur_degrees);
     m.set("object_bounds", s.object_bounds ? "on" : "off");
     m.set("geometry", s.march_everything ? "march" : "auto");
     m.set("normals", normal_method_name(s.normals));

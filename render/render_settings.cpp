@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/input_error.hpp"
+#include "ibl/background_blur.hpp"
 #include "kernels/host.hpp"
 #include "render/option_words.hpp"
 
@@ -51,6 +52,10 @@ void check_render_settings(const RenderSettings& settings) {
         throw InputError("--max-steps", "", "must be in [1, 1048576], got " + std::to_string(settings.max_steps));
     if (!(settings.over_relaxation >= 1.0f && settings.over_relaxation <= 2.0f))
         throw InputError("--over-relaxation", "", "must be in [1, 2]");
+    if (!(settings.background_opacity >= 0.0f && settings.background_opacity <= 1.0f))
+        throw InputError("--background-opacity", "", "must be a number in [0, 1]");
+    if (!(settings.background_blur_degrees >= 0.0f && settings.background_blur_degrees <= ibl::kMaxBackgroundBlurDegrees))
+        throw InputError("--background-blur", "", "must be a number of degrees in [0, 90]");
 }
 
 namespace {

@@ -44,7 +44,9 @@ struct RenderSettings {
     float over_relaxation = 1.5f;
     int max_steps = 1024;
     float max_distance = 100.0f;
-    bool show_background = true;   // false: escaping camera rays see black (lighting unchanged)
+    // What escaping camera rays see of the environment (kernels/background.h); lighting unchanged.
+    float background_opacity = 1.0f;       // in [0, 1]; 0 hides the backdrop (the EXR's alpha says where)
+    float background_blur_degrees = 0.0f;  // in [0, 90]; 0 sharp, else ibl::blur_cubemap's sigma
     bool object_bounds = true;     // box tests skip far objects (scene::CompileOptions; the field is unchanged)
     bool march_everything = false; // --geometry march: no exact intersection (scene::CompileOptions)
     uint64_t seed = 0;

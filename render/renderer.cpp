@@ -8,6 +8,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/features.hpp"
 #include "common/input_error.hpp"
+#include "ibl/background_blur.hpp"
 #include "render/camera_setup.hpp"
 #include "render/film_resolve.hpp"
 
@@ -54,6 +55,7 @@ std::vector<brdf::float4> emission_table(const scene::CompiledScene& scene) {
         scene::Vec3 e = k < scene.emission.size() ? scene.emission[k] : scene::Vec3(0.0f);
         float kind = EMISSION_NONE;
         if (e.x > 0.0f || e.y > 0.0f || e.z > 0.0f) kind = scatters(scene.materials[k]) ? EMISSION_SCATTERS : EMISSION_ABSORBS;
+        else if (k < scene.shadow_catcher.size() && scene.shadow_catcher[k]) kind = EMISSION_CATCHER;
         table.push_back(brdf::float4(e.x, e.y, e.z, kind));
     }
     return table;
@@ -74,7 +76,12 @@ Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     }
     emission_ = emission_table(compiled_);
     rebuild_lights();
+    rebuild_background();
     check_integrator_lights(input_.settings.integrator, compiled_.file, !lights_.lights.empty(), input_.environment.has_value());
+    for (size_t k = 0; k < compiled_.shadow_catcher.size(); ++k)
+        if (compiled_.shadow_catcher[k] && input_.settings.integrator != Integrator::pt)
+            throw InputError(compiled_.file, "--integrator",
+                             std::string("the shadow catcher (material \"") + compiled_.material_names[k] + "\") is rendered by the path tracer only: use --integrator pt");
 }
 
 void Renderer::initialize() {
@@ -111,7 +118,9 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     launch_settings.over_relaxation = s.over_relaxation;
     launch_settings.lipschitz = std::max(compiled_.lipschitz, 1.0f);
     launch_settings.light_count = int(lights_.lights.size());
-    launch_settings.show_background = s.show_background ? 1 : 0;
+    launch_settings.background_opacity = s.background_opacity;
+    launch_settings.background_face_size = background_face_size_;
+    launch_settings.background_texels = background_face_size_ > 0 ? int(bound_environment().texels().size()) : 0;
     launch_settings.bdpt.max_vertices = bdpt_max_vertices(s);
     const StrategyDebugSettings& debug = s.strategy_debug;
     launch_settings.bdpt.strategies = debug.strategies != 0 ? debug.strategies : integrator_descriptor(s.integrator).strategies;
@@ -142,8 +151,26 @@ const ibl::Environment& Renderer::bound_environment() const {
 kernel::RenderScene Renderer::host_render_scene() const {
     const ibl::Environment& env = bound_environment();
     return kernel::render_scene_make(compiled_.materials.data(), brdf::measured_tables(), emission_.data(), lights_.lights.data(),
-                                     lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(), env.texels().data(),
+                                     lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(), bound_texels().data(),
                                      env.alias().data());
+}
+
+const std::vector<brdf::float4>& Renderer::bound_texels() const {
+    return background_face_size_ > 0 ? texels_with_background_ : bound_environment().texels();
+}
+
+void Renderer::rebuild_background() {
+    const float blur = input_.settings.background_blur_degrees;
+    texels_with_background_.clear();
+    background_face_size_ = 0;
+    if (blur > 0.0f && input_.environment) {
+        const ibl::Environment& env = *input_.environment;
+        ibl::BlurredCubemap blurred = ibl::blur_cubemap(env.texels(), env.face_size(), blur);
+        texels_with_background_ = env.texels();
+        texels_with_background_.insert(texels_with_background_.end(), blurred.texels.begin(), blurred.texels.end());
+        background_face_size_ = blurred.face_size;
+    }
+    ++texels_version_;
 }
 
 int Renderer::add_samples(int max_samples, double budget_seconds) {
@@ -250,8 +277,17 @@ void Renderer::set_environment_transform(float rotation_degrees, float exposure_
     reset();
 }
 
-void Renderer::set_show_background(bool show) {
-    input_.settings.show_background = show;
+void Renderer::set_background(float opacity, float blur_degrees) {
+    RenderSettings s = input_.settings;
+    s.background_opacity = opacity;
+    s.background_blur_degrees = blur_degrees;
+    check_render_settings(s);
+    const bool blur_changed = blur_degrees != input_.settings.background_blur_degrees;
+    input_.settings = s;
+    if (blur_changed) {
+        rebuild_background();
+        upload_scene();
+    }
     reset();
 }
 

@@ -40,9 +40,12 @@ struct RenderInput {
 // (directional, estimated by one BSDF sample per camera ray), world-space shading normal (the mean
 // of unit normals, not renormalised, so an edge pixel shows its mix), camera-ray distance. A ray
 // that escapes adds zeros, so a pixel partly on the background holds the covered fraction's share.
+// Coverage is the share of the pixel's camera rays that hit a surface: the EXR's alpha with the
+// backdrop's opacity (background_alpha).
 struct FirstHitAovs {
     film::ImageRgb albedo, normal;
-    std::vector<float> depth;  // one per pixel
+    std::vector<float> depth;     // one per pixel
+    std::vector<float> coverage;  // one per pixel, in [0, 1]
 };
 
 struct RenderStatistics {
@@ -123,8 +126,11 @@ public:
     // The environment turned and scaled anew (absolute values, as ibl::EnvironmentOptions); resets.
     // The light selection follows the environment's new power.
     void set_environment_transform(float rotation_degrees, float exposure_stops);
-    // Shows or hides what camera rays see of the environment directly; resets.
-    void set_show_background(bool show);
+    // What camera rays that escape see of the environment (kernels/background.h): its opacity in
+    // [0, 1] and its blur in degrees (0: sharp; else ibl::blur_cubemap, built here when the angle
+    // changes); the lighting stays the environment's. Resets. Throws lab::InputError as
+    // check_render_settings does.
+    void set_background(float opacity, float blur_degrees);
 
     // The mean so far (all zeros before the first sample): each pixel's own finite samples, plus
     // what was splatted onto it, over the samples per pixel. A pixel none of whose samples was
@@ -165,10 +171,14 @@ protected:
     // The environment the kernels bind: the input's, or a black one when there is none (the kernels
     // take its map and buffers either way; without an environment light nothing reads them).
     const ibl::Environment& bound_environment() const;
-    // The AOVs from each pixel's sums over the film's samples: albedo in xyz; normal in xyz, depth in w.
+    // The AOVs from each pixel's sums over the film's samples: albedo in xyz, coverage in w; normal in xyz, depth in w.
     FirstHitAovs first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums) const;
     // The scene as the kernels' host build reads it (kernels/render_scene.h), over this renderer's buffers.
     kernel::RenderScene host_render_scene() const;
+    // The texels the kernels bind: the environment's, followed by the blurred backdrop's when there
+    // is a blur (kernels/background.h); texels_version() changes whenever they do.
+    const std::vector<brdf::float4>& bound_texels() const;
+    uint64_t texels_version() const { return texels_version_; }
 
     RenderInput input_;
     scene::CompiledScene compiled_;
@@ -179,6 +189,12 @@ protected:
 
 private:
     void rebuild_lights();
+    // The blurred backdrop for input_.settings.background_blur_degrees (none at 0 or without an environment).
+    void rebuild_background();
+
+    std::vector<brdf::float4> texels_with_background_;  // the environment's texels, then the blurred map's
+    int background_face_size_ = 0;                       // the blurred map's face; 0: none
+    uint64_t texels_version_ = 0;
 
     int first_sample_ = 0;    // where a reset film starts
     SampleRanges restored_;   // the samples restore_film put on the film

@@ -17,6 +17,9 @@ CompiledScene compile_scene(const Scene& input, const CompileOptions& options) {
         out.material_names.push_back(slot.name);
         out.emission.push_back(slot.emission);
     }
+    out.shadow_catcher.assign(out.materials.size(), false);
+    for (const Object& object : scene.objects)
+        if (object.shadow_catcher) out.shadow_catcher[size_t(object.material)] = true;
     out.emitters = scene.emitters;
     out.point_lights = scene.point_lights;
     scene_bounds(scene, &out.bounds_center, &out.bounds_radius);

@@ -105,7 +105,7 @@ std::vector<Object> parse_objects(const Json& value, const std::string& file, co
     std::map<std::string, size_t> first_index;
     for (size_t i = 0; i < value.size(); ++i) {
         std::string path = element_path("objects", i);
-        Fields f(value[i], path, file, {"name", "material", "shape"});
+        Fields f(value[i], path, file, {"name", "material", "shape", "shadow_catcher"});
         Object object;
         object.name = f.string("name");
         if (object.name.empty()) f.fail("name", "an object name must not be empty");
@@ -118,8 +118,20 @@ std::vector<Object> parse_objects(const Json& value, const std::string& file, co
             if (materials[m].name == material) object.material = int(m);
         if (object.material < 0) f.fail("material", "material \"" + material + "\" is not declared in \"materials\"");
         object.shape = parse_node(f.at("shape"), f.path_of("shape"), file);
+        if (f.has("shadow_catcher")) {
+            if (!f.at("shadow_catcher").is_boolean())
+                f.fail("shadow_catcher", std::string("expected true or false, got ") + f.at("shadow_catcher").type_name());
+            object.shadow_catcher = f.at("shadow_catcher").get<bool>();
+        }
         objects.push_back(std::move(object));
     }
+    // A catcher's slot tells the kernels what its surface is, so no other object may share it.
+    for (size_t i = 0; i < objects.size(); ++i)
+        for (size_t j = 0; j < objects.size(); ++j)
+            if (objects[i].shadow_catcher && !objects[j].shadow_catcher && objects[i].material == objects[j].material)
+                throw InputError(file, element_path("objects", i) + ".material",
+                                 "a shadow catcher needs a material of its own, and \"" + materials[size_t(objects[i].material)].name +
+                                     "\" is also " + element_path("objects", j) + "'s, which is no catcher");
     return objects;
 }
 
@@ -185,7 +197,7 @@ void check_shape_node_count(const std::vector<Object>& objects, const std::strin
 }
 
 EnvironmentSpec parse_environment(const Json& value, const std::string& file) {
-    Fields f(value, "environment", file, {"file", "constant", "rotation_degrees", "exposure"});
+    Fields f(value, "environment", file, {"file", "constant", "rotation_degrees", "exposure", "background_opacity", "background_blur_degrees"});
     EnvironmentSpec env;
     if (f.has("file") == f.has("constant"))
         throw InputError(file, "environment", "give exactly one of \"file\" (an image) and \"constant\" (a radiance)");
@@ -198,6 +210,8 @@ EnvironmentSpec parse_environment(const Json& value, const std::string& file) {
     }
     if (f.has("rotation_degrees")) env.rotation_degrees = f.in_range("rotation_degrees", -360.0f, 360.0f);
     if (f.has("exposure")) env.exposure = f.in_range("exposure", -20.0f, 20.0f);
+    if (f.has("background_opacity")) env.background_opacity = f.in_range("background_opacity", 0.0f, 1.0f);
+    if (f.has("background_blur_degrees")) env.background_blur_degrees = f.in_range("background_blur_degrees", 0.0f, 90.0f);
     return env;
 }
 

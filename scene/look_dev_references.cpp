@@ -6,6 +6,7 @@
 #include "brdf/host/parameters.hpp"
 #include "common/input_error.hpp"
 #include "film/tone_map.hpp"
+#include "scene/shadow_catcher.hpp"
 
 namespace lab::scene {
 
@@ -23,7 +24,7 @@ const std::array<ColorCheckerPatch, 24> kColorCheckerPatches = {{
 LookDevReferences parse_look_dev_references(const std::string& text, const std::string& option) {
     LookDevReferences r;
     if (text == "none") return r;
-    if (text == "all") return LookDevReferences{true, true, true};
+    if (text == "all") return LookDevReferences{true, true, true, false};
     size_t start = 0;
     while (start <= text.size()) {
         const size_t comma = text.find(',', start);
@@ -34,8 +35,10 @@ LookDevReferences parse_look_dev_references(const std::string& text, const std::
             r.grey_ball = true;
         else if (word == "chart")
             r.color_chart = true;
+        else if (word == "catcher")
+            r.shadow_catcher = true;
         else
-            throw InputError(option, "", "unknown reference \"" + word + "\" (none, all, or a list of chrome, grey, chart)");
+            throw InputError(option, "", "unknown reference \"" + word + "\" (none, all, or a list of chrome, grey, chart, catcher)");
         if (comma == std::string::npos) break;
         start = comma + 1;
     }
@@ -44,7 +47,7 @@ LookDevReferences parse_look_dev_references(const std::string& text, const std::
 
 std::string look_dev_references_text(const LookDevReferences& r) {
     std::string words;
-    for (const auto& [on, word] : {std::pair{r.chrome_ball, "chrome"}, {r.grey_ball, "grey"}, {r.color_chart, "chart"}})
+    for (const auto& [on, word] : {std::pair{r.chrome_ball, "chrome"}, {r.grey_ball, "grey"}, {r.color_chart, "chart"}, {r.shadow_catcher, "catcher"}})
         if (on) words += (words.empty() ? "" : ",") + std::string(word);
     return words.empty() ? "none" : words;
 }
@@ -105,7 +108,7 @@ ViewPlane view_plane(const Camera& c, float aspect) {
 }  // namespace
 
 Scene with_look_dev_references(const Scene& scene, const LookDevReferences& which, float aspect) {
-    Scene out = scene;
+    Scene out = which.shadow_catcher ? with_shadow_catcher(scene) : scene;
     if (!which.any()) return out;
     const ViewPlane v = view_plane(scene.camera, aspect);
     const float h = v.half_height;

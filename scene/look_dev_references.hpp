@@ -14,11 +14,15 @@
 
 namespace lab::scene {
 
+// With them, as the look-dev staging they share a switch with, the shadow catcher that takes the
+// ground's place (scene/shadow_catcher.hpp; `--shadow-catcher`, the word "catcher").
 struct LookDevReferences {
     bool chrome_ball = false, grey_ball = false, color_chart = false;
-    bool any() const { return chrome_ball || grey_ball || color_chart; }
+    bool shadow_catcher = false;
+    bool any() const { return chrome_ball || grey_ball || color_chart || shadow_catcher; }
 };
-// "none", "all", or a comma list of chrome, grey, chart; throws lab::InputError(option, ...) otherwise.
+// "none", "all" (the three references), or a comma list of chrome, grey, chart, catcher; throws
+// lab::InputError(option, ...) otherwise.
 LookDevReferences parse_look_dev_references(const std::string& text, const std::string& option);
 // The words parse_look_dev_references reads back as `references`: "none", or e.g. "chrome,chart".
 std::string look_dev_references_text(const LookDevReferences& references);
@@ -42,8 +46,8 @@ constexpr float kGreyBallAlbedo = 0.18f;
 constexpr float kChromeF0[3] = {0.549f, 0.556f, 0.554f};
 
 // The scene with the references added: their material slots after all of the scene's (whose
-// indices do not change), their objects after the scene's. `aspect` (width / height of the image)
-// places them in the view's corners.
+// indices do not change), their objects after the scene's; the shadow catcher's first
+// (with_shadow_catcher). `aspect` (width / height of the image) places them in the view's corners.
 Scene with_look_dev_references(const Scene& scene, const LookDevReferences& which, float aspect);
 
 }  // namespace lab::scene

@@ -67,6 +67,9 @@ struct Object {
     std::string name;
     int material = 0;  // material slot
     Node shape;
+    // A shadow catcher (docs/environments.md, "Shadow catcher"): seen by the camera it shows the
+    // backdrop behind it with what the other objects change of its light; its slot is its own.
+    bool shadow_catcher = false;
 };
 
 // An emissive sphere: part of the distance field with a material slot of its own. It emits the
@@ -103,6 +106,10 @@ struct EnvironmentSpec {
     Vec3 constant{0.0f};              // radiance when `file` is empty
     float rotation_degrees = 0.0f;    // about +y
     float exposure = 0.0f;            // stops
+    // What camera rays that escape see of it (render::RenderSettings; the command line's
+    // --background-opacity and --background-blur replace them); the lighting is unchanged.
+    float background_opacity = 1.0f;       // [0, 1]
+    float background_blur_degrees = 0.0f;  // [0, 90]
 };
 
 // A material slot: declared materials first (in file order), then one per emissive sphere, then

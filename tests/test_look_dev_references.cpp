@@ -110,5 +110,5 @@ TEST_CASE("Look-dev references: added after every slot of the scene, which keep 
     CHECK(lab::scene::parse_look_dev_references("chrome,chart", "--references").color_chart);
     CHECK_FALSE(lab::scene::parse_look_dev_references("none", "--references").any());
     CHECK_THROWS_WITH(lab::scene::parse_look_dev_references("chrome,teapot", "--references"),
-                      "--references: unknown reference \"teapot\" (none, all, or a list of chrome, grey, chart)");
+                      "--references: unknown reference \"teapot\" (none, all, or a list of chrome, grey, chart, catcher)");
 }

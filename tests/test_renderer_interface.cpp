@@ -94,7 +94,7 @@ TEST_CASE("Renderer: hiding the background blackens what the camera sees of the 
     input.settings.width = input.settings.height = 8;
     lab::render::HostRenderer renderer(input, 1);
     lab::film::ImageRgb shown = render_samples(renderer, 2).image;
-    renderer.set_show_background(false);
+    renderer.set_background(0.0f, 0.0f);
     lab::film::ImageRgb hidden = render_samples(renderer, 2).image;
     // The sky is 1; the model (albedo 0.8) is darker. A pixel whose samples all saw the sky goes
     // black, one whose samples all saw the model keeps its value, one between loses its sky samples.

@@ -207,7 +207,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
         {"/environment", R"({"constant": [1, -1, 1]})",
          "scenes/x.json: environment.constant[1]: value -1 must be >= 0"},
         {"/environment", R"({"file": "a.exr", "gamma": 2.2})",
-         "scenes/x.json: environment.gamma: unknown key (expected one of: file, constant, rotation_degrees, exposure)"},
+         "scenes/x.json: environment.gamma: unknown key (expected one of: file, constant, rotation_degrees, exposure, background_opacity, background_blur_degrees)"},
         {"/extra", "1",
          "scenes/x.json: extra: unknown key (expected one of: $schema, description, camera, materials, objects, emitters, environment)"},
     };

@@ -36,6 +36,11 @@ void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* lo
     *changed |= ImGui::SliderFloat("rotation", &ui->view.env_rotation_degrees, -180.0f, 180.0f, "%.1f deg");
     *changed |= ImGui::SliderFloat("light (stops)", &ui->view.env_exposure_stops, -8.0f, 8.0f, "%.2f");
     *changed |= ImGui::Checkbox("background", &ui->view.show_background);
+    // the backdrop only: lighting, mirrors and glass keep the map as it is (kernels/background.h);
+    // a blur is applied when the slider is let go, since each angle prefilters the map anew
+    ImGui::SliderFloat("background blur", &ui->view.background_blur_degrees, 0.0f, 30.0f, "%.1f deg");
+    *changed |= ImGui::IsItemDeactivatedAfterEdit();
+    *changed |= ImGui::SliderFloat("background opacity", &ui->view.background_opacity, 0.0f, 1.0f, "%.2f");
     int tone = int(ui->tone_map);
     if (ImGui::Combo("tone map", &tone, "aces\0reinhard\0clamp\0")) {
         ui->tone_map = film::ToneMap(tone);
@@ -49,6 +54,8 @@ void environment_panel(UiState* ui, bool* changed, bool* retone, std::string* lo
     *references_changed |= ImGui::Checkbox("grey ball", &references->grey_ball);
     ImGui::SameLine();
     *references_changed |= ImGui::Checkbox("chart", &references->color_chart);
+    // the ground as a shadow catcher: the backdrop with the model's shadows (docs/environments.md)
+    *references_changed |= ImGui::Checkbox("shadow catcher", &references->shadow_catcher);
 }
 
 bool preset_panel(UiState* ui) {

@@ -160,8 +160,9 @@ void RenderWorker::apply(render::Renderer& renderer, const ViewState& s, const V
         renderer.set_environment_transform(s.env_rotation_degrees, s.env_exposure_stops);
         restarted = true;
     }
-    if (!applied || s.show_background != applied->show_background) {
-        renderer.set_show_background(s.show_background);
+    if (!applied || s.show_background != applied->show_background || s.background_opacity != applied->background_opacity ||
+        s.background_blur_degrees != applied->background_blur_degrees) {
+        renderer.set_background(s.show_background ? s.background_opacity : 0.0f, s.background_blur_degrees);
         restarted = true;
     }
     if (!restarted) renderer.reset();  // a state equal to the applied one still restarts: the user asked for it

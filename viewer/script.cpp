@@ -50,8 +50,12 @@ void apply_move(ViewState* state, const std::string& key, const std::string& val
         state->env_rotation_degrees = number(key, value, -360.0f, 360.0f);
     } else if (key == "env_exposure") {
         state->env_exposure_stops = number(key, value, -64.0f, 64.0f);
+    } else if (key == "background_blur") {
+        state->background_blur_degrees = number(key, value, 0.0f, 90.0f);
+    } else if (key == "background_opacity") {
+        state->background_opacity = number(key, value, 0.0f, 1.0f);
     } else {
-        throw InputError("--move", key, "unknown key (orbit, env_rotation, env_exposure)");
+        throw InputError("--move", key, "unknown key (orbit, env_rotation, env_exposure, background_blur, background_opacity)");
     }
 }
 

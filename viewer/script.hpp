@@ -18,7 +18,8 @@ struct ScriptedSet {
 ScriptedSet parse_scripted_set(const std::string& text);
 
 // `--move KEY=VALUE@FRAME`: a camera or environment change as the mouse and the environment panel
-// make it: orbit=DX,DY (a drag on the render, in pixels), env_rotation=DEGREES, env_exposure=STOPS.
+// make it: orbit=DX,DY (a drag on the render, in pixels), env_rotation=DEGREES, env_exposure=STOPS,
+// background_blur=DEGREES, background_opacity=A.
 // Throws lab::InputError("--move", KEY, ...) for an unknown key or a bad value.
 void apply_move(ViewState* state, const std::string& key, const std::string& value);
 

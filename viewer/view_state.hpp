@@ -15,7 +15,9 @@ struct ViewState {
     scene::Camera camera;
     float env_rotation_degrees = 0.0f;      // absolute, as ibl::EnvironmentOptions
     float env_exposure_stops = 0.0f;
-    bool show_background = true;
+    bool show_background = true;            // B: off shows the backdrop at opacity 0
+    float background_opacity = 1.0f;        // what camera rays see of the map (kernels/background.h)
+    float background_blur_degrees = 0.0f;
     int width = 0, height = 0;  // the render's full size (the window's render area); 0: the renderer's own
 };
 

@@ -292,7 +292,7 @@ cli_bad_input(NAME preview.unknown_sampling ABSENT ${PNG} EXPECT "${E}--ibl-samp
               ARGS ${PREVIEW} --ibl-sampling light)
 cli_bad_input(NAME preview.unknown_normals ABSENT ${PNG} EXPECT "${E}--normals: unknown value \"sobel\" \\(tetrahedral, central, analytic\\)$"
               ARGS ${PREVIEW} --normals sobel)
-cli_bad_input(NAME preview.unknown_reference ABSENT ${PNG} EXPECT "${E}--references: unknown reference \"teapot\" \\(none, all, or a list of chrome, grey, chart\\)$"
+cli_bad_input(NAME preview.unknown_reference ABSENT ${PNG} EXPECT "${E}--references: unknown reference \"teapot\" \\(none, all, or a list of chrome, grey, chart, catcher\\)$"
               ARGS ${PREVIEW} --references grey,teapot)
 cli_bad_input(NAME preview.ground_word ABSENT ${PNG} EXPECT "${E}--ground: expected on or off, got \"maybe\"$"
               ARGS ${PREVIEW} --ground maybe)
@@ -364,6 +364,17 @@ add_test(NAME cli.preview.denoise_keeps_the_raw_image
 set_tests_properties(cli.preview.denoise_keeps_the_raw_image PROPERTIES LABELS cli TIMEOUT 60)
 cli_bad_input(NAME preview.denoise_word ABSENT ${PNG} EXPECT "${E}--denoise: expected on or off, got \"yes\"$"
               ARGS preview --size 8x8 --spp 1 --denoise yes -o ${PNG})
+# the backdrop's controls: out of range, and the shadow catcher under BDPT, stop before the render
+cli_bad_input(NAME render.background_opacity_range ABSENT ${PNG} EXPECT "${E}--background-opacity: must be a number in \\[0, 1\\]$"
+              ARGS ${RENDER} --background-opacity 1.5)
+cli_bad_input(NAME render.background_blur_range ABSENT ${PNG} EXPECT "${E}--background-blur: must be a number of degrees in \\[0, 90\\]$"
+              ARGS ${RENDER} --background-blur -1)
+cli_bad_input(NAME preview.shadow_catcher_bdpt ABSENT ${PNG}
+              EXPECT "${E}.*: --integrator: the shadow catcher \\(material \"shadow_catcher\"\\) is rendered by the path tracer only: use --integrator pt$"
+              ARGS render scenes/shader_ball.json --env constant:1,1,1 --size 8x8 --spp 1 --integrator bdpt --shadow-catcher -o ${PNG})
+add_test(NAME cli.preview.background_alpha
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/background_alpha -P ${CLI_TEST_DIR}/expect_background_alpha.cmake)
+set_tests_properties(cli.preview.background_alpha PROPERTIES LABELS cli TIMEOUT 60)
 add_test(NAME cli.render.writes_aov_layers
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/aov_layers -DSOURCE=${PROJECT_SOURCE_DIR}
                  -P ${CLI_TEST_DIR}/expect_aov_layers.cmake)
@@ -499,8 +510,8 @@ cli_bad_input(NAME view.bad_constant_env EXPECT "${E}--env: constant: G is not a
 cli_bad_input(NAME view.set_unknown_key EXPECT "${E}--set: roughnes: unknown key$" ARGS view --frames 2 --set roughnes=0.2@1)
 cli_bad_input(NAME view.set_out_of_range EXPECT "${E}--set: roughness: value 2 is out of range \\[0, 1\\]$" ARGS view --frames 2 --set roughness=2@1)
 cli_bad_input(NAME view.bad_export_target EXPECT "${E}--export-to: expected SCENE\\.json:NAME" ARGS view --export-to nope)
-cli_bad_input(NAME view.move_unknown_key EXPECT "${E}--move: spin: unknown key \\(orbit, env_rotation, env_exposure\\)$" ARGS view --frames 2 --move spin=3@1)
-cli_bad_input(NAME view.unknown_reference_load EXPECT "${E}--load-references: unknown reference \"ball\" \\(none, all, or a list of chrome, grey, chart\\)$"
+cli_bad_input(NAME view.move_unknown_key EXPECT "${E}--move: spin: unknown key \\(orbit, env_rotation, env_exposure, background_blur, background_opacity\\)$" ARGS view --frames 2 --move spin=3@1)
+cli_bad_input(NAME view.unknown_reference_load EXPECT "${E}--load-references: unknown reference \"ball\" \\(none, all, or a list of chrome, grey, chart, catcher\\)$"
               ARGS view --frames 2 --load-references ball@1)
 cli_bad_input(NAME view.window_too_small EXPECT "${E}--window: 300x200 is smaller than the panel and a render beside it \\(504x240 at least\\)$"
               ARGS view --window 300x200)
@@ -517,7 +528,7 @@ find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT VIEW_TEST_PYTHON)
   find_program(VIEW_TEST_PYTHON python3)
 endif()
-foreach(view_case accumulate set preset export env references resize sections denoise)
+foreach(view_case accumulate set preset export env references background resize sections denoise)
   add_test(NAME cli.view.${view_case}
            COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
   # One at a time: xvfb-run -a started twice at once can pick the same display number.

@@ -4,8 +4,9 @@ no DISPLAY): the window opens and samples accumulate, the screenshot shows the m
 a scripted --set changes the model and not the backdrop, a saved preset loads back identical,
 --export-to writes a scene that `dtoadq render` renders with the material, the rest unchanged, and a
 map loaded in the window replaces the environment, or, when missing, leaves it and shows the error;
-the look-dev references come and go, a resize changes the render area and the render, every panel
-section opens without overlap, and the denoised display is smoother than the raw one and as bright.
+the look-dev references come and go, the backdrop's opacity and the shadow catcher follow the
+environment panel's script, a resize changes the render area and the render, every panel section
+opens without overlap, and the denoised display is nearer a longer render than the raw one.
 
 usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
 """
@@ -165,6 +166,25 @@ def case_references():
     print("references: the grey ball comes and goes")
 
 
+def case_background():
+    """The environment panel's backdrop controls: opacity 0 at a frame blackens the sky's pixels (the
+    model keeps its light), and the shadow catcher ticked on takes the ground's place under the model,
+    its pixel the sky's radiance (nothing shadows the inspected pixel enough to tell at 2 spp)."""
+    out = view(["--move", "background_opacity=0@1", "--inspect", "2,2"], "bg_hidden.png")
+    if not re.search(r"inspect: pixel 2,2; radiance 0 0 0 .*; no surface: the environment", out):
+        fail("opacity 0 left the sky: " + out)
+    image = read_png("bg_hidden.png")
+    for rows, cols in CORNERS:
+        if image[rows, cols].max() > 0:
+            fail("a corner of the screenshot is not black at opacity 0")
+    if image[CENTRE].max() < 20:
+        fail("the model went dark with the backdrop")
+    out = view(["--load-references", "catcher@1", "--inspect", "32,62"], "catcher.png")
+    if not re.search(r"inspect: pixel 32,62; radiance .*; material slot \d+ \(shadow_catcher\)", out):
+        fail("the shadow catcher did not appear: " + out)
+    print("background: opacity 0 hides the sky, the shadow catcher comes under the model")
+
+
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
@@ -250,7 +270,8 @@ def case_sections():
 
 
 CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env,
-         "references": case_references, "resize": case_resize, "sections": case_sections, "denoise": case_denoise}
+         "references": case_references, "background": case_background, "resize": case_resize, "sections": case_sections,
+         "denoise": case_denoise}
 
 if __name__ == "__main__":
     if not os.environ.get("DISPLAY"):
