@@ -179,7 +179,8 @@ void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOption
     cmd.add_option("--samples", run->samples,
                    "A:B renders exactly the sample indices A to B-1 of every pixel: a part of a render that dtoadq merge combines");
     cmd.add_option("--aov", run->aov,
-                   "First-hit AOVs as extra EXR layers, a comma-separated list of albedo, normal, depth (albedo.R/G/B, normal.X/Y/Z, depth.Z)");
+                   "AOVs as extra EXR layers, a comma-separated list of albedo, normal, depth, slot (first hit: albedo.R/G/B, normal.X/Y/Z, "
+                   "depth.Z, IndexMA.X), variance, samples (of each pixel's mean: variance.R/G/B, samples.X)");
     cmd.add_option("--denoise", run->denoise,
                    "on: the image denoised for looking at (guided by the first-hit AOVs), the raw one kept as the EXR layer noisy.R/G/B")
         ->capture_default_str();
@@ -267,8 +268,9 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     const render::FilmReadback film = renderer->film();
     const film::ImageRgb raw = renderer->image();
     std::optional<render::FirstHitAovs> first_hits;
-    if (aov_selection.any() || denoise) first_hits = renderer->first_hit_aovs();
-    std::vector<film::ImageChannel> layers = aov_selection.any() ? render::aov_channels(*first_hits, aov_selection) : std::vector<film::ImageChannel>();
+    if (aov_selection.first_hit() || denoise) first_hits = renderer->first_hit_aovs();
+    std::vector<film::ImageChannel> layers = render::aov_channels(first_hits ? &*first_hits : nullptr, film, stats.samples_per_pixel,
+                                                                  renderer->settings().width, renderer->settings().height, aov_selection);
     film::ImageRgb shown = raw;
     if (denoise) {
         shown = render::denoised(raw, *first_hits, runtime ? &*runtime : nullptr);

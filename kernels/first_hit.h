@@ -1,6 +1,7 @@
 /* First-hit AOVs: what one camera ray of a pixel's sample finds at its first surface, for the
  * EXR's albedo, normal and depth layers (render/first_hit_aovs.cpp averages them over the film's
- * samples). The camera ray is the one the sample's path began with (camera_pixel_ray from the
+ * samples) and its material slot layer (the slot of the pixel's first sample, as Cycles writes its
+ * material index on sample 0). The camera ray is the one the sample's path began with (camera_pixel_ray from the
  * same random stream), so the AOVs cover the pixel as its radiance does.
  *
  * Albedo is the directional albedo of the material seen, estimated by one BSDF sample: its weight
@@ -24,6 +25,7 @@ typedef struct FirstHit {
     float3 albedo; /* one-sample estimate of the directional albedo; 0 where the ray escapes */
     float3 normal; /* world-space shading normal, facing the camera; 0 where the ray escapes */
     float depth;   /* distance along the camera ray; 0 where it escapes (as Mitsuba's depth AOV) */
+    int slot;      /* the material slot seen; -1 where the ray escapes */
 } FirstHit;
 
 SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int pixel, int sample) {
@@ -31,6 +33,7 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     h.albedo = float3_splat(0.0f);
     h.normal = float3_splat(0.0f);
     h.depth = 0.0f;
+    h.slot = -1;
     MarchSettings march_settings = render_march_settings(settings);
     Rng rng = rng_make((uint)pixel, (uint)sample, settings->seed_lo, settings->seed_hi);
     float3 origin, direction;
@@ -43,6 +46,7 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     SurfaceHit hit = surface_hit(settings, march_settings, origin, direction, r.t, scene_distance(origin) < 0.0f);
     h.normal = hit.frame.n;
     h.depth = r.t;
+    h.slot = hit.slot;
     Material m = scene->materials[hit.slot];
     float4 u = rng_next4(&rng);
     BsdfSample b = bsdf_sample_clamped(&m, scene->measured, hit.wo, make_float3(u.x, u.y, u.z));

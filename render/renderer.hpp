@@ -19,6 +19,7 @@
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
 #include "render/film_readback.hpp"
+#include "render/film_resolve.hpp"
 #include "render/light_set.hpp"
 #include "render/render_settings.hpp"
 #include "render/sample_ranges.hpp"
@@ -39,9 +40,12 @@ struct RenderInput {
 // (directional, estimated by one BSDF sample per camera ray), world-space shading normal (the mean
 // of unit normals, not renormalised, so an edge pixel shows its mix), camera-ray distance. A ray
 // that escapes adds zeros, so a pixel partly on the background holds the covered fraction's share.
+// The material slot is not a mean: the slot the pixel's first sample sees (-1: none), as Cycles
+// writes its material index from sample 0.
 struct FirstHitAovs {
     film::ImageRgb albedo, normal;
     std::vector<float> depth;  // one per pixel
+    std::vector<int> slot;     // one per pixel
 };
 
 struct RenderStatistics {
@@ -129,12 +133,19 @@ public:
     // what was splatted onto it, over the samples per pixel. A pixel none of whose samples was
     // finite is NaN, so it shows (magenta in a PNG).
     film::ImageRgb image() const;
+    // Per pixel, as image() counts them (a pass in progress on the pixels it reached): the variance
+    // of its mean (resolve_variance) and how many finite samples the mean is over.
+    film::ImageRgb variance() const;
+    std::vector<float> sample_counts() const;
     RenderStatistics statistics() const;
     // The first-hit AOVs over the film's sample indices (sample_ranges()): the first hit is the
     // same for every integrator. Here on the host's threads with the kernels' C++ build
     // (render/first_hit_aovs.cpp); OpenClRenderer runs the same code as a kernel of its own. Not
     // during a pass in progress (std::logic_error).
-    virtual FirstHitAovs first_hit_aovs() const;
+    FirstHitAovs first_hit_aovs() const;
+    // The same over other sample indices (the viewer's views take a few, not every sample so far);
+    // any time, since it reads nothing of the film.
+    virtual FirstHitAovs first_hit_aovs(const SampleRanges& ranges) const;
     // What a launch of `count` samples from `first_sample` is given; public for host-side tools that
     // trace the same rays (the viewer's pixel inspector).
     kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
@@ -161,8 +172,9 @@ protected:
     // The environment the kernels bind: the input's, or a black one when there is none (the kernels
     // take its map and buffers either way; without an environment light nothing reads them).
     const ibl::Environment& bound_environment() const;
-    // The AOVs from each pixel's sums over the film's samples: albedo in xyz; normal in xyz, depth in w.
-    FirstHitAovs first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums) const;
+    // The AOVs from each pixel's sums over `samples` samples: albedo in xyz; normal in xyz, depth in w.
+    FirstHitAovs first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums,
+                                 std::vector<int> slots, int64_t samples) const;
     // The scene as the kernels' host build reads it (kernels/render_scene.h), over this renderer's buffers.
     kernel::RenderScene host_render_scene() const;
 
@@ -175,6 +187,8 @@ protected:
 
 private:
     void rebuild_lights();
+    // The pass in progress, as the film's resolves take it.
+    PartialPass partial_pass() const;
 
     int first_sample_ = 0;    // where a reset film starts
     SampleRanges restored_;   // the samples restore_film put on the film

@@ -341,7 +341,7 @@ cli_bad_input(NAME render.unknown_light_sampling ABSENT ${PNG} EXPECT "${E}--lig
 cli_bad_input(NAME render.unknown_light_selection ABSENT ${PNG} EXPECT "${E}--light-selection: unknown value \"random\" "
               ARGS ${RENDER} --light-selection random)
 # --aov: an unknown AOV, and AOVs asked of a PNG (no layers), stop the command before the render
-cli_bad_input(NAME render.unknown_aov ABSENT ${PNG} EXPECT "${E}--aov: unknown AOV \"albdo\" \\(expected a comma-separated list of albedo, normal, depth\\)$"
+cli_bad_input(NAME render.unknown_aov ABSENT ${PNG} EXPECT "${E}--aov: unknown AOV \"albdo\" \\(expected a comma-separated list of albedo, normal, depth, slot, variance, samples\\)$"
               ARGS ${RENDER} --aov albedo,albdo)
 cli_bad_input(NAME preview.aov_to_png ABSENT ${PNG} EXPECT "${E}--aov: AOVs are EXR layers, and .*\\.png is not an \\.exr"
               ARGS preview --size 8x8 --spp 1 --aov depth -o ${PNG})
