@@ -18,6 +18,7 @@
 #include "viewer/app.hpp"
 #include "viewer/material_edit.hpp"
 #include "viewer/scene_export.hpp"
+#include "viewer/view_modes.hpp"
 #include "viewer/window_layout.hpp"
 
 namespace lab::cli {
@@ -27,12 +28,13 @@ namespace {
 struct ViewOptions {
     RenderJobOptions job;
     std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces", window, display = "render";
-    std::vector<std::string> sets, moves, inspect, env_loads, reference_loads, resizes, open_sections;
+    std::vector<std::string> sets, moves, inspect, env_loads, reference_loads, resizes, open_sections, view_modes;
     long max_render_pixels = 512 * 512;
     TurntableOptions turntable;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
+    float error_threshold = 0.05f;
     bool stats = false, split = false, print_layout = false;
 };
 
@@ -145,6 +147,15 @@ void run_view(const ViewOptions& o) {
         scene::parse_look_dev_references(load.value, "--load-references");
         config.reference_loads.push_back(load);
     }
+    for (const std::string& text : o.view_modes) {
+        viewer::ScriptedSet mode = viewer::parse_scripted_set("view=" + text);  // NAME@FRAME
+        viewer::parse_view_mode(mode.value, "--view-mode");
+        if (o.frames == 0 && mode.frame > 0) throw InputError("--view-mode", "", "NAME@FRAME needs --frames (a scripted run)");
+        config.view_modes.push_back(mode);
+    }
+    if (!(o.error_threshold > 0.0f && o.error_threshold <= 1e6f))
+        throw InputError("--error-threshold", "", "must be a relative standard error above 0, at most 1e6");
+    config.relative_error_threshold = o.error_threshold;
     for (const std::string& text : o.inspect) {
         int x = -1, y = -1;
         char tail = 0;
@@ -222,6 +233,12 @@ void register_view(CLI::App& app) {
     cmd->add_option("--load-env", o->env_loads, "Headless: PATH@FRAME, load an environment map at a frame as the panel does (errors are shown, not fatal)");
     cmd->add_option("--load-references", o->reference_loads,
                     "Headless: LIST@FRAME, the look-dev references switched at a frame as the environment panel does (none, all, or chrome,grey,chart)");
+    cmd->add_option("--view-mode", o->view_modes,
+                    "NAME@FRAME: the view menu's choice from a frame on (NAME alone: from the start; repeatable): image, albedo, normal, "
+                    "depth, slot, samples, variance, false-colour, relative-error, gamut");
+    cmd->add_option("--error-threshold", o->error_threshold,
+                    "The relative-error view's threshold: pixels whose standard error over their mean luminance is above it are marked")
+        ->capture_default_str();
     cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
     cmd->add_flag("--split", o->split, "Start in the A/B split view (B: --compare)");
     cmd->add_option("--window", o->window, "The window's first size, WxH (default: the render's size and the panel's)");

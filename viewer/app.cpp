@@ -27,6 +27,8 @@
 #include "viewer/pixel_probe.hpp"
 #include "viewer/scene_export.hpp"
 #include "viewer/validation_badges.hpp"
+#include "viewer/view_menu.hpp"
+#include "viewer/view_modes.hpp"
 #include "viewer/window_layout.hpp"
 
 namespace lab::viewer {
@@ -113,6 +115,7 @@ int last_scripted_frame(const ViewerConfig& config) {
     for (const ScriptedSet& s : config.env_loads) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.reference_loads) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.resizes) last_frame = std::max(last_frame, s.frame + 1);
+    for (const ScriptedSet& s : config.view_modes) last_frame = std::max(last_frame, s.frame + 1);
     return last_frame;
 }
 
@@ -154,6 +157,7 @@ public:
             glfwPollEvents();
             apply_script(n);
             follow_workers();
+            worker_->want_views(needs_film_statistics(view_mode_), needs_first_hits(view_mode_));
             show_frames();
 
             ImGui_ImplOpenGL3_NewFrame();
@@ -220,6 +224,11 @@ private:
             if (worker_b_ && moved) worker_b_->submit(state_b());
             waiting_.emplace_back(submitted_, Clock::now());
         }
+        for (const ScriptedSet& s : config_.view_modes)
+            if (s.frame == n) {
+                view_mode_ = parse_view_mode(s.value, "--view-mode");  // checked before the window opened
+                retone_ = true;
+            }
         for (const ScriptedSet& s : config_.resizes) {
             if (s.frame != n) continue;
             int w = 0, h = 0;
@@ -315,7 +324,7 @@ private:
         if (worker_->take_frame(&frame_) || retone_) {
             if (frame_.image.valid()) {
                 const Clock::time_point start = Clock::now();
-                texture_.upload(film::to_srgb8(frame_.image, ui_.tone_map, ui_.display_exposure), frame_.image.width, frame_.image.height);
+                texture_.upload(view_of(frame_), frame_.image.width, frame_.image.height);
                 stats_.display_seconds.push_back(seconds_between(start, Clock::now()));
                 stats_.display_pixels.push_back(double(frame_.image.width) * double(frame_.image.height));
             }
@@ -329,6 +338,22 @@ private:
                 }
             }
         }
+    }
+
+    // The frame as the view menu's choice shows it; the image itself while the view's inputs are
+    // not there yet (view_shown_ says which).
+    std::vector<uint8_t> view_of(const RenderFrame& frame) {
+        ViewInputs in;
+        in.image = &frame.image;
+        in.first_hits = frame.first_hits.get();
+        in.variance = &frame.variance;
+        in.samples = &frame.samples;
+        in.tone_map = ui_.tone_map;
+        in.exposure_stops = ui_.display_exposure;
+        in.relative_error_threshold = error_threshold_;
+        std::vector<uint8_t> bytes = view_pixels(view_mode_, in);
+        view_shown_ = !bytes.empty();
+        return view_shown_ ? bytes : film::to_srgb8(frame.image, ui_.tone_map, ui_.display_exposure);
     }
 
     // The render in its rectangle of the render area (scaled when the render's size differs): A,
@@ -392,6 +417,8 @@ private:
         if (ImGui::Combo("window size changes", &sizing, "the render's size\0the display's scale\0")) sizing_ = DisplaySizing(sizing);
         ImGui::SameLine();
         ImGui::Text("render %dx%d", layout_.render_width, layout_.render_height);
+        retone_ |= view_menu(&view_mode_, &error_threshold_);
+        if (!view_shown_) ImGui::TextUnformatted("(the view's inputs are on their way: the image meanwhile)");
         if (next_worker_) ImGui::TextUnformatted("loading the environment map...");
         ImGui::TextWrapped("%s", worker_->status().c_str());
         const std::string error = worker_->error();
@@ -480,7 +507,7 @@ private:
     // kScriptTimeoutSeconds. Returns whether it ended.
     bool script_ended(int n, Clock::time_point now, int fb_width, int fb_height) {
         const bool current = frame_.generation >= submitted_ && frame_.scale == 1 && frame_.samples_per_pixel >= config_.min_samples &&
-                             resize_pending_[0] == 0 &&
+                             resize_pending_[0] == 0 && view_shown_ && !retone_ &&
                              (!worker_b_ || (frame_b_.scale == 1 && frame_b_.samples_per_pixel >= config_.min_samples)) && !next_worker_;
         if (script_end_ == Clock::time_point{}) script_end_ = now;
         if (current || !worker_->error().empty() || worker_->status() == "no renderer") {
@@ -548,6 +575,9 @@ private:
     std::vector<std::pair<uint64_t, Clock::time_point>> waiting_;  // scripted changes not yet on screen
     Clock::time_point last_ = Clock::now(), script_end_{};
     bool retone_ = false;
+    ViewMode view_mode_ = ViewMode::image;  // the view menu's choice (A's image; B shows its image)
+    float error_threshold_ = config_.relative_error_threshold;
+    bool view_shown_ = true;                // the texture shows view_mode_, not the image in its stead
     int picked_x_ = -1, picked_y_ = -1;  // of the render, as it is now
     std::vector<PanelSection> sections_;
     DisplaySizing sizing_ = config_.sizing;  // the panel can change it

@@ -504,6 +504,10 @@ cli_bad_input(NAME view.unknown_display EXPECT "${E}--display: unknown value \"s
 cli_bad_input(NAME view.unknown_section EXPECT "${E}--open: unknown section \"Lobes\" \\(Material, Checks, Lobe, Environment, Presets, Inspector, Help, all\\)$"
               ARGS view --open Lobes)
 cli_bad_input(NAME view.max_render_pixels_too_few EXPECT "${E}--max-render-pixels: must be in \\[64, 268435456\\]$" ARGS view --max-render-pixels 10)
+cli_bad_input(NAME view.unknown_view_mode EXPECT "${E}--view-mode: unknown view \"albedoo\" \\(expected one of image, albedo, normal, depth, slot, samples, variance, false-colour, relative-error, gamut\\)$"
+              ARGS view --frames 2 --view-mode albedoo@1)
+cli_bad_input(NAME view.error_threshold_not_positive EXPECT "${E}--error-threshold: must be a relative standard error above 0, at most 1e6$"
+              ARGS view --frames 2 --error-threshold 0)
 cli_bad_input(NAME view.move_bad_orbit EXPECT "${E}--move: orbit: expected DX,DY in pixels, got \"3\"$" ARGS view --frames 2 --move orbit=3@1)
 # The window itself, under Xvfb with Mesa's software OpenGL when there is no DISPLAY (skipped, exit
 # 77, when neither is there). The Debian python3: the PNGs are read with its matplotlib.
@@ -511,7 +515,7 @@ find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT VIEW_TEST_PYTHON)
   find_program(VIEW_TEST_PYTHON python3)
 endif()
-foreach(view_case accumulate set preset export env references resize sections)
+foreach(view_case accumulate set preset export env references resize sections views)
   add_test(NAME cli.view.${view_case}
            COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
   # One at a time: xvfb-run -a started twice at once can pick the same display number.
