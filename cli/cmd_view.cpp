@@ -17,6 +17,8 @@
 #include "scene/test_model.hpp"
 #include "viewer/app.hpp"
 #include "viewer/material_edit.hpp"
+#include "render/aov_layers.hpp"
+#include "render/progressive.hpp"
 #include "viewer/scene_export.hpp"
 #include "viewer/view_modes.hpp"
 #include "viewer/window_layout.hpp"
@@ -35,6 +37,7 @@ struct ViewOptions {
     double chunk_ms = 33.0;
     float exposure = 0.0f;
     float error_threshold = 0.05f;
+    std::string save_exr, save_layers;
     bool stats = false, split = false, print_layout = false;
 };
 
@@ -156,6 +159,14 @@ void run_view(const ViewOptions& o) {
     if (!(o.error_threshold > 0.0f && o.error_threshold <= 1e6f))
         throw InputError("--error-threshold", "", "must be a relative standard error above 0, at most 1e6");
     config.relative_error_threshold = o.error_threshold;
+    if (!o.save_exr.empty()) {
+        if (o.frames == 0) throw InputError("--save-exr", "", "needs --frames (a scripted run; the panel's \"save EXR\" saves by hand)");
+        config.save_exr = o.save_exr;
+        config.save_layers = render::parse_aov_selection(o.save_layers, o.save_exr, "--save-layers");
+        if (!render::is_exr_path(o.save_exr)) throw InputError("--save-exr", "", o.save_exr + " is not an .exr");
+    } else if (!o.save_layers.empty()) {
+        throw InputError("--save-layers", "", "needs --save-exr");
+    }
     for (const std::string& text : o.inspect) {
         int x = -1, y = -1;
         char tail = 0;
@@ -239,6 +250,9 @@ void register_view(CLI::App& app) {
     cmd->add_option("--error-threshold", o->error_threshold,
                     "The relative-error view's threshold: pixels whose standard error over their mean luminance is above it are marked")
         ->capture_default_str();
+    cmd->add_option("--save-exr", o->save_exr, "Headless: the frame shown at the end as an EXR (and a PNG beside it), with --save-layers");
+    cmd->add_option("--save-layers", o->save_layers,
+                    "The --save-exr file's AOV layers, as --aov lists them: albedo, normal, depth, slot, variance, samples");
     cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
     cmd->add_flag("--split", o->split, "Start in the A/B split view (B: --compare)");
     cmd->add_option("--window", o->window, "The window's first size, WxH (default: the render's size and the panel's)");

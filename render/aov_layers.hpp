@@ -22,18 +22,22 @@ struct AovSelection {
     bool any() const { return first_hit() || variance || samples; }
 };
 
-// The words of --aov, in the order their layers are written.
-const std::vector<std::string>& aov_words();
+// Parses a comma-separated list of albedo, normal, depth, slot, variance, samples ("" selects
+// none). Throws lab::InputError(option, ...) naming an unknown word, and when AOVs are asked of an
+// output that holds no layers (`output` not an EXR), before anything is rendered.
+AovSelection parse_aov_selection(const std::string& text, const std::string& output, const std::string& option = "--aov");
 
-// Parses a comma-separated list of aov_words() ("" selects none). Throws lab::InputError("--aov",
-// ...) naming an unknown word, and when AOVs are asked of an output that holds no layers (`output`
-// not an EXR), before anything is rendered.
-AovSelection parse_aov_selection(const std::string& text, const std::string& output);
-
-// The selected AOVs as EXR channels, in the order of aov_words(): the first-hit ones from
+// The selected AOVs as EXR channels, in the order albedo, normal, depth, slot, variance, samples: the first-hit ones from
 // `first_hits` (needed when selection.first_hit()), the others from the film of
 // `samples_per_pixel` complete passes.
 std::vector<film::ImageChannel> aov_channels(const FirstHitAovs* first_hits, const FilmReadback& film, int samples_per_pixel, int width,
                                              int height, const AovSelection& selection);
+
+// Its two parts, for callers that hold the film's statistics already (the viewer's export): the
+// selected first-hit layers, and the selected variance and samples layers from the variance of
+// each pixel's mean and its finite sample count.
+std::vector<film::ImageChannel> first_hit_channels(const FirstHitAovs& first_hits, const AovSelection& selection);
+std::vector<film::ImageChannel> film_statistics_channels(const film::ImageRgb& variance, const std::vector<float>& samples,
+                                                         const AovSelection& selection);
 
 }  // namespace lab::render

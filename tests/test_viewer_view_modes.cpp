@@ -93,21 +93,25 @@ TEST_CASE("View modes: albedo, normal, depth and slot show the first-hit AOVs", 
     CHECK(pixel(slot, 3) == std::array<uint8_t, 3>{0, 0, 0});
 }
 
-TEST_CASE("View modes: samples over the largest count, the mean's standard error over the largest", "[viewer][view-modes]") {
+TEST_CASE("View modes: samples over the largest count, the mean's standard error over its 99th percentile", "[viewer][view-modes]") {
     Frame f;
     f.samples = {8.0f, 4.0f, 8.0f, 0.0f};
     const std::vector<uint8_t> samples = lab::viewer::view_pixels(ViewMode::samples, f.inputs());
     CHECK(pixel(samples, 0) == grey(1.0f));
     CHECK(pixel(samples, 1) == grey(0.5f));
     CHECK(pixel(samples, 3) == grey(0.0f));
-    f.variance.set(0, 0, 4.0f, 4.0f, 4.0f);  // standard error 2 (the luminance weights sum to 1)
-    f.variance.set(1, 0, 1.0f, 1.0f, 1.0f);  // 1
-    f.variance.set(3, 0, kNaN, kNaN, kNaN);  // fewer than two samples
-    const std::vector<uint8_t> variance = lab::viewer::view_pixels(ViewMode::variance, f.inputs());
-    CHECK(pixel(variance, 0) == grey(1.0f));
-    CHECK(pixel(variance, 1) == grey(std::sqrt(0.5f)));
-    CHECK(pixel(variance, 2) == grey(0.0f));
+    f.variance.set(0, 0, 4.0f, 4.0f, 4.0f);     // standard error 2 (the luminance weights sum to 1)
+    f.variance.set(1, 0, 1.0f, 1.0f, 1.0f);     // 1: the 99th percentile of 2, 1, 0.5
+    f.variance.set(2, 0, 0.25f, 0.25f, 0.25f);  // 0.5
+    f.variance.set(3, 0, kNaN, kNaN, kNaN);     // fewer than two samples
+    std::vector<uint8_t> variance = lab::viewer::view_pixels(ViewMode::variance, f.inputs());
+    CHECK(pixel(variance, 0) == grey(1.0f));  // above the percentile: white
+    CHECK(pixel(variance, 1) == grey(1.0f));
+    CHECK(pixel(variance, 2) == grey(std::sqrt(0.5f)));
     CHECK(pixel(variance, 3) == lab::viewer::kNonFiniteMagenta);
+    f.variance.set(2, 0, 0.0f, 0.0f, 0.0f);
+    variance = lab::viewer::view_pixels(ViewMode::variance, f.inputs());
+    CHECK(pixel(variance, 2) == grey(0.0f));
     const float v[3] = {0.04f, 0.01f, 0.09f};
     CHECK(lab::viewer::luminance_standard_error(v) == Approx(0.2126 * 0.2 + 0.7152 * 0.1 + 0.0722 * 0.3).epsilon(1e-6));
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <optional>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,7 @@
 #include "viewer/pixel_probe.hpp"
 #include "viewer/scene_export.hpp"
 #include "viewer/validation_badges.hpp"
+#include "viewer/view_export.hpp"
 #include "viewer/view_menu.hpp"
 #include "viewer/view_modes.hpp"
 #include "viewer/window_layout.hpp"
@@ -157,8 +159,9 @@ public:
             glfwPollEvents();
             apply_script(n);
             follow_workers();
-            worker_->want_views(needs_film_statistics(view_mode_), needs_first_hits(view_mode_));
+            want_views();
             show_frames();
+            save_pending_exr();
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
@@ -340,6 +343,30 @@ private:
         }
     }
 
+    // What the view, a pending "save EXR" and the script's --save-exr need of the worker.
+    void want_views() {
+        render::AovSelection layers = config_.save_layers;
+        if (pending_exr_) {
+            const render::AovSelection& p = pending_exr_->second;
+            layers.albedo |= p.albedo, layers.normal |= p.normal, layers.depth |= p.depth, layers.slot |= p.slot;
+            layers.variance |= p.variance, layers.samples |= p.samples;
+        }
+        worker_->want_views(needs_film_statistics(view_mode_) || layers.variance || layers.samples,
+                            needs_first_hits(view_mode_) || layers.first_hit());
+    }
+
+    // The panel's "save EXR" once the frame holds its layers (they are asked for when it is pressed).
+    void save_pending_exr() {
+        if (!pending_exr_ || !frame_has_layers(frame_, pending_exr_->second)) return;
+        try {
+            save_frame_exr(pending_exr_->first, frame_, pending_exr_->second, ui_.tone_map, ui_.display_exposure);
+            ui_.message = "wrote " + pending_exr_->first;
+        } catch (const std::exception& e) {
+            ui_.message = e.what();
+        }
+        pending_exr_.reset();
+    }
+
     // The frame as the view menu's choice shows it; the image itself while the view's inputs are
     // not there yet (view_shown_ says which).
     std::vector<uint8_t> view_of(const RenderFrame& frame) {
@@ -418,6 +445,14 @@ private:
         ImGui::SameLine();
         ImGui::Text("render %dx%d", layout_.render_width, layout_.render_height);
         retone_ |= view_menu(&view_mode_, &error_threshold_);
+        if (save_exr_controls(exr_path_, sizeof exr_path_, exr_layers_, sizeof exr_layers_)) {
+            try {
+                pending_exr_.emplace(exr_path_, render::parse_aov_selection(exr_layers_, exr_path_, "save EXR"));
+                ui_.message = "saving " + std::string(exr_path_) + " once the frame has its layers";
+            } catch (const std::exception& e) {
+                ui_.message = e.what();
+            }
+        }
         if (!view_shown_) ImGui::TextUnformatted("(the view's inputs are on their way: the image meanwhile)");
         if (next_worker_) ImGui::TextUnformatted("loading the environment map...");
         ImGui::TextWrapped("%s", worker_->status().c_str());
@@ -508,10 +543,15 @@ private:
     bool script_ended(int n, Clock::time_point now, int fb_width, int fb_height) {
         const bool current = frame_.generation >= submitted_ && frame_.scale == 1 && frame_.samples_per_pixel >= config_.min_samples &&
                              resize_pending_[0] == 0 && view_shown_ && !retone_ &&
+                             (config_.save_exr.empty() || frame_has_layers(frame_, config_.save_layers)) &&
                              (!worker_b_ || (frame_b_.scale == 1 && frame_b_.samples_per_pixel >= config_.min_samples)) && !next_worker_;
         if (script_end_ == Clock::time_point{}) script_end_ = now;
         if (current || !worker_->error().empty() || worker_->status() == "no renderer") {
             if (!config_.screenshot.empty()) write_screenshot(config_.screenshot, fb_width, fb_height);
+            if (!config_.save_exr.empty() && current) {
+                save_frame_exr(config_.save_exr, frame_, config_.save_layers, ui_.tone_map, ui_.display_exposure);
+                std::printf("wrote %s\n", config_.save_exr.c_str());
+            }
             glfwSwapBuffers(window_.get());
             std::printf("view: %d frames, %d spp, %.3g samples/s on %s\n", n + 1, frame_.samples_per_pixel, frame_.samples_per_second,
                         worker_->device_description().c_str());
@@ -578,6 +618,9 @@ private:
     ViewMode view_mode_ = ViewMode::image;  // the view menu's choice (A's image; B shows its image)
     float error_threshold_ = config_.relative_error_threshold;
     bool view_shown_ = true;                // the texture shows view_mode_, not the image in its stead
+    char exr_path_[512] = "view.exr";
+    char exr_layers_[128] = "albedo,normal,depth,slot,variance,samples";
+    std::optional<std::pair<std::string, render::AovSelection>> pending_exr_;  // "save EXR" pressed, waiting for its layers
     int picked_x_ = -1, picked_y_ = -1;  // of the render, as it is now
     std::vector<PanelSection> sections_;
     DisplaySizing sizing_ = config_.sizing;  // the panel can change it

@@ -147,21 +147,27 @@ std::vector<uint8_t> view_pixels(ViewMode mode, const ViewInputs& in) {
         return out;
     }
     case ViewMode::variance: {
-        // The mean luminance's standard error over the image's largest, its square root for contrast;
-        // a pixel with fewer than two samples (no estimate) magenta.
-        std::vector<float> error(pixels);
-        float most = 0.0f;
+        // The mean luminance's standard error over the image's 99th percentile (a few fireflies would
+        // leave the rest black under the largest), its square root for contrast; a pixel with fewer
+        // than two samples (no estimate) magenta.
+        std::vector<float> error(pixels), finite;
         for (size_t p = 0; p < pixels; ++p) {
             const float* v = in.variance->rgb.data() + 3 * p;
             error[p] = finite3(v) ? luminance_standard_error(v) : -1.0f;
-            most = std::max(most, error[p]);
+            if (error[p] >= 0.0f) finite.push_back(error[p]);
+        }
+        float most = 0.0f;
+        if (!finite.empty()) {
+            const auto at = finite.begin() + std::ptrdiff_t((finite.size() - 1) * 99 / 100);
+            std::nth_element(finite.begin(), at, finite.end());
+            most = *at;
         }
         for (size_t p = 0; p < pixels; ++p) {
             if (error[p] < 0.0f) {
                 put(&out, p, kNonFiniteMagenta);
                 continue;
             }
-            const uint8_t g = code(most > 0.0f ? std::sqrt(error[p] / most) : 0.0f);
+            const uint8_t g = code(most > 0.0f ? std::sqrt(std::min(error[p] / most, 1.0f)) : 0.0f);
             put(&out, p, {g, g, g});
         }
         return out;

@@ -508,6 +508,8 @@ cli_bad_input(NAME view.unknown_view_mode EXPECT "${E}--view-mode: unknown view 
               ARGS view --frames 2 --view-mode albedoo@1)
 cli_bad_input(NAME view.error_threshold_not_positive EXPECT "${E}--error-threshold: must be a relative standard error above 0, at most 1e6$"
               ARGS view --frames 2 --error-threshold 0)
+cli_bad_input(NAME view.save_layers_without_exr EXPECT "${E}--save-layers: needs --save-exr$" ARGS view --frames 2 --save-layers depth)
+cli_bad_input(NAME view.save_layers_unknown EXPECT "${E}--save-layers: unknown AOV \"dpth\" " ARGS view --frames 2 --save-exr v.exr --save-layers dpth)
 cli_bad_input(NAME view.move_bad_orbit EXPECT "${E}--move: orbit: expected DX,DY in pixels, got \"3\"$" ARGS view --frames 2 --move orbit=3@1)
 # The window itself, under Xvfb with Mesa's software OpenGL when there is no DISPLAY (skipped, exit
 # 77, when neither is there). The Debian python3: the PNGs are read with its matplotlib.

@@ -229,7 +229,8 @@ def case_views():
     the first-hit views black on the sky, the slot view the model's slot colour, samples the spp,
     the sky's false colour its band (luminance 0.40: 1.15 stops above 18 % grey), its variance
     none (every sample is the sky), the relative-error view marking the model at 2 spp and not the
-    sky, the gamut view marking the sky once the exposure takes its blue above 1."""
+    sky, the gamut view marking the sky once the exposure takes its blue above 1; --save-exr writes
+    the chosen layers."""
     def shot(mode, extra=()):
         name = "view_%s.png" % mode
         view(["--seed", "1", "--view-mode", "%s@1" % mode] + list(extra), name)
@@ -271,6 +272,20 @@ def case_views():
     v = shot("gamut", ["--exposure", "1"])
     if red_share(v, CORNERS[0]) < 1.0:
         fail("the gamut view does not mark the sky whose blue is 2 after the exposure: %s" % v[2, 2])
+    # --save-exr: the frame with the chosen layers, named as render --aov names them
+    out = view(["--seed", "1", "--save-exr", "views.exr", "--save-layers", "albedo,depth,slot,variance,samples"], "save.png")
+    if "wrote views.exr" not in out:
+        fail("--save-exr wrote nothing: " + out)
+    info = subprocess.run(["oiiotool", "--info", "-v", "views.exr"], cwd=SCRATCH, capture_output=True, text=True).stdout
+    channels = re.search(r"channel list: (.*)", info)
+    expected = "R, G, B, IndexMA.X, albedo.R, albedo.G, albedo.B, depth.Z, samples.X, variance.R, variance.G, variance.B"
+    if not channels or channels.group(1).strip() != expected:
+        fail("views.exr's channels: %s, expected %s" % (channels.group(1) if channels else info, expected))
+    stats = subprocess.run(["oiiotool", "views.exr", "--ch", "samples.X", "--printstats"], cwd=SCRATCH, capture_output=True,
+                           text=True).stdout
+    low = re.search(r"Stats Min: ([0-9.]+)", stats)
+    if not low or float(low.group(1)) < 2.0:
+        fail("views.exr's samples.X is under the 2 spp the run waited for: " + stats)
 
 
 def red_share(image, region):
