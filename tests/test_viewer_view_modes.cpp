@@ -84,8 +84,8 @@ TEST_CASE("View modes: albedo, normal, depth and slot show the first-hit AOVs", 
     CHECK(pixel(normal, 2) == std::array<uint8_t, 3>{0, 0, 0});  // no surface
     const std::vector<uint8_t> depth = lab::viewer::view_pixels(ViewMode::depth, in);
     CHECK(pixel(depth, 0) == grey(1.0f));  // nearest
-    CHECK(pixel(depth, 1) == grey(0.6f));
-    CHECK(pixel(depth, 2) == grey(0.2f));  // farthest
+    CHECK(pixel(depth, 1) == grey(2.0f / 3.0f));
+    CHECK(pixel(depth, 2) == grey(0.5f));  // twice as far
     CHECK(pixel(depth, 3) == grey(0.0f));  // no surface
     const std::vector<uint8_t> slot = lab::viewer::view_pixels(ViewMode::slot, in);
     CHECK(pixel(slot, 0) != pixel(slot, 1));

@@ -65,7 +65,7 @@ bool view_menu(ViewMode* mode, float* relative_error_threshold) {
     case ViewMode::gamut: ImGui::TextUnformatted("magenta: NaN/inf   cyan: negative   red: above 1 after exposure"); break;
     case ViewMode::variance: ImGui::TextUnformatted("the mean's standard error (sqrt scale to the 99th percentile); magenta: < 2 samples"); break;
     case ViewMode::samples: ImGui::TextUnformatted("finite samples per pixel over the largest count"); break;
-    case ViewMode::depth: ImGui::TextUnformatted("near white to far dark over the image's depths; no surface black"); break;
+    case ViewMode::depth: ImGui::TextUnformatted("nearest / depth: the nearest white, twice as far half; no surface black"); break;
     case ViewMode::normal: ImGui::TextUnformatted("world-space normal as (n + 1) / 2"); break;
     default: break;
     }

@@ -121,14 +121,16 @@ std::vector<uint8_t> view_pixels(ViewMode mode, const ViewInputs& in) {
         }
         return out;
     case ViewMode::depth: {
-        // Near white to far dark grey over the image's range of depths; no surface black.
-        float lo = kInf, hi = 0.0f;
+        // Inverse depth over the nearest's: the nearest white, twice as far half as bright, so a
+        // ground running to the horizon leaves the depth range of a model near the camera visible
+        // (a linear ramp over the whole range would whiten it); no surface black.
+        float lo = kInf;
         for (float d : hits->depth)
-            if (d > 0.0f) lo = std::min(lo, d), hi = std::max(hi, d);
+            if (d > 0.0f) lo = std::min(lo, d);
         for (size_t p = 0; p < pixels; ++p) {
             const float d = hits->depth[p];
             if (!(d > 0.0f)) continue;
-            const uint8_t g = code(1.0f - 0.8f * (hi > lo ? (d - lo) / (hi - lo) : 0.0f));
+            const uint8_t g = code(lo / d);
             put(&out, p, {g, g, g});
         }
         return out;
