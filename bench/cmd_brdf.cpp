@@ -243,6 +243,7 @@ void register_bench(CLI::App& app) {
     register_bench_compare(*bench);
     register_bench_vectorization(*bench);
     register_bench_breakdown(*bench);
+    register_bench_denoise(*bench);
 }
 
 }  // namespace lab::cli

@@ -93,11 +93,6 @@ double render_paths_per_second(const std::string& exe, const BenchCompareCommand
     return double(spp) * double(image.width) * double(image.height) / s;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 void run_bench_compare(const BenchCompareCommand& c) {
     if (::access(c.other.c_str(), X_OK) != 0) throw InputError(c.other, "", "is not an executable file");
     check_render_seconds(c.seconds);

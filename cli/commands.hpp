@@ -29,5 +29,6 @@ void register_bench_compare(CLI::App& bench);
 void register_bench_vectorization(CLI::App& bench);
 // `bench breakdown`, likewise
 void register_bench_breakdown(CLI::App& bench);
+void register_bench_denoise(CLI::App& bench);
 
 }  // namespace lab::cli

@@ -16,16 +16,14 @@ using namespace single_source;
 
 namespace {
 
-using single_source::float4;
-
-static_assert(sizeof(float4) == sizeof(std::array<float, 4>), "the buffers' float4 must be four packed floats, as OpenCL's");
+static_assert(sizeof(std::array<float, 4>) == 4 * sizeof(float), "the buffers' pixels must be four packed floats, as the device's");
 
 // An albedo channel small enough to divide noise up unboundedly: such a pixel is filtered as it is.
 constexpr float kMinAlbedo = 1e-3f;
 
 float demodulator(float albedo) { return albedo > kMinAlbedo ? albedo : 1.0f; }
 
-const float4* as_float4(const std::vector<std::array<float, 4>>& v) { return reinterpret_cast<const float4*>(v.data()); }
+const float* as_floats(const std::vector<std::array<float, 4>>& v) { return v.front().data(); }
 
 // SVGF's spatial estimate (demodulate's comment): 7 x 7, the same surface only.
 void estimate_variance(AtrousBuffers* b) {
@@ -50,7 +48,7 @@ void estimate_variance(AtrousBuffers* b) {
                         std::fabs(gq[3] - gp[3]) > same_depth * gp[3])
                         continue;
                     const std::array<float, 4>& c = b->illumination[q];
-                    const double l = atrous::atrous_luminance(float4(c[0], c[1], c[2], 0.0f));
+                    const double l = atrous::atrous_luminance(c[0], c[1], c[2]);
                     sum += l;
                     sum_sq += l * l;
                     ++count;
@@ -78,11 +76,11 @@ AtrousBuffers demodulate(const ImageRgb& radiance, const DenoiseGuide& guide) {
         const float* c = radiance.rgb.data() + 3 * p;
         const float* a = guide.albedo.rgb.data() + 3 * p;
         const float* nn = guide.normal.rgb.data() + 3 * p;
-        const float4 albedo(demodulator(a[0]), demodulator(a[1]), demodulator(a[2]), 0.0f);
-        const float albedo_luminance = atrous::atrous_luminance(albedo);
+        const float albedo[3] = {demodulator(a[0]), demodulator(a[1]), demodulator(a[2])};
+        const float albedo_luminance = atrous::atrous_luminance(albedo[0], albedo[1], albedo[2]);
         // the variance of the illumination's luminance, the albedo taken as exact
         const float variance = guide.variance.empty() ? 0.0f : guide.variance[p] / (albedo_luminance * albedo_luminance);
-        b.illumination[p] = {c[0] / albedo.x, c[1] / albedo.y, c[2] / albedo.z, variance};
+        b.illumination[p] = {c[0] / albedo[0], c[1] / albedo[1], c[2] / albedo[2], variance};
         const float length = std::sqrt(nn[0] * nn[0] + nn[1] * nn[1] + nn[2] * nn[2]);
         const float inv = length > 0.0f ? 1.0f / length : 0.0f;
         b.guide[p] = {nn[0] * inv, nn[1] * inv, nn[2] * inv, guide.depth[p]};
@@ -105,8 +103,8 @@ void atrous_passes(AtrousBuffers* b, const DenoiseOptions& options) {
             atrous::atrous_pass(b->width, b->height, 1 << i, options.sigma_normal, options.sigma_depth, options.sigma_luminance);
         for (int y = 0; y < b->height; ++y)
             for (int x = 0; x < b->width; ++x) {
-                const float4 v = atrous::atrous_pixel(&pass, as_float4(b->illumination), as_float4(b->guide), x, y);
-                next[size_t(y) * size_t(b->width) + size_t(x)] = {v.x, v.y, v.z, v.w};
+                atrous::atrous_pixel(&pass, as_floats(b->illumination), as_floats(b->guide), x, y,
+                                     next[size_t(y) * size_t(b->width) + size_t(x)].data());
             }
         b->illumination.swap(next);
     }

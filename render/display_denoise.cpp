@@ -1,21 +1,29 @@
 #include "render/display_denoise.hpp"
 
-#include "kernels/host/denoise_device.hpp"
-
 namespace lab::render {
 
-film::ImageRgb denoised(const film::ImageRgb& radiance, const FirstHitAovs& aovs, const opencl::Runtime* runtime) {
+film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs) {
     film::DenoiseGuide guide;
     guide.albedo = aovs.albedo;
     guide.normal = aovs.normal;
     guide.depth = aovs.depth;
+    return guide;
+}
+
+film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const kernels::DeviceDenoiser* device,
+                        const film::DenoiseOptions& options) {
     film::AtrousBuffers buffers = film::demodulate(radiance, guide);
-    const film::DenoiseOptions options;
-    if (runtime)
-        kernels::DeviceDenoiser(*runtime).passes(&buffers, options);
+    if (device)
+        device->passes(&buffers, options);
     else
         film::atrous_passes(&buffers, options);
     return film::remodulate(buffers, guide);
+}
+
+film::ImageRgb denoised(const film::ImageRgb& radiance, const FirstHitAovs& aovs, const opencl::Runtime* runtime) {
+    if (!runtime) return denoised(radiance, denoise_guide(aovs), nullptr);
+    const kernels::DeviceDenoiser device(*runtime);
+    return denoised(radiance, denoise_guide(aovs), &device);
 }
 
 std::vector<film::ImageChannel> noisy_channels(const film::ImageRgb& radiance) {

@@ -8,13 +8,19 @@
 
 #include "film/denoise.hpp"
 #include "film/image_output.hpp"
+#include "kernels/host/denoise_device.hpp"
 #include "opencl/runtime.hpp"
 #include "render/renderer.hpp"
 
 namespace lab::render {
 
-// The denoised image: the AOVs as the guide (the variance estimated from the image), the passes on
-// `runtime`'s device when given, else on the host.
+// The filter's guide from the render's first-hit AOVs (the variance left to be estimated from the image).
+film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs);
+
+// The denoised image: its passes on `device` when given, else on the host.
+film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const kernels::DeviceDenoiser* device,
+                        const film::DenoiseOptions& options = {});
+// The same guided by the AOVs, on `runtime`'s device when given (the filter built there), else on the host.
 film::ImageRgb denoised(const film::ImageRgb& radiance, const FirstHitAovs& aovs, const opencl::Runtime* runtime);
 
 // The raw image as EXR channels noisy.R, noisy.G, noisy.B.

@@ -32,14 +32,11 @@ void render_for(render::Renderer& renderer, double seconds, const std::function<
     }
 }
 
-Reference render_reference(const RendererFactory& make, render::RenderInput input, double seconds) {
-    input.settings.seed += 1000003;
-    std::unique_ptr<render::Renderer> half_a = make(input);
-    input.settings.seed += 1;
-    std::unique_ptr<render::Renderer> half_b = make(input);
-    render_for(*half_a, seconds / 2, [](double) {});
-    render_for(*half_b, seconds / 2, [](double) {});
-    film::ImageRgb a = half_a->image(), b = half_b->image();
+namespace {
+
+// The mean of two renders with other seeds, and its own noise from their difference.
+Reference reference_from_halves(const render::Renderer& half_a, const render::Renderer& half_b) {
+    film::ImageRgb a = half_a.image(), b = half_b.image();
     Reference r;
     r.image = film::ImageRgb(a.width, a.height);
     for (size_t k = 0; k < a.rgb.size(); ++k) r.image.rgb[k] = 0.5f * (a.rgb[k] + b.rgb[k]);
@@ -47,9 +44,35 @@ Reference render_reference(const RendererFactory& make, render::RenderInput inpu
     const film::ImageError halves = film::image_error(a, b);
     r.noise = halves.rmse_mean / 2.0;
     r.relative_noise = halves.relative_rmse_mean / 2.0;
-    r.half_stats = half_a->statistics();
-    r.samples_per_pixel = r.half_stats.samples_per_pixel + half_b->statistics().samples_per_pixel;
+    r.half_stats = half_a.statistics();
+    r.samples_per_pixel = r.half_stats.samples_per_pixel + half_b.statistics().samples_per_pixel;
     return r;
+}
+
+// The halves' inputs: seeds no run of the benches uses.
+render::RenderInput half_input(render::RenderInput input, int half) {
+    input.settings.seed += 1000003 + unsigned(half);
+    return input;
+}
+
+}  // namespace
+
+Reference render_reference(const RendererFactory& make, render::RenderInput input, double seconds) {
+    std::unique_ptr<render::Renderer> half_a = make(half_input(input, 0));
+    std::unique_ptr<render::Renderer> half_b = make(half_input(input, 1));
+    render_for(*half_a, seconds / 2, [](double) {});
+    render_for(*half_b, seconds / 2, [](double) {});
+    return reference_from_halves(*half_a, *half_b);
+}
+
+Reference render_reference_samples(const RendererFactory& make, const render::RenderInput& input, int samples_per_pixel) {
+    std::unique_ptr<render::Renderer> half_a = make(half_input(input, 0));
+    std::unique_ptr<render::Renderer> half_b = make(half_input(input, 1));
+    for (render::Renderer* half : {half_a.get(), half_b.get()}) {
+        half->set_samples_per_launch(std::max(1, std::min(samples_per_pixel / 2, 16)));
+        half->add_samples(samples_per_pixel / 2);
+    }
+    return reference_from_halves(*half_a, *half_b);
 }
 
 std::vector<EqualTimeResult> run_equal_time(const RendererFactory& make, const std::vector<EqualTimeRun>& runs, const Reference& reference,

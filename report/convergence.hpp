@@ -39,6 +39,8 @@ struct Reference {
 
 // Two renders of `input` with other seeds for seconds / 2 each, averaged.
 Reference render_reference(const RendererFactory& make, render::RenderInput input, double seconds);
+// The same from two renders of samples_per_pixel / 2 samples each (at least 2 in all).
+Reference render_reference_samples(const RendererFactory& make, const render::RenderInput& input, int samples_per_pixel);
 
 struct EqualTimeRun {
     std::string name;

@@ -41,8 +41,8 @@ TEST_CASE("every bundled preset loads and round-trips through JSON", "[presets]"
             if (param.field) CHECK(again.material.*param.field == Approx(p.material.*param.field).margin(1e-6));
         for (int c = 0; c < 3; ++c) CHECK(again.material.albedo[c] == Approx(p.material.albedo[c]));
     }
-    // the lab ships at least these: conductors, dielectrics, skin, glass and the 2017 model
-    for (const char* name : {"gold", "copper", "brushed_aluminium", "glossy_plastic", "rubber", "skin", "glass", "dtoadq2017_typical"})
+    // the lab ships at least these: conductors, dielectrics, a matte clay, skin, glass and the 2017 model
+    for (const char* name : {"gold", "copper", "brushed_aluminium", "glossy_plastic", "rubber", "clay", "skin", "glass", "dtoadq2017_typical"})
         CHECK(fs::exists(fs::path("presets") / (std::string(name) + ".json")));
     CHECK(count >= 8);
 }

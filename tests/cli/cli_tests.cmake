@@ -178,6 +178,12 @@ cli_bad_input(NAME bench_brdf.presets_missing EXPECT "${E}/nonexistent-dtoadq: -
 cli_bad_input(NAME bench_brdf.bad_preset_in_folder EXPECT "${E}${D}/[a-z_]+\\.json: "
               ARGS bench brdf --presets ${D})
 
+# --- bench denoise (checks its options before it renders) -----------------------------------------
+cli_bad_input(NAME bench_denoise.reference_spp EXPECT "${E}--reference-spp: 16: must be at least twice the largest --spp and at most 2\\^20$"
+              ARGS bench denoise --spp 1,4,16 --reference-spp 16)
+cli_bad_input(NAME bench_denoise.spp EXPECT "${E}--spp: 0: must be in \\[1, 65536\\]$"
+              ARGS bench denoise --spp 0,4)
+
 cli_bad_input(NAME no_subcommand EXPECT "${E}.*subcommand"
               ARGS)
 
