@@ -17,7 +17,10 @@
 #include "scene/test_model.hpp"
 #include "viewer/app.hpp"
 #include "viewer/material_edit.hpp"
+#include "render/aov_layers.hpp"
+#include "render/progressive.hpp"
 #include "viewer/scene_export.hpp"
+#include "viewer/view_modes.hpp"
 #include "viewer/window_layout.hpp"
 
 namespace lab::cli {
@@ -27,12 +30,14 @@ namespace {
 struct ViewOptions {
     RenderJobOptions job;
     std::string compare, slot, screenshot, save_preset, export_to, tone_map = "aces", window, display = "render", denoise = "on";
-    std::vector<std::string> sets, moves, inspect, env_loads, reference_loads, resizes, open_sections;
+    std::vector<std::string> sets, moves, inspect, env_loads, reference_loads, resizes, open_sections, view_modes;
     long max_render_pixels = 512 * 512;
     TurntableOptions turntable;
     int frames = 0, min_spp = 1, max_spp = 1 << 16;
     double chunk_ms = 33.0;
     float exposure = 0.0f;
+    float error_threshold = 0.05f;
+    std::string save_exr, save_layers;
     bool stats = false, split = false, print_layout = false;
 };
 
@@ -148,6 +153,23 @@ void run_view(const ViewOptions& o) {
         scene::parse_look_dev_references(load.value, "--load-references");
         config.reference_loads.push_back(load);
     }
+    for (const std::string& text : o.view_modes) {
+        viewer::ScriptedSet mode = viewer::parse_scripted_set("view=" + text);  // NAME@FRAME
+        viewer::parse_view_mode(mode.value, "--view-mode");
+        if (o.frames == 0 && mode.frame > 0) throw InputError("--view-mode", "", "NAME@FRAME needs --frames (a scripted run)");
+        config.view_modes.push_back(mode);
+    }
+    if (!(o.error_threshold > 0.0f && o.error_threshold <= 1e6f))
+        throw InputError("--error-threshold", "", "must be a relative standard error above 0, at most 1e6");
+    config.relative_error_threshold = o.error_threshold;
+    if (!o.save_exr.empty()) {
+        if (o.frames == 0) throw InputError("--save-exr", "", "needs --frames (a scripted run; the panel's \"save EXR\" saves by hand)");
+        config.save_exr = o.save_exr;
+        config.save_layers = render::parse_aov_selection(o.save_layers, o.save_exr, "--save-layers");
+        if (!render::is_exr_path(o.save_exr)) throw InputError("--save-exr", "", o.save_exr + " is not an .exr");
+    } else if (!o.save_layers.empty()) {
+        throw InputError("--save-layers", "", "needs --save-exr");
+    }
     for (const std::string& text : o.inspect) {
         int x = -1, y = -1;
         char tail = 0;
@@ -226,6 +248,15 @@ void register_view(CLI::App& app) {
     cmd->add_option("--load-env", o->env_loads, "Headless: PATH@FRAME, load an environment map at a frame as the panel does (errors are shown, not fatal)");
     cmd->add_option("--load-references", o->reference_loads,
                     "Headless: LIST@FRAME, the look-dev references switched at a frame as the environment panel does (none, all, or chrome,grey,chart,catcher)");
+    cmd->add_option("--view-mode", o->view_modes,
+                    "NAME@FRAME: the view menu's choice from a frame on (NAME alone: from the start; repeatable): image, albedo, normal, "
+                    "depth, slot, samples, variance, false-colour, relative-error, gamut");
+    cmd->add_option("--error-threshold", o->error_threshold,
+                    "The relative-error view's threshold: pixels whose standard error over their mean luminance is above it are marked")
+        ->capture_default_str();
+    cmd->add_option("--save-exr", o->save_exr, "Headless: the frame shown at the end as an EXR (and a PNG beside it), with --save-layers");
+    cmd->add_option("--save-layers", o->save_layers,
+                    "The --save-exr file's AOV layers, as --aov lists them: albedo, normal, depth, slot, variance, samples");
     cmd->add_option("--inspect", o->inspect, "Headless: X,Y, a pixel whose inspector lines are printed at the end (repeatable)");
     cmd->add_option("--denoise", o->denoise,
                     "on: the image shown is denoised while it accumulates (guided by the first-hit AOVs, at most 15 % of the render's "

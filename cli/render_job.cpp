@@ -196,7 +196,8 @@ void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOption
     cmd.add_option("--samples", run->samples,
                    "A:B renders exactly the sample indices A to B-1 of every pixel: a part of a render that dtoadq merge combines");
     cmd.add_option("--aov", run->aov,
-                   "First-hit AOVs as extra EXR layers, a comma-separated list of albedo, normal, depth (albedo.R/G/B, normal.X/Y/Z, depth.Z)");
+                   "AOVs as extra EXR layers, a comma-separated list of albedo, normal, depth, slot (first hit: albedo.R/G/B, normal.X/Y/Z, "
+                   "depth.Z, IndexMA.X), variance, samples (of each pixel's mean: variance.R/G/B, samples.X)");
     cmd.add_option("--denoise", run->denoise,
                    "on: the image denoised for looking at (guided by the first-hit AOVs), the raw one kept as the EXR layer noisy.R/G/B")
         ->capture_default_str();
@@ -249,6 +250,9 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (!run.resume.empty()) resumed = render::read_film_file(run.resume);
     render::RenderLimits limits = run_limits(run, range, resumed);
     RenderJob job = prepare_render_job(options);
+    if (aov_selection.variance && job.input.settings.integrator == render::Integrator::lt)
+        throw InputError("--aov", "", "variance: the light tracer's image is all splats from other pixels' paths, whose squares the film does not "
+                                      "keep (its variance covers a pixel's own samples: pt, bdpt)");
     std::optional<opencl::Runtime> runtime;
     std::unique_ptr<render::Renderer> renderer = make_renderer(job, options.device, &runtime);
     auto metadata_now = [&] {
@@ -287,13 +291,12 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     // a backdrop that is not opaque gets an alpha channel, which the first hits' coverage gives
     const float opacity = renderer->settings().background_opacity;
     const bool alpha = opacity < 1.0f && render::is_exr_path(run.output);
-    if (aov_selection.any() || denoise || alpha) first_hits = renderer->first_hit_aovs();
+    if (aov_selection.first_hit() || denoise || alpha) first_hits = renderer->first_hit_aovs();
     std::vector<film::ImageChannel> layers;
     if (alpha) layers.push_back(render::background_alpha_channel(*first_hits, opacity));
-    if (aov_selection.any()) {
-        const std::vector<film::ImageChannel> aovs = render::aov_channels(*first_hits, aov_selection);
-        layers.insert(layers.end(), aovs.begin(), aovs.end());
-    }
+    const std::vector<film::ImageChannel> aovs = render::aov_channels(first_hits ? &*first_hits : nullptr, film, stats.samples_per_pixel,
+                                                                      renderer->settings().width, renderer->settings().height, aov_selection);
+    layers.insert(layers.end(), aovs.begin(), aovs.end());
     film::ImageRgb shown = raw;
     if (denoise) {
         shown = render::denoised(raw, render::denoise_guide(*first_hits), *renderer);

@@ -121,14 +121,15 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings ma
 }
 
 /* Adds settings->sample_count samples to one pixel (pixel k is (k % width, k / width)), its t = 1
- * connections to the splat buffer. A sample with a non-finite contribution or MIS weight is counted
+ * connections to the splat buffer. The sum of squares holds the own pixel's part of each sample:
+ * the splats' variance is not in it. A sample with a non-finite contribution or MIS weight is counted
  * in accumulation.w and its own pixel's sum left out, as the path tracer's are (the film divides
  * by the finite samples; the statistics report the count). */
 SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int pixel,
-                      GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* splat, GLOBAL_MEM uint* ray_counts,
+                      GLOBAL_MEM float4* accumulation, GLOBAL_MEM float4* squares, GLOBAL_MEM uint* splat, GLOBAL_MEM uint* ray_counts,
                       GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
-    float4 sum = accumulation[pixel];
+    float4 sum = accumulation[pixel], square_sum = squares[pixel];
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
@@ -168,10 +169,15 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera
                 if (t == 1) film_splat(splat, camera->width, camera->height, raster.x, raster.y, c);
                 else l += c;
             }
-        if (finite) sum += make_float4(l.x, l.y, l.z, 0.0f);
-        else sum.w += 1.0f;
+        if (finite) {
+            sum += make_float4(l.x, l.y, l.z, 0.0f);
+            square_sum = film_add_square(square_sum, l);
+        } else {
+            sum.w += 1.0f;
+        }
     }
     accumulation[pixel] = sum;
+    squares[pixel] = square_sum;
     ray_counts[pixel] += counters.rays;
     lost_ray_counts[pixel] += counters.lost_rays;
 }

@@ -1,6 +1,9 @@
 /* The film every integrator writes into. Per pixel:
  *   accumulation  float4: xyz the sum of the finite samples the pixel's own work-item traced, w the
  *                 count of its non-finite ones (left out of the mean, reported, never hidden);
+ *   squares       float4: xyz the sum of the squares of the same finite samples (w unused), for
+ *                 the variance of the pixel's mean (render/film_resolve.cpp): sums merge and resume
+ *                 by adding, as the sum does;
  *   splat         3 floats (stored as their bits in uints): contributions other work-items add to
  *                 this pixel -- light tracing (t = 1) lands anywhere on the film.
  * The pixel's estimate is accumulation.xyz / (samples - accumulation.w) + splat / samples
@@ -39,6 +42,10 @@ SS_FN uint film_compare_exchange(uint* word, uint expected, uint desired) {
     return expected; /* on failure the built-in stores the value it found */
 }
 #endif
+
+/* A pixel's sum of squares with one more finite sample `l` (the caller keeps non-finite ones out,
+ * as it does of the sum). */
+SS_FN float4 film_add_square(float4 squares, float3 l) { return squares + make_float4(l.x * l.x, l.y * l.y, l.z * l.z, 0.0f); }
 
 /* Adds `value` to one float of the splat buffer, whoever else adds to it at the same time. */
 SS_FN void film_atomic_add(GLOBAL_MEM uint* word, float value) {

@@ -1,6 +1,7 @@
 /* First-hit AOVs: what one camera ray of a pixel's sample finds at its first surface, for the
  * EXR's albedo, normal and depth layers (render/first_hit_aovs.cpp averages them over the film's
- * samples). The camera ray is the one the sample's path began with (camera_pixel_ray from the
+ * samples) and its material slot layer (the slot of the pixel's first sample, as Cycles writes its
+ * material index on sample 0). The camera ray is the one the sample's path began with (camera_pixel_ray from the
  * same random stream), so the AOVs cover the pixel as its radiance does.
  *
  * Albedo is the directional albedo of the material seen, estimated by FIRST_HIT_ALBEDO_SAMPLES BSDF
@@ -26,10 +27,11 @@
 #define FIRST_HIT_ALBEDO_SAMPLES 8
 
 typedef struct FirstHit {
-    float3 albedo; /* one-sample estimate of the directional albedo; 0 where the ray escapes */
+    float3 albedo; /* estimate of the directional albedo (FIRST_HIT_ALBEDO_SAMPLES samples); 0 where the ray escapes */
     float3 normal; /* world-space shading normal, facing the camera; 0 where the ray escapes */
     float depth;   /* distance along the camera ray; 0 where it escapes (as Mitsuba's depth AOV) */
     float coverage; /* 1 where the ray hits a surface, 0 where it sees the backdrop: the EXR's alpha */
+    int slot;       /* the material slot seen; -1 where the ray escapes */
 } FirstHit;
 
 SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int pixel, int sample) {
@@ -38,6 +40,7 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     h.normal = float3_splat(0.0f);
     h.depth = 0.0f;
     h.coverage = 0.0f;
+    h.slot = -1;
     MarchSettings march_settings = render_march_settings(settings);
     Rng rng = rng_make((uint)pixel, (uint)sample, settings->seed_lo, settings->seed_hi);
     float3 origin, direction;
@@ -51,6 +54,7 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     h.normal = hit.frame.n;
     h.depth = r.t;
     h.coverage = scene->emission[hit.slot].w == EMISSION_CATCHER ? 0.0f : 1.0f; /* a shadow catcher shows the backdrop */
+    h.slot = hit.slot;
     Material m = scene->materials[hit.slot];
     for (int i = 0; i < FIRST_HIT_ALBEDO_SAMPLES; ++i) {
         float4 u = rng_next4(&rng);

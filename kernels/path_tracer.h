@@ -16,6 +16,7 @@
 #include "ibl/environment.h"
 #include "kernels/background.h"
 #include "kernels/camera.h"
+#include "kernels/film.h"
 #include "kernels/lights/light_selection.h"
 #include "kernels/mis.h"
 #include "kernels/path.h"
@@ -242,20 +243,24 @@ SS_FN float3 trace_path(const RenderKernelSettings* settings, MarchSettings marc
     return float3_from_array(p.radiance);
 }
 
-/* A pixel's sum with one more path's radiance; a path that is not finite is counted in w instead
- * (the film reports them). */
-SS_FN float4 film_add_path(float4 sum, float3 l) {
-    if (finite3(l)) return sum + make_float4(l.x, l.y, l.z, 0.0f);
-    sum.w += 1.0f;
-    return sum;
+/* A pixel's sum and sum of squares (kernels/film.h) with one more path's radiance; a path that is
+ * not finite is counted in sum.w instead (the film reports them). */
+SS_FN void film_add_path(float4* sum, float4* squares, float3 l) {
+    if (finite3(l)) {
+        *sum += make_float4(l.x, l.y, l.z, 0.0f);
+        *squares = film_add_square(*squares, l);
+    } else {
+        sum->w += 1.0f;
+    }
 }
 
 /* Adds settings->sample_count samples to one pixel; pixel k is (k % width, k / width), row 0 at the
  * top. The samples of a pixel are summed in sample order by the one work-item that owns it. */
 SS_FN void path_tracer_pixel(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int pixel,
-                             GLOBAL_MEM float4* accumulation, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts) {
+                             GLOBAL_MEM float4* accumulation, GLOBAL_MEM float4* squares, GLOBAL_MEM uint* ray_counts,
+                             GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
-    float4 sum = accumulation[pixel];
+    float4 sum = accumulation[pixel], square_sum = squares[pixel];
     PathCounters counters;
     counters.rays = 0u;
     counters.lost_rays = 0u;
@@ -263,9 +268,10 @@ SS_FN void path_tracer_pixel(const RenderKernelSettings* settings, const Camera*
         Rng rng = rng_make((uint)pixel, (uint)(settings->first_sample + i), settings->seed_lo, settings->seed_hi);
         float3 origin, direction;
         camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-        sum = film_add_path(sum, trace_path(settings, march_settings, scene, origin, direction, rng, &counters));
+        film_add_path(&sum, &square_sum, trace_path(settings, march_settings, scene, origin, direction, rng, &counters));
     }
     accumulation[pixel] = sum;
+    squares[pixel] = square_sum;
     ray_counts[pixel] += counters.rays;
     lost_ray_counts[pixel] += counters.lost_rays;
 }

@@ -129,6 +129,7 @@ SS_FN void prefetch_step_state(GLOBAL_MEM const PathState* states, int path, int
 typedef struct WavefrontFilm {
     int slots;
     GLOBAL_MEM float4* accumulation; /* the film, per pixel */
+    GLOBAL_MEM float4* squares;
     GLOBAL_MEM uint* ray_counts;
     GLOBAL_MEM uint* lost_ray_counts;
     GLOBAL_MEM float4* path_radiance; /* per path, slots > 1: xyz the path's radiance */
@@ -154,10 +155,14 @@ SS_FN void path_tracer_leave(MarchSettings march_settings, int path, const PathS
         store_no_ray(rays, stride, path);
         store_no_ray(shadow_rays, stride, path);
         float3 l = float3_from_array(p->radiance);
-        if (film.slots > 1)
+        if (film.slots > 1) {
             film.path_radiance[path] = make_float4(l.x, l.y, l.z, 0.0f);
-        else
-            film.accumulation[path] = film_add_path(film.accumulation[path], l);
+        } else {
+            float4 sum = film.accumulation[path], square_sum = film.squares[path];
+            film_add_path(&sum, &square_sum, l);
+            film.accumulation[path] = sum;
+            film.squares[path] = square_sum;
+        }
         return;
     }
     if (p->active) {
@@ -240,16 +245,17 @@ SS_FN SS_INLINE_ALWAYS void path_tracer_step(const RenderKernelSettings* setting
 /* Adds the paths of `film.slots` samples in flight (slots > 1) to pixel `pixel`'s film entries, in
  * sample order. */
 SS_FN void path_tracer_resolve(int pixels, int pixel, WavefrontFilm film) {
-    float4 sum = film.accumulation[pixel];
+    float4 sum = film.accumulation[pixel], square_sum = film.squares[pixel];
     uint rays = film.ray_counts[pixel], lost_rays = film.lost_ray_counts[pixel];
     for (int slot = 0; slot < film.slots; ++slot) {
         int path = slot * pixels + pixel;
         float4 l = film.path_radiance[path];
-        sum = film_add_path(sum, make_float3(l.x, l.y, l.z));
+        film_add_path(&sum, &square_sum, make_float3(l.x, l.y, l.z));
         rays += film.path_rays[path];
         lost_rays += film.path_lost_rays[path];
     }
     film.accumulation[pixel] = sum;
+    film.squares[pixel] = square_sum;
     film.ray_counts[pixel] = rays;
     film.lost_ray_counts[pixel] = lost_rays;
 }

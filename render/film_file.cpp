@@ -10,8 +10,9 @@ namespace lab::render {
 namespace {
 
 const std::vector<std::string>& channel_names() {
-    static const std::vector<std::string> names = {"film.sum.R", "film.sum.G",   "film.sum.B",   "film.nonfinite",
-                                                   "film.splat.R", "film.splat.G", "film.splat.B"};
+    static const std::vector<std::string> names = {"film.sum.R",     "film.sum.G",     "film.sum.B",    "film.nonfinite",
+                                                   "film.splat.R",   "film.splat.G",   "film.splat.B",  "film.squares.R",
+                                                   "film.squares.G", "film.squares.B"};
     return names;
 }
 
@@ -47,7 +48,8 @@ std::vector<film::ImageChannel> film_channels(const FilmReadback& film) {
     std::vector<film::ImageChannel> channels;
     for (size_t c = 0; c < names.size(); ++c) {
         film::ImageChannel channel{names[c], std::vector<float>(pixels)};
-        for (size_t p = 0; p < pixels; ++p) channel.values[p] = c < 4 ? film.accumulation[4 * p + c] : film.splat[3 * p + (c - 4)];
+        for (size_t p = 0; p < pixels; ++p)
+            channel.values[p] = c < 4 ? film.accumulation[4 * p + c] : c < 7 ? film.splat[3 * p + (c - 4)] : film.squares[4 * p + (c - 7)];
         channels.push_back(std::move(channel));
     }
     return channels;
@@ -67,9 +69,11 @@ FilmFile read_film_file(const std::string& path) {
     size_t pixels = size_t(file.width) * size_t(file.height);
     file.film.accumulation.resize(4 * pixels);
     file.film.splat.resize(3 * pixels);
+    file.film.squares.assign(4 * pixels, 0.0f);
     for (size_t p = 0; p < pixels; ++p) {
         for (size_t c = 0; c < 4; ++c) file.film.accumulation[4 * p + c] = channels[c].values[p];
         for (size_t c = 0; c < 3; ++c) file.film.splat[3 * p + c] = channels[4 + c].values[p];
+        for (size_t c = 0; c < 3; ++c) file.film.squares[4 * p + c] = channels[7 + c].values[p];
         float nonfinite = file.film.accumulation[4 * p + 3];
         if (!(nonfinite >= 0.0f && nonfinite == std::floor(nonfinite)))
             throw InputError(path, "film.nonfinite", "pixel " + std::to_string(p) + " holds " + std::to_string(nonfinite) + ", not a count");
@@ -115,6 +119,7 @@ FilmFile merge_film_files(const std::vector<FilmFile>& parts) {
             merged.ranges = merged.ranges.joined(part.ranges);
             for (size_t i = 0; i < merged.film.accumulation.size(); ++i) merged.film.accumulation[i] += part.film.accumulation[i];
             for (size_t i = 0; i < merged.film.splat.size(); ++i) merged.film.splat[i] += part.film.splat[i];
+            for (size_t i = 0; i < merged.film.squares.size(); ++i) merged.film.squares[i] += part.film.squares[i];
         }
         if (const film::MetadataValue* s = part.metadata.find("seconds"); s && std::holds_alternative<float>(*s)) seconds += std::get<float>(*s);
         nonfinite += count_of(part.metadata, "nonfinite_samples");

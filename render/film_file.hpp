@@ -1,6 +1,6 @@
 // A render's EXR is also the film it was resolved from: besides R, G, B it holds the film's sums
-// (kernels/film.h: each pixel's sum of finite samples, its count of non-finite ones, and what was
-// splatted onto it) and, in its metadata, the sample indices it holds ("sample_ranges"). Parts of
+// (kernels/film.h: each pixel's sum of finite samples, its count of non-finite ones, the sum of
+// their squares, and what was splatted onto it) and, in its metadata, the sample indices it holds ("sample_ranges"). Parts of
 // one render over disjoint sample ranges merge into the render one run over all of them would have
 // made (dtoadq merge), and a render continues from its file with the indices that follow (--resume).
 #pragma once
@@ -23,7 +23,9 @@ struct FilmFile {
     film::ImageMetadata metadata;
 };
 
-// The film's buffers as EXR channels: film.sum.{R,G,B}, film.nonfinite, film.splat.{R,G,B}.
+// The film's buffers as EXR channels: film.sum.{R,G,B}, film.nonfinite, film.splat.{R,G,B},
+// film.squares.{R,G,B}. A merge adds the squares as it adds the sums, so the merged film's
+// variance (resolve_variance) is the whole render's.
 std::vector<film::ImageChannel> film_channels(const FilmReadback& film);
 
 // Reads a render's EXR with its film; throws lab::InputError naming the file and the channel or

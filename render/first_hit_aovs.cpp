@@ -12,11 +12,12 @@
 
 namespace lab::render {
 
-FirstHitAovs Renderer::first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums) const {
+FirstHitAovs Renderer::first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums,
+                                       std::vector<int> slots, int64_t samples) const {
     const int width = input_.settings.width, height = input_.settings.height;
     const size_t pixels = size_t(width) * size_t(height);
-    FirstHitAovs aovs{film::ImageRgb(width, height), film::ImageRgb(width, height), std::vector<float>(pixels, 0.0f), std::vector<float>(pixels, 0.0f)};
-    const int64_t samples = sample_ranges().count();
+    FirstHitAovs aovs{film::ImageRgb(width, height), film::ImageRgb(width, height), std::vector<float>(pixels, 0.0f), std::vector<float>(pixels, 0.0f),
+                      std::move(slots)};
     if (samples == 0) return aovs;
     const float scale = float(1.0 / double(samples));
     for (size_t p = 0; p < aovs.depth.size(); ++p) {
@@ -32,9 +33,14 @@ FirstHitAovs Renderer::first_hit_means(const std::vector<brdf::float4>& albedo_s
 
 FirstHitAovs Renderer::first_hit_aovs() const {
     if (pass_pixels_ > 0) throw std::logic_error("Renderer::first_hit_aovs: a pass is in progress (add_samples ended inside a pass)");
+    return first_hit_aovs(sample_ranges());
+}
+
+FirstHitAovs Renderer::first_hit_aovs(const SampleRanges& ranges) const {
     const int pixels = input_.settings.width * input_.settings.height;
     std::vector<brdf::float4> albedo(size_t(pixels), brdf::float4(0.0f)), normal_depth(size_t(pixels), brdf::float4(0.0f));
-    const SampleRanges ranges = sample_ranges();
+    std::vector<int> slots(size_t(pixels), -1);
+    const int64_t slot_sample = ranges.empty() ? -1 : ranges.ranges().front().first;
     const kernel::RenderScene scene = host_render_scene();
     const kernel::RenderKernelSettings settings = kernel_settings(0, 0);
     std::atomic<int> next{0};
@@ -46,13 +52,14 @@ FirstHitAovs Renderer::first_hit_aovs() const {
                     const host_kernels::FirstHit h = host_kernels::first_hit_sample(&settings, &camera_, &scene, pixel, int(sample));
                     albedo[size_t(pixel)] += brdf::float4(h.albedo, h.coverage);
                     normal_depth[size_t(pixel)] += brdf::float4(h.normal, h.depth);
+                    if (sample == slot_sample) slots[size_t(pixel)] = h.slot;
                 }
     };
     std::vector<std::thread> pool;
     for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
     work();
     for (std::thread& t : pool) t.join();
-    return first_hit_means(albedo, normal_depth);
+    return first_hit_means(albedo, normal_depth, std::move(slots), ranges.count());
 }
 
 }  // namespace lab::render

@@ -21,6 +21,7 @@ std::string HostRenderer::device_description() const {
 void HostRenderer::clear_film() {
     size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
     film_.accumulation.assign(pixels * 4, 0.0f);
+    film_.squares.assign(pixels * 4, 0.0f);
     film_.splat.assign(pixels * 3, 0.0f);
     rays_.assign(pixels, 0u);
     lost_.assign(pixels, 0u);
@@ -31,6 +32,7 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& launch_settings, P
 
     const int pixels = range.first + range.count;
     auto* accumulation = reinterpret_cast<brdf::float4*>(film_.accumulation.data());
+    auto* squares = reinterpret_cast<brdf::float4*>(film_.squares.data());
     // The splat buffer holds floats as their bits (kernels/film.h), which the film reads back as floats.
     auto* splat = reinterpret_cast<unsigned*>(film_.splat.data());
     const bool bidirectional = integrator_descriptor(input_.settings.integrator).bidirectional();
@@ -42,9 +44,9 @@ void HostRenderer::launch(const kernel::RenderKernelSettings& launch_settings, P
         for (int begin = next.fetch_add(chunk); begin < pixels; begin = next.fetch_add(chunk))
             for (int pixel = begin; pixel < std::min(pixels, begin + chunk); ++pixel)
                 if (bidirectional)
-                    host_kernels::bdpt_pixel(&launch_settings, &camera_, &scene, pixel, accumulation, splat, rays_.data(), lost_.data());
+                    host_kernels::bdpt_pixel(&launch_settings, &camera_, &scene, pixel, accumulation, squares, splat, rays_.data(), lost_.data());
                 else
-                    host_kernels::path_tracer_pixel(&launch_settings, &camera_, &scene, pixel, accumulation, rays_.data(), lost_.data());
+                    host_kernels::path_tracer_pixel(&launch_settings, &camera_, &scene, pixel, accumulation, squares, rays_.data(), lost_.data());
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < threads_; ++t) pool.emplace_back(work);

@@ -102,6 +102,7 @@ void OpenClRenderer::clear_film() {
     size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
     if (pixels != film_pixels_) {
         accumulation_ = runtime_.buffer(pixels * 4 * sizeof(float), CL_MEM_READ_WRITE);
+        squares_ = runtime_.buffer(pixels * 4 * sizeof(float), CL_MEM_READ_WRITE);
         splat_ = runtime_.buffer(pixels * 3 * sizeof(cl_uint), CL_MEM_READ_WRITE);
         rays_ = runtime_.buffer(pixels * sizeof(cl_uint), CL_MEM_READ_WRITE);
         lost_ = runtime_.buffer(pixels * sizeof(cl_uint), CL_MEM_READ_WRITE);
@@ -110,6 +111,7 @@ void OpenClRenderer::clear_film() {
     if (wavefront()) wavefront_driver_.allocate(wavefront_slots(input_.settings), pixels);
     std::vector<float> zeros(pixels * 4, 0.0f);  // 0.0f and 0u share their bits
     runtime_.write(accumulation_, zeros.data(), pixels * 4 * sizeof(float));
+    runtime_.write(squares_, zeros.data(), pixels * 4 * sizeof(float));
     runtime_.write(splat_, zeros.data(), pixels * 3 * sizeof(cl_uint));
     runtime_.write(rays_, zeros.data(), pixels * sizeof(cl_uint));
     runtime_.write(lost_, zeros.data(), pixels * sizeof(cl_uint));
@@ -121,7 +123,7 @@ cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel
     opencl::set_kernel_arg(kernel, a++, camera_);
     opencl::set_kernel_arg(kernel, a++, bound_environment().map());
     for (const opencl::BufferHandle* b : {&texels_, &alias_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
-                                          &light_cdf_, &light_of_slot_, &accumulation_, &splat_, &rays_, &lost_})
+                                          &light_cdf_, &light_of_slot_, &accumulation_, &squares_, &splat_, &rays_, &lost_})
         opencl::set_kernel_arg(kernel, a++, *b);
     return a;
 }
@@ -133,7 +135,7 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& launch_settings,
                                      [this](const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& settings) {
                                          return bind_render_arguments(kernel, settings);
                                      },
-                                     &accumulation_, &rays_, &lost_, local_size_, image};
+                                     &accumulation_, &squares_, &rays_, &lost_, local_size_, image};
         wavefront_driver_.launch(target, launch_settings, pixels);
     } else {
         bind_render_arguments(kernel_, launch_settings);
@@ -142,8 +144,7 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& launch_settings,
     runtime_.finish();
 }
 
-FirstHitAovs OpenClRenderer::first_hit_aovs() const {
-    if (pass_pixels() > 0) throw std::logic_error("Renderer::first_hit_aovs: a pass is in progress (add_samples ended inside a pass)");
+FirstHitAovs OpenClRenderer::first_hit_aovs(const SampleRanges& ranges) const {
     if (!first_hit_program_) {
         first_hit_program_.emplace(runtime_.build(kernels::assemble_scene_kernel("kernels/first_hit.cl", compiled_), build_options_));
         first_hit_kernel_ = first_hit_program_->kernel("render_first_hits");
@@ -154,17 +155,23 @@ FirstHitAovs OpenClRenderer::first_hit_aovs() const {
     opencl::BufferHandle albedo_sums = runtime_.buffer(bytes, CL_MEM_READ_WRITE), normal_depth_sums = runtime_.buffer(bytes, CL_MEM_READ_WRITE);
     runtime_.write(albedo_sums, albedo.data(), bytes);
     runtime_.write(normal_depth_sums, normal_depth.data(), bytes);
-    const SampleRanges ranges = sample_ranges();
+    std::vector<int> slots(size_t(image), -1);
+    opencl::BufferHandle slot_buffer = runtime_.buffer(slots.size() * sizeof(cl_int), CL_MEM_READ_WRITE);
+    runtime_.write(slot_buffer, slots.data(), slots.size() * sizeof(cl_int));
+    const cl_int slot_sample = ranges.empty() ? -1 : cl_int(ranges.ranges().front().first);
     for (const auto& [first, end] : ranges.ranges()) {
         cl_uint a = bind_render_arguments(first_hit_kernel_, kernel_settings(int(first), int(end - first)));
         opencl::set_kernel_arg(first_hit_kernel_, a++, albedo_sums);
         opencl::set_kernel_arg(first_hit_kernel_, a++, normal_depth_sums);
+        opencl::set_kernel_arg(first_hit_kernel_, a++, slot_sample);
+        opencl::set_kernel_arg(first_hit_kernel_, a++, slot_buffer);
         launch_range(runtime_, first_hit_kernel_, PixelRange{0, image}, local_size_, size_t(image));
         runtime_.finish();
     }
     runtime_.read(albedo_sums, albedo.data(), bytes);
     runtime_.read(normal_depth_sums, normal_depth.data(), bytes);
-    return first_hit_means(albedo, normal_depth);
+    runtime_.read(slot_buffer, slots.data(), slots.size() * sizeof(cl_int));
+    return first_hit_means(albedo, normal_depth, std::move(slots), ranges.count());
 }
 
 void OpenClRenderer::display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const {
@@ -176,14 +183,17 @@ FilmReadback OpenClRenderer::read_film() const {
     size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
     FilmReadback film;
     film.accumulation.resize(pixels * 4);
+    film.squares.resize(pixels * 4);
     film.splat.resize(pixels * 3);
     runtime_.read(accumulation_, film.accumulation.data(), film.accumulation.size() * sizeof(float));
+    runtime_.read(squares_, film.squares.data(), film.squares.size() * sizeof(float));
     runtime_.read(splat_, film.splat.data(), film.splat.size() * sizeof(float));
     return film;
 }
 
 void OpenClRenderer::write_film(const FilmReadback& film) {
     runtime_.write(accumulation_, film.accumulation.data(), film.accumulation.size() * sizeof(float));
+    runtime_.write(squares_, film.squares.data(), film.squares.size() * sizeof(float));
     runtime_.write(splat_, film.splat.data(), film.splat.size() * sizeof(float));  // the splat's words hold float bits
 }
 

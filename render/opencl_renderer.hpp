@@ -34,7 +34,8 @@ public:
 
     // The first-hit AOVs by render_first_hits (kernels/first_hit.cl), a program built at the first
     // call after each build of the integrator's, so a render without AOVs never compiles it.
-    FirstHitAovs first_hit_aovs() const override;
+    using Renderer::first_hit_aovs;
+    FirstHitAovs first_hit_aovs(const SampleRanges& ranges) const override;
     void display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const override;
 
 private:
@@ -53,14 +54,14 @@ private:
     mutable std::optional<opencl::Program> first_hit_program_;  // built by first_hit_aovs
     mutable opencl::KernelHandle first_hit_kernel_;
     mutable std::optional<kernels::DeviceDenoiser> denoiser_;  // built by display_filter_passes
-    // Arguments 0 .. 14, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
+    // Arguments 0 .. 15, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
     cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& launch_settings) const;
     WavefrontDriver wavefront_driver_;  // used when wavefront()
     size_t local_size_ = 64;
     opencl::BufferHandle texels_, alias_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
     opencl::BufferHandle measured_;  // brdf::measured_table_data(), or one float for a scene without measured materials
     size_t measured_floats_ = 0;
-    opencl::BufferHandle accumulation_, splat_, rays_, lost_;
+    opencl::BufferHandle accumulation_, squares_, splat_, rays_, lost_;
     size_t film_pixels_ = 0;  // the size the film buffers were made for
     const brdf::float4* uploaded_texels_ = nullptr;  // the environment texels texels_ holds
     uint64_t uploaded_texels_version_ = 0;           // and Renderer::texels_version() when uploaded

@@ -222,7 +222,7 @@ SampleRanges Renderer::sample_ranges() const { return restored_.joined(SampleRan
 
 void Renderer::restore_film(const FilmReadback& film, const SampleRanges& ranges) {
     size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
-    if (film.accumulation.size() != 4 * pixels || film.splat.size() != 3 * pixels)
+    if (film.accumulation.size() != 4 * pixels || film.squares.size() != 4 * pixels || film.splat.size() != 3 * pixels)
         throw std::invalid_argument("Renderer::restore_film: the film's buffers do not match the image size");
     if (ranges.end() > SampleRanges::kMaxEnd) throw std::invalid_argument("Renderer::restore_film: sample indices out of range");
     write_film(film);
@@ -295,9 +295,21 @@ void Renderer::display_filter_passes(film::AtrousBuffers* buffers, const film::D
     film::atrous_passes(buffers, options);
 }
 
+PartialPass Renderer::partial_pass() const { return PartialPass{pass_pixels_, pass_pixels_ > 0 ? pass_samples_ : 0}; }
+
 film::ImageRgb Renderer::image() const {
     return resolve_film(read_film(), film_samples(), input_.settings.width, input_.settings.height,
-                        PartialPass{pass_pixels_, pass_pixels_ > 0 ? pass_samples_ : 0});
+                        partial_pass());
+}
+
+film::ImageRgb Renderer::variance() const {
+    return resolve_variance(read_film(), film_samples(), input_.settings.width, input_.settings.height,
+                            partial_pass());
+}
+
+std::vector<float> Renderer::sample_counts() const {
+    return finite_sample_counts(read_film(), film_samples(), input_.settings.width, input_.settings.height,
+                                partial_pass());
 }
 
 RenderStatistics Renderer::statistics() const {

@@ -20,6 +20,7 @@
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
 #include "render/film_readback.hpp"
+#include "render/film_resolve.hpp"
 #include "render/light_set.hpp"
 #include "render/render_settings.hpp"
 #include "render/sample_ranges.hpp"
@@ -37,15 +38,17 @@ struct RenderInput {
 };
 
 // First-hit AOVs (kernels/first_hit.h), each pixel's mean over the film's samples: albedo
-// (directional, estimated by one BSDF sample per camera ray), world-space shading normal (the mean
+// (directional, estimated by FIRST_HIT_ALBEDO_SAMPLES BSDF samples per camera ray), world-space shading normal (the mean
 // of unit normals, not renormalised, so an edge pixel shows its mix), camera-ray distance. A ray
 // that escapes adds zeros, so a pixel partly on the background holds the covered fraction's share.
 // Coverage is the share of the pixel's camera rays that hit a surface: the EXR's alpha with the
-// backdrop's opacity (background_alpha).
+// backdrop's opacity (background_alpha). The material slot is not a mean: the slot the pixel's
+// first sample sees (-1: none), as Cycles writes its material index from sample 0.
 struct FirstHitAovs {
     film::ImageRgb albedo, normal;
     std::vector<float> depth;     // one per pixel
     std::vector<float> coverage;  // one per pixel, in [0, 1]
+    std::vector<int> slot;        // one per pixel
 };
 
 struct RenderStatistics {
@@ -136,12 +139,19 @@ public:
     // what was splatted onto it, over the samples per pixel. A pixel none of whose samples was
     // finite is NaN, so it shows (magenta in a PNG).
     film::ImageRgb image() const;
+    // Per pixel, as image() counts them (a pass in progress on the pixels it reached): the variance
+    // of its mean (resolve_variance) and how many finite samples the mean is over.
+    film::ImageRgb variance() const;
+    std::vector<float> sample_counts() const;
     RenderStatistics statistics() const;
     // The first-hit AOVs over the film's sample indices (sample_ranges()): the first hit is the
     // same for every integrator. Here on the host's threads with the kernels' C++ build
     // (render/first_hit_aovs.cpp); OpenClRenderer runs the same code as a kernel of its own. Not
     // during a pass in progress (std::logic_error).
-    virtual FirstHitAovs first_hit_aovs() const;
+    FirstHitAovs first_hit_aovs() const;
+    // The same over other sample indices (the viewer's views take a few, not every sample so far);
+    // any time, since it reads nothing of the film.
+    virtual FirstHitAovs first_hit_aovs(const SampleRanges& ranges) const;
     // The display denoiser's passes (film/denoise.hpp) where this renderer runs: on the host's
     // thread here; OpenClRenderer runs them on its device (kernels/denoise.cl, built at the first call).
     virtual void display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const;
@@ -171,8 +181,9 @@ protected:
     // The environment the kernels bind: the input's, or a black one when there is none (the kernels
     // take its map and buffers either way; without an environment light nothing reads them).
     const ibl::Environment& bound_environment() const;
-    // The AOVs from each pixel's sums over the film's samples: albedo in xyz, coverage in w; normal in xyz, depth in w.
-    FirstHitAovs first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums) const;
+    // The AOVs from each pixel's sums over `samples` samples: albedo in xyz, coverage in w; normal in xyz, depth in w.
+    FirstHitAovs first_hit_means(const std::vector<brdf::float4>& albedo_sums, const std::vector<brdf::float4>& normal_depth_sums,
+                                 std::vector<int> slots, int64_t samples) const;
     // The scene as the kernels' host build reads it (kernels/render_scene.h), over this renderer's buffers.
     kernel::RenderScene host_render_scene() const;
     // The texels the kernels bind: the environment's, followed by the blurred backdrop's when there
@@ -195,6 +206,9 @@ private:
     std::vector<brdf::float4> texels_with_background_;  // the environment's texels, then the blurred map's
     int background_face_size_ = 0;                       // the blurred map's face; 0: none
     uint64_t texels_version_ = 0;
+
+    // The pass in progress, as the film's resolves take it.
+    PartialPass partial_pass() const;
 
     int first_sample_ = 0;    // where a reset film starts
     SampleRanges restored_;   // the samples restore_film put on the film

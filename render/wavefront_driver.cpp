@@ -175,7 +175,7 @@ void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::
 void WavefrontDriver::launch_resolve(const WavefrontTarget& target, int slots) {
     const Clock::time_point resolve_start = Clock::now();
     const int image = target.image_pixels;
-    opencl::set_kernel_args(resolve_kernel_, image, slots, *target.accumulation, *target.rays, *target.lost, path_radiance_, path_ray_counts_,
+    opencl::set_kernel_args(resolve_kernel_, image, slots, *target.accumulation, *target.squares, *target.rays, *target.lost, path_radiance_, path_ray_counts_,
                             path_lost_counts_);
     launch_range(runtime_, resolve_kernel_, PixelRange{0, image}, target.local_size, size_t(image));
     ended(WavefrontLaunch::resolve, resolve_start);

@@ -40,9 +40,10 @@ public:
 // What the renderer that owns the scene and the film gives a launch.
 struct WavefrontTarget {
     const kernel::Camera* camera;
-    // Binds arguments 0 .. 14, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
+    // Binds arguments 0 .. 15, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
     std::function<cl_uint(const opencl::KernelHandle&, const kernel::RenderKernelSettings&)> bind_render_arguments;
     const opencl::BufferHandle* accumulation;
+    const opencl::BufferHandle* squares;
     const opencl::BufferHandle* rays;
     const opencl::BufferHandle* lost;
     size_t local_size;  // the work-group size of the path kernels

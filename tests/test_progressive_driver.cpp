@@ -25,6 +25,7 @@ private:
     void clear_film() override {
         size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);
         film_.accumulation.assign(4 * pixels, 0.0f);
+        film_.squares.assign(4 * pixels, 0.0f);
         film_.splat.assign(3 * pixels, 0.0f);
     }
     void launch(const kernel::RenderKernelSettings& settings, lab::render::PixelRange) override {

@@ -11,6 +11,7 @@
 //    dozen roundings of the quadratic and of the ray), and the unit normal (p - centre) / R moves
 //    by dt / R. Pixels whose rays come within disc < 0.01 of grazing are left out, as are pixels
 //    only some of whose samples hit.
+//  - slot: the first sample's, 0 where its ray meets the sphere and -1 where it misses.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -43,7 +44,7 @@ void check_sphere_aovs(lab::render::Renderer& renderer) {
     const kernel::RenderKernelSettings settings = renderer.kernel_settings(0, spp);
     const double eps = std::ldexp(1.0, -24);
 
-    int checked = 0, background = 0;
+    int checked = 0, background = 0, slot_wrong = 0;
     double albedo_error = 0.0, normal_excess = 0.0, depth_excess = 0.0;
     for (int pixel = 0; pixel < size * size; ++pixel) {
         double normal[3] = {0, 0, 0}, depth = 0.0, bound = 0.0;
@@ -55,6 +56,8 @@ void check_sphere_aovs(lab::render::Renderer& renderer) {
             const double b = double(o.x) * d.x + double(o.y) * d.y + double(o.z) * d.z;
             const double c = double(o.x) * o.x + double(o.y) * o.y + double(o.z) * o.z - 1.0;
             const double disc = b * b - c;
+            // the slot is the first sample's: the sphere's (0) or none (-1); grazing rays left out
+            if (s == 0 && (disc < -0.01 || disc > 0.01)) slot_wrong += aovs.slot[size_t(pixel)] != (disc > 0.0 ? 0 : -1);
             if (disc < 0.0) ++misses;
             if (disc < 0.01) continue;
             const double t = -b - std::sqrt(disc);
@@ -86,16 +89,17 @@ void check_sphere_aovs(lab::render::Renderer& renderer) {
     CHECK(albedo_error <= 1e-6);
     CHECK(normal_excess <= 1.0);
     CHECK(depth_excess <= 1.0);
+    CHECK(slot_wrong == 0);
 }
 
 }  // namespace
 
-TEST_CASE("First-hit AOVs of a Lambert sphere: its albedo, its analytic normal and distance (host)", "[render][aov]") {
+TEST_CASE("First-hit AOVs of a Lambert sphere: its albedo, its analytic normal and distance, its slot (host)", "[render][aov]") {
     lab::render::HostRenderer renderer(sphere_input(), 2);
     check_sphere_aovs(renderer);
 }
 
-TEST_CASE("First-hit AOVs of a Lambert sphere: its albedo, its analytic normal and distance (OpenCL)", "[render][aov][opencl]") {
+TEST_CASE("First-hit AOVs of a Lambert sphere: its albedo, its analytic normal and distance, its slot (OpenCL)", "[render][aov][opencl]") {
     lab::opencl::Runtime runtime("");
     lab::render::OpenClRenderer renderer(runtime, sphere_input());
     check_sphere_aovs(renderer);

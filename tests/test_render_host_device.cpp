@@ -4,7 +4,8 @@
 // elsewhere), so most paths take the very same branches and give the same radiance to float
 // precision; where rounding flips a branch (a grazing hit, a roulette draw on the edge) the path
 // differs from there on, but both remain unbiased. The test requires both: nearly every pixel the
-// same to 1e-3, and the image means equal within their noise.
+// same to 1e-3, and the image means equal within their noise; and nearly every pixel's variance
+// (the film's sum of squares, pt and BDPT) the same to 1e-3.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -88,6 +89,19 @@ TEST_CASE("The integrators' host builds and their OpenCL builds trace the same p
         CHECK(std::fabs(mean_diff) <= 4.0 * se + 1e-6);
         // the same number of rays within what the flipped paths account for
         CHECK(std::fabs(double(d.stats.rays) - double(h.stats.rays)) <= 0.05 * double(d.stats.rays));
+        // the same paths' squares: the variance of the mean alike where the image is (lt has none: all splats)
+        if (integrator != lab::render::Integrator::lt) {
+            const lab::film::ImageRgb dv = device.variance(), hv = host.variance();
+            size_t same_variance = 0;
+            for (size_t p = 0; p < pixels; ++p) {
+                bool equal = true;
+                for (size_t c = 0; c < 3; ++c)
+                    equal = equal && std::fabs(dv.rgb[3 * p + c] - hv.rgb[3 * p + c]) <= 1e-3 * std::fmax(1e-3, std::fabs(dv.rgb[3 * p + c]));
+                same_variance += equal ? 1 : 0;
+            }
+            INFO("pixels whose variance is the same to 1e-3: " << same_variance << " of " << pixels);
+            CHECK(double(same_variance) >= 0.95 * double(pixels));
+        }
     }
 }
 

@@ -96,6 +96,7 @@ TEST_CASE("Renderer: a pass split into launches of part of the image adds the sa
     CHECK(split.image().rgb == two.rgb);
     CHECK(split.sample_ranges().count() == 2);
     CHECK(differing(split.film().accumulation, whole.film().accumulation, 0.0f) == 0);
+    CHECK(differing(split.film().squares, whole.film().squares, 0.0f) == 0);
     // A reset drops the pass in progress with the rest.
     split.add_samples(1, 0.0);
     split.reset();
@@ -121,6 +122,7 @@ TEST_CASE("OpenCL renderer: launches offset into the image add the whole-image l
         render_split(whole, 2, 0);
         render_split(split, 2, 130);  // 576 pixels in launches of 192: offsets 0, 192, 384
         CHECK(differing(split.film().accumulation, whole.film().accumulation, 0.0f) == 0);
+        CHECK(differing(split.film().squares, whole.film().squares, 0.0f) == 0);
         // Concurrent splats land in the scheduler's order: equal to float rounding of a few dozen additions.
         CHECK(differing(split.film().splat, whole.film().splat, 1e-5f) == 0);
     }

@@ -225,6 +225,7 @@ TEST_CASE("Film file: the film's buffers go through the EXR bit for bit, and a p
     FilmReadback film;
     film.accumulation = {1.5f, 2.25f, 1e-40f, 0.0f, 3e38f, 0.1f, 0.2f, 2.0f};  // a denormal, a huge sum, a non-finite count
     film.splat = {0.125f, 0.0f, 7.0f, 1e-7f, 5.0f, 6.0f};
+    film.squares = {2.5f, 1e-38f, 3e38f, 0.0f, 0.5f, 9.0f, 1e-20f, 0.0f};
     lab::film::ImageRgb image = lab::render::resolve_film(film, 4, 2, 1);
     lab::film::ImageMetadata m;
     m.set("sample_ranges", "0:2,6:8");
@@ -236,6 +237,7 @@ TEST_CASE("Film file: the film's buffers go through the EXR bit for bit, and a p
     CHECK(back.height == 1);
     CHECK(same_bits(back.film.accumulation, film.accumulation));
     CHECK(same_bits(back.film.splat, film.splat));
+    CHECK(same_bits(back.film.squares, film.squares));
     CHECK(back.ranges.to_string() == "0:2,6:8");
 
     fs::path plain = temp_file("plain.exr");
@@ -252,6 +254,7 @@ TEST_CASE("Merge: a part of another render, or samples held twice, is refused na
     a.height = b.height = 1;
     a.film.accumulation = b.film.accumulation = {1, 1, 1, 0};
     a.film.splat = b.film.splat = {0, 0, 0};
+    a.film.squares = b.film.squares = {1, 1, 1, 0};
     a.ranges = SampleRanges(0, 4);
     b.ranges = SampleRanges(4, 8);
     a.metadata.set("seed", "1");

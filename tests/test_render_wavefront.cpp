@@ -94,6 +94,7 @@ TEST_CASE("Wavefront: any number of samples in flight gives the work-item kernel
             INFO(s.what << ", " << c.what << ": rays " << f.rays << " against " << reference.rays << ", lost " << f.lost << " against "
                         << reference.lost);
             CHECK(same_film_bits(f.film.accumulation, reference.film.accumulation));
+            CHECK(same_film_bits(f.film.squares, reference.film.squares));
             CHECK(f.rays == reference.rays);
             CHECK(f.lost == reference.lost);
         }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <optional>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,9 @@
 #include "viewer/pixel_probe.hpp"
 #include "viewer/scene_export.hpp"
 #include "viewer/validation_badges.hpp"
+#include "viewer/view_export.hpp"
+#include "viewer/view_menu.hpp"
+#include "viewer/view_modes.hpp"
 #include "viewer/window_layout.hpp"
 
 namespace lab::viewer {
@@ -114,6 +118,7 @@ int last_scripted_frame(const ViewerConfig& config) {
     for (const ScriptedSet& s : config.env_loads) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.reference_loads) last_frame = std::max(last_frame, s.frame + 1);
     for (const ScriptedSet& s : config.resizes) last_frame = std::max(last_frame, s.frame + 1);
+    for (const ScriptedSet& s : config.view_modes) last_frame = std::max(last_frame, s.frame + 1);
     return last_frame;
 }
 
@@ -155,7 +160,9 @@ public:
             glfwPollEvents();
             apply_script(n);
             follow_workers();
+            want_views();
             show_frames();
+            save_pending_exr();
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
@@ -221,6 +228,11 @@ private:
             if (worker_b_ && moved) worker_b_->submit(state_b());
             waiting_.emplace_back(submitted_, Clock::now());
         }
+        for (const ScriptedSet& s : config_.view_modes)
+            if (s.frame == n) {
+                view_mode_ = parse_view_mode(s.value, "--view-mode");  // checked before the window opened
+                retone_ = true;
+            }
         for (const ScriptedSet& s : config_.resizes) {
             if (s.frame != n) continue;
             int w = 0, h = 0;
@@ -329,7 +341,7 @@ private:
         if (worker_->take_frame(&frame_) || retone_) {
             if (frame_.image.valid()) {
                 const Clock::time_point start = Clock::now();
-                texture_.upload(film::to_srgb8(frame_.image, ui_.tone_map, ui_.display_exposure), frame_.image.width, frame_.image.height);
+                texture_.upload(view_of(frame_), frame_.image.width, frame_.image.height);
                 stats_.display_seconds.push_back(seconds_between(start, Clock::now()));
                 stats_.display_pixels.push_back(double(frame_.image.width) * double(frame_.image.height));
             }
@@ -343,6 +355,46 @@ private:
                 }
             }
         }
+    }
+
+    // What the view, a pending "save EXR" and the script's --save-exr need of the worker.
+    void want_views() {
+        render::AovSelection layers = config_.save_layers;
+        if (pending_exr_) {
+            const render::AovSelection& p = pending_exr_->second;
+            layers.albedo |= p.albedo, layers.normal |= p.normal, layers.depth |= p.depth, layers.slot |= p.slot;
+            layers.variance |= p.variance, layers.samples |= p.samples;
+        }
+        worker_->want_views(needs_film_statistics(view_mode_) || layers.variance || layers.samples,
+                            needs_first_hits(view_mode_) || layers.first_hit());
+    }
+
+    // The panel's "save EXR" once the frame holds its layers (they are asked for when it is pressed).
+    void save_pending_exr() {
+        if (!pending_exr_ || !frame_has_layers(frame_, pending_exr_->second)) return;
+        try {
+            save_frame_exr(pending_exr_->first, frame_, pending_exr_->second, ui_.tone_map, ui_.display_exposure);
+            ui_.message = "wrote " + pending_exr_->first;
+        } catch (const std::exception& e) {
+            ui_.message = e.what();
+        }
+        pending_exr_.reset();
+    }
+
+    // The frame as the view menu's choice shows it; the image itself while the view's inputs are
+    // not there yet (view_shown_ says which).
+    std::vector<uint8_t> view_of(const RenderFrame& frame) {
+        ViewInputs in;
+        in.image = &frame.image;
+        in.first_hits = frame.first_hits.get();
+        in.variance = &frame.variance;
+        in.samples = &frame.samples;
+        in.tone_map = ui_.tone_map;
+        in.exposure_stops = ui_.display_exposure;
+        in.relative_error_threshold = error_threshold_;
+        std::vector<uint8_t> bytes = view_pixels(view_mode_, in);
+        view_shown_ = !bytes.empty();
+        return view_shown_ ? bytes : film::to_srgb8(frame.image, ui_.tone_map, ui_.display_exposure);
     }
 
     // The render in its rectangle of the render area (scaled when the render's size differs): A,
@@ -412,6 +464,16 @@ private:
         if (ImGui::Combo("window size changes", &sizing, "the render's size\0the display's scale\0")) sizing_ = DisplaySizing(sizing);
         ImGui::SameLine();
         ImGui::Text("render %dx%d", layout_.render_width, layout_.render_height);
+        retone_ |= view_menu(&view_mode_, &error_threshold_);
+        if (save_exr_controls(exr_path_, sizeof exr_path_, exr_layers_, sizeof exr_layers_)) {
+            try {
+                pending_exr_.emplace(exr_path_, render::parse_aov_selection(exr_layers_, exr_path_, "save EXR"));
+                ui_.message = "saving " + std::string(exr_path_) + " once the frame has its layers";
+            } catch (const std::exception& e) {
+                ui_.message = e.what();
+            }
+        }
+        if (!view_shown_) ImGui::TextUnformatted("(the view's inputs are on their way: the image meanwhile)");
         if (next_worker_) ImGui::TextUnformatted("loading the environment map...");
         ImGui::TextWrapped("%s", worker_->status().c_str());
         const std::string error = worker_->error();
@@ -500,11 +562,16 @@ private:
     // kScriptTimeoutSeconds. Returns whether it ended.
     bool script_ended(int n, Clock::time_point now, int fb_width, int fb_height) {
         const bool current = frame_.generation >= submitted_ && frame_.scale == 1 && frame_.samples_per_pixel >= config_.min_samples &&
-                             resize_pending_[0] == 0 &&
+                             resize_pending_[0] == 0 && view_shown_ && !retone_ &&
+                             (config_.save_exr.empty() || frame_has_layers(frame_, config_.save_layers)) &&
                              (!worker_b_ || (frame_b_.scale == 1 && frame_b_.samples_per_pixel >= config_.min_samples)) && !next_worker_;
         if (script_end_ == Clock::time_point{}) script_end_ = now;
         if (current || !worker_->error().empty() || worker_->status() == "no renderer") {
             if (!config_.screenshot.empty()) write_screenshot(config_.screenshot, fb_width, fb_height);
+            if (!config_.save_exr.empty() && current) {
+                save_frame_exr(config_.save_exr, frame_, config_.save_layers, ui_.tone_map, ui_.display_exposure);
+                std::printf("wrote %s\n", config_.save_exr.c_str());
+            }
             glfwSwapBuffers(window_.get());
             std::printf("view: %d frames, %d spp, %.3g samples/s on %s\n", n + 1, frame_.samples_per_pixel, frame_.samples_per_second,
                         worker_->device_description().c_str());
@@ -568,6 +635,12 @@ private:
     std::vector<std::pair<uint64_t, Clock::time_point>> waiting_;  // scripted changes not yet on screen
     Clock::time_point last_ = Clock::now(), script_end_{};
     bool retone_ = false;
+    ViewMode view_mode_ = ViewMode::image;  // the view menu's choice (A's image; B shows its image)
+    float error_threshold_ = config_.relative_error_threshold;
+    bool view_shown_ = true;                // the texture shows view_mode_, not the image in its stead
+    char exr_path_[512] = "view.exr";
+    char exr_layers_[128] = "albedo,normal,depth,slot,variance,samples";
+    std::optional<std::pair<std::string, render::AovSelection>> pending_exr_;  // "save EXR" pressed, waiting for its layers
     int picked_x_ = -1, picked_y_ = -1;  // of the render, as it is now
     std::vector<PanelSection> sections_;
     DisplaySizing sizing_ = config_.sizing;  // the panel can change it

@@ -118,7 +118,16 @@ bool RenderWorker::take_frame(RenderFrame* out) {
 void RenderWorker::set_denoise(bool on) {
     if (denoise_.exchange(on) == on) return;
     std::lock_guard<std::mutex> lock(mutex_);
-    republish_.store(true);
+    views_changed_ = true;
+    wake_.notify_all();
+}
+
+void RenderWorker::want_views(bool film_statistics, bool first_hits) {
+    if (want_film_statistics_.load() == film_statistics && want_first_hits_.load() == first_hits) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    want_film_statistics_.store(film_statistics);
+    want_first_hits_.store(first_hits);
+    views_changed_ = true;
     wake_.notify_all();
 }
 
@@ -177,6 +186,8 @@ struct RenderWorker::Loop {
     double pixel_seconds = 0.0;  // one sample of one pixel, measured on the last launches; 0: not yet
     film::ImageRgb first_pass;   // the last first pass, enlarged: shown where the full size has not reached
     int first_pass_scale_shown = 1;
+    std::shared_ptr<const render::FirstHitAovs> first_hits;  // of state first_hits_generation, at the full size
+    uint64_t first_hits_generation = 0;
     uint64_t generation = 0, sequence = 0;
     DisplayDenoiser denoiser;    // of the full-size render of the current state
     std::vector<double> row_seconds;  // per pixel and sample, by full-size row, as last measured
@@ -240,10 +251,10 @@ std::unique_ptr<render::Renderer> RenderWorker::make_renderer() {
 
 bool RenderWorker::wait_for_work(const Loop& loop, ViewState* next, uint64_t* next_generation) {
     std::unique_lock<std::mutex> lock(mutex_);
-    // Rendered out: sleep until something changes, or the display's denoising does.
-    if (loop.generation == pending_generation_ && loop.renderer->samples_per_pixel() >= max_samples_ && !republish_.load())
-        wake_.wait(lock, [&] { return stop_.load() || loop.generation != pending_generation_ || republish_.load(); });
-    republish_.store(false);
+    // Rendered out: sleep until something changes, or what the display shows does (views, denoising).
+    if (loop.generation == pending_generation_ && loop.renderer->samples_per_pixel() >= max_samples_)
+        wake_.wait(lock, [&] { return stop_.load() || loop.generation != pending_generation_ || views_changed_; });
+    views_changed_ = false;  // the chunk's publish takes the views and the denoising asked for
     if (stop_.load()) return false;
     if (loop.generation != pending_generation_) {
         *next = pending_;
@@ -359,7 +370,27 @@ void RenderWorker::publish(Loop& loop) {
             error_ = e.what();
         }
     }
+    // The views' inputs, at the full size only (the first pass is another size).
+    film::ImageRgb variance;
+    std::vector<float> samples;
+    const bool full_size = loop.scale == 1 && shown_scale == 1;
+    if (full_size && want_film_statistics_.load()) {
+        variance = renderer.variance();
+        samples = renderer.sample_counts();
+    }
+    if (full_size && want_first_hits_.load() && loop.first_hits_generation != loop.generation) {
+        try {
+            loop.first_hits = std::make_shared<const render::FirstHitAovs>(renderer.first_hit_aovs(render::SampleRanges(0, kViewFirstHitSamples)));
+            loop.first_hits_generation = loop.generation;
+        } catch (const std::exception& e) {  // a failed build of the first-hit program: the views say so
+            std::lock_guard<std::mutex> lock(mutex_);
+            error_ = e.what();
+        }
+    }
     std::lock_guard<std::mutex> lock(mutex_);
+    published_.variance = std::move(variance);
+    published_.samples = std::move(samples);
+    published_.first_hits = full_size && loop.first_hits_generation == loop.generation ? loop.first_hits : nullptr;
     published_.scale = shown_scale;
     published_.denoised_samples = denoised_samples;
     published_.image = std::move(image);

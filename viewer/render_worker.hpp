@@ -38,7 +38,18 @@ struct RenderFrame {
     int scale = 1;                    // > 1: a first pass rendered at 1/scale of the size, shown enlarged (alone, or where
                                       // the first full-size pass has not reached: then samples_per_pixel is 0)
     int denoised_samples = 0;         // > 0: the image is denoised (viewer/display_denoiser.hpp), filtered from this many samples per pixel
+    // What the view menu's other views show (viewer/view_modes), at the full size only and when
+    // asked for (RenderWorker::want_views); else empty. The film's, with the image:
+    film::ImageRgb variance;          // of each pixel's mean
+    std::vector<float> samples;       // finite samples per pixel
+    // The first-hit AOVs of the state, over its first kViewFirstHitSamples sample indices: made
+    // once per state, shared by the frames that show it.
+    std::shared_ptr<const render::FirstHitAovs> first_hits;
 };
+
+// Sample indices the views' first-hit AOVs are averaged over: an antialiased edge, at a few
+// marches per pixel once per state.
+constexpr int kViewFirstHitSamples = 4;
 
 class RenderWorker {
 public:
@@ -63,6 +74,9 @@ public:
     // Whether the published image is denoised (viewer/display_denoiser.hpp); the film is not
     // touched, so a change only publishes the image again.
     void set_denoise(bool on);
+    // Which of RenderFrame's view inputs to publish from now on (each costs time on the worker); a
+    // change publishes a frame even when the render is done.
+    void want_views(bool film_statistics, bool first_hits);
     // The renderer's launch settings (for the pixel inspector's rays); false before it is made.
     bool kernel_settings(kernel::RenderKernelSettings* out) const;
 
@@ -89,7 +103,9 @@ private:
     std::atomic<double> chunk_seconds_;
     int max_samples_;
     std::atomic<bool> stop_{false}, ready_{false};
-    std::atomic<bool> denoise_{false}, republish_{false};
+    std::atomic<bool> denoise_{false};
+    std::atomic<bool> want_film_statistics_{false}, want_first_hits_{false};
+    bool views_changed_ = false;  // under mutex_: want_views or set_denoise asked for another display
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

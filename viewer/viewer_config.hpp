@@ -11,6 +11,7 @@
 #include "film/tone_map.hpp"
 #include "scene/look_dev_references.hpp"
 #include "scene/scene.hpp"
+#include "render/aov_layers.hpp"
 #include "viewer/render_worker.hpp"
 #include "viewer/script.hpp"
 #include "viewer/view_state.hpp"
@@ -53,7 +54,11 @@ struct ViewerConfig {
     std::vector<ScriptedSet> env_loads;  // --load-env PATH@FRAME: as the environment panel's "load map" (key unused)
     std::vector<ScriptedSet> reference_loads;  // --load-references LIST@FRAME: as the environment panel's checkboxes (key unused)
     std::vector<ScriptedSet> resizes;    // --resize WxH@FRAME: the window resized, as a window manager does (key unused)
+    std::vector<ScriptedSet> view_modes; // --view-mode NAME@FRAME: the view menu's choice (key unused; checked by parse_view_mode)
+    float relative_error_threshold = 0.05f;  // the relative-error view's, until the menu changes it
     std::string screenshot;            // PNG of the whole window at the last frame
+    std::string save_exr;              // --save-exr: the frame's EXR at the last frame, with the layers of save_layers
+    render::AovSelection save_layers;
     std::string save_preset;           // written on exit
     std::string export_scene, export_name;  // written on exit
     std::vector<std::array<int, 2>> inspect;  // pixels whose inspector lines are printed at the end

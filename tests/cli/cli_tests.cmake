@@ -347,8 +347,10 @@ cli_bad_input(NAME render.unknown_light_sampling ABSENT ${PNG} EXPECT "${E}--lig
 cli_bad_input(NAME render.unknown_light_selection ABSENT ${PNG} EXPECT "${E}--light-selection: unknown value \"random\" "
               ARGS ${RENDER} --light-selection random)
 # --aov: an unknown AOV, and AOVs asked of a PNG (no layers), stop the command before the render
-cli_bad_input(NAME render.unknown_aov ABSENT ${PNG} EXPECT "${E}--aov: unknown AOV \"albdo\" \\(expected a comma-separated list of albedo, normal, depth\\)$"
+cli_bad_input(NAME render.unknown_aov ABSENT ${PNG} EXPECT "${E}--aov: unknown AOV \"albdo\" \\(expected a comma-separated list of albedo, normal, depth, slot, variance, samples\\)$"
               ARGS ${RENDER} --aov albedo,albdo)
+cli_bad_input(NAME render.lt_variance ABSENT ${CLI_SCRATCH}/lt_variance.exr EXPECT "${E}--aov: variance: the light tracer's image is all splats"
+              ARGS render scenes/metaballs.json --size 16x16 --spp 1 --integrator lt --aov variance -o ${CLI_SCRATCH}/lt_variance.exr)
 cli_bad_input(NAME preview.aov_to_png ABSENT ${PNG} EXPECT "${E}--aov: AOVs are EXR layers, and .*\\.png is not an \\.exr"
               ARGS preview --size 8x8 --spp 1 --aov depth -o ${PNG})
 cli_bad_input(NAME render.no_sample_slot ABSENT ${PNG} EXPECT "${E}${D}/scene_no_sample\\.json: materials: no material named \"sample\""
@@ -521,6 +523,12 @@ cli_bad_input(NAME view.unknown_display EXPECT "${E}--display: unknown value \"s
 cli_bad_input(NAME view.unknown_section EXPECT "${E}--open: unknown section \"Lobes\" \\(Material, Checks, Lobe, Environment, Presets, Inspector, Help, all\\)$"
               ARGS view --open Lobes)
 cli_bad_input(NAME view.max_render_pixels_too_few EXPECT "${E}--max-render-pixels: must be in \\[64, 268435456\\]$" ARGS view --max-render-pixels 10)
+cli_bad_input(NAME view.unknown_view_mode EXPECT "${E}--view-mode: unknown view \"albedoo\" \\(expected one of image, albedo, normal, depth, slot, samples, variance, false-colour, relative-error, gamut\\)$"
+              ARGS view --frames 2 --view-mode albedoo@1)
+cli_bad_input(NAME view.error_threshold_not_positive EXPECT "${E}--error-threshold: must be a relative standard error above 0, at most 1e6$"
+              ARGS view --frames 2 --error-threshold 0)
+cli_bad_input(NAME view.save_layers_without_exr EXPECT "${E}--save-layers: needs --save-exr$" ARGS view --frames 2 --save-layers depth)
+cli_bad_input(NAME view.save_layers_unknown EXPECT "${E}--save-layers: unknown AOV \"dpth\" " ARGS view --frames 2 --save-exr v.exr --save-layers dpth)
 cli_bad_input(NAME view.move_bad_orbit EXPECT "${E}--move: orbit: expected DX,DY in pixels, got \"3\"$" ARGS view --frames 2 --move orbit=3@1)
 # The window itself, under Xvfb with Mesa's software OpenGL when there is no DISPLAY (skipped, exit
 # 77, when neither is there). The Debian python3: the PNGs are read with its matplotlib.
@@ -528,7 +536,7 @@ find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT VIEW_TEST_PYTHON)
   find_program(VIEW_TEST_PYTHON python3)
 endif()
-foreach(view_case accumulate set preset export env references background resize sections denoise)
+foreach(view_case accumulate set preset export env references background resize sections denoise views)
   add_test(NAME cli.view.${view_case}
            COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
   # One at a time: xvfb-run -a started twice at once can pick the same display number.

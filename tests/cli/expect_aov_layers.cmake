@@ -1,19 +1,26 @@
-# cmake -P driver: `dtoadq preview --aov albedo,normal,depth` (host build, a few paths) writes the
-# first-hit AOVs as layers of its EXR that OpenImageIO (oiiotool) reads with the names Blender and
-# Mitsuba give them: albedo.R/G/B, normal.X/Y/Z, depth.Z, beside R, G, B and the film's channels.
+# cmake -P driver: `dtoadq preview --aov albedo,normal,depth,slot,variance,samples` (host build, a
+# few paths) writes the AOVs as layers of its EXR that OpenImageIO (oiiotool) reads with the names
+# Blender and Mitsuba give them: albedo.R/G/B, normal.X/Y/Z, depth.Z, IndexMA.X, variance.R/G/B,
+# samples.X, beside R, G, B and the film's channels (its squares among them); every pixel's
+# samples.X is the spp (oiiotool's statistics of the channel: min and max 3).
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-execute_process(COMMAND ${EXE} preview --aov albedo,normal,depth --device host --spp 1 --size 16x12 --quiet -o aov.exr
+execute_process(COMMAND ${EXE} preview --aov albedo,normal,depth,slot,variance,samples --device host --spp 3 --size 16x12 --quiet -o aov.exr
                 WORKING_DIRECTORY ${WORK} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "preview --aov: status ${status}\n${out}\n${err}")
 endif()
 find_program(OIIOTOOL oiiotool REQUIRED)
 execute_process(COMMAND ${OIIOTOOL} --info -v aov.exr WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE info)
-foreach(expected "16 x   12, 17 channel, float" "channel list: [^\n]*R, G, B" "albedo\\.R" "albedo\\.G" "albedo\\.B" "normal\\.X" "normal\\.Y"
-                 "normal\\.Z" "depth\\.Z" "film\\.sum\\.R")
+foreach(expected "16 x   12, 25 channel, float" "channel list: [^\n]*R, G, B" "albedo\\.R" "albedo\\.G" "albedo\\.B" "normal\\.X" "normal\\.Y"
+                 "normal\\.Z" "depth\\.Z" "IndexMA\\.X" "variance\\.R" "variance\\.G" "variance\\.B" "samples\\.X" "film\\.sum\\.R"
+                 "film\\.squares\\.B")
   if(NOT info MATCHES "${expected}")
     message(FATAL_ERROR "aov.exr's header lacks '${expected}':\n${info}")
   endif()
 endforeach()
+execute_process(COMMAND ${OIIOTOOL} aov.exr --ch samples.X --printstats WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE stats)
+if(NOT stats MATCHES "Stats Min: 3\\.0* " OR NOT stats MATCHES "Stats Max: 3\\.0* ")
+  message(FATAL_ERROR "samples.X is not 3 on every pixel:\n${stats}")
+endif()
 message(STATUS "ok")

@@ -36,7 +36,7 @@ function(expect_header file)
     endif()
   endforeach()
 endfunction()
-expect_header(out.exr "48 x   32, 10 channel, float" "channel list: R, G, B, film.nonfinite, film.splat.R, film.splat.G, film.splat.B, film.sum.R, film.sum.G, film.sum.B" "dtoadq:sample_ranges: \"0:4\"" "dtoadq:spp: 4" "dtoadq:material: \"gold\"" "dtoadq:environment: \".*studio.exr\""
+expect_header(out.exr "48 x   32, 13 channel, float" "channel list: R, G, B, film.nonfinite, film.splat.R, film.splat.G, film.splat.B, film.squares.R, film.squares.G, film.squares.B, film.sum.R, film.sum.G, film.sum.B" "dtoadq:sample_ranges: \"0:4\"" "dtoadq:spp: 4" "dtoadq:material: \"gold\"" "dtoadq:environment: \".*studio.exr\""
               "dtoadq:ibl_sampling: \"mis\"" "dtoadq:seed: \"3\"" "dtoadq:nonfinite_samples: \"0\"" "dtoadq:seconds: ")
 
 run(preview --env constant:0.5,0.5,0.5 --time 1 --size 32x32 --quiet -o timed.png)
@@ -46,7 +46,7 @@ foreach(device cpu host)
   run(render ${SOURCE}/scenes/metaballs.json --spp 2 --size 32x24 --seed 5 --light-selection uniform --device ${device} --quiet
       -o scene_${device}.exr)
   expect_magic(scene_${device}.png 89504e470d0a1a0a)
-  expect_header(scene_${device}.exr "32 x   24, 10 channel, float" "dtoadq:spp: 2" "dtoadq:integrator: \"pt\""
+  expect_header(scene_${device}.exr "32 x   24, 13 channel, float" "dtoadq:spp: 2" "dtoadq:integrator: \"pt\""
                 "dtoadq:light_sampling: \"mis\"" "dtoadq:light_selection: \"uniform\"" "dtoadq:scene: \".*metaballs.json\"")
 endforeach()
 message(STATUS "ok")

@@ -6,7 +6,8 @@ a scripted --set changes the model and not the backdrop, a saved preset loads ba
 map loaded in the window replaces the environment, or, when missing, leaves it and shows the error;
 the look-dev references come and go, the backdrop's opacity and the shadow catcher follow the
 environment panel's script, a resize changes the render area and the render, every panel section
-opens without overlap, and the denoised display is nearer a longer render than the raw one.
+opens without overlap, the denoised display is nearer a longer render than the raw one, and every
+view of the view menu shows what it should.
 
 usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
 """
@@ -269,9 +270,78 @@ def case_sections():
     print("sections: %s" % rects)
 
 
+def case_views():
+    """Every view of the menu (--view-mode) shows what it should where the model and the sky are:
+    the first-hit views black on the sky, the slot view the model's slot colour, samples the spp,
+    the sky's false colour its band (luminance 0.40: 1.15 stops above 18 % grey), its variance
+    none (every sample is the sky), the relative-error view marking the model at 2 spp and not the
+    sky, the gamut view marking the sky once the exposure takes its blue above 1; --save-exr writes
+    the chosen layers."""
+    def shot(mode, extra=()):
+        name = "view_%s.png" % mode
+        view(["--seed", "1", "--view-mode", "%s@1" % mode] + list(extra), name)
+        return read_png(name)[:SIZE, :SIZE]
+    if shot("image").std() < 5.0:
+        fail("the image view is blank")
+    for mode in ("albedo", "normal", "depth", "slot"):
+        v = shot(mode)
+        if abs(mean(v, CORNERS[0])).max() > 0.5 or abs(mean(v, CORNERS[1])).max() > 0.5:
+            fail("the %s view is not black on the sky: %s" % (mode, mean(v, CORNERS[0])))
+        if mean(v, CENTRE).sum() < 60.0:
+            fail("the %s view is black on the model: %s" % (mode, mean(v, CENTRE)))
+        if mode == "albedo" and not mean(v, CENTRE)[0] > mean(v, CENTRE)[1] + 20.0:
+            fail("the albedo view of the red model is not red: %s" % mean(v, CENTRE))
+        if mode == "depth" and abs(v[32, 32, 0] - v[32, 32, 2]) > 0.5:
+            fail("the depth view is not grey: %s" % v[32, 32])
+        if mode == "slot" and abs(v[32, 32] - (230, 159, 0)).max() > 0.5:  # slot 0's colour
+            fail("the slot view does not show slot 0 at the centre: %s" % v[32, 32])
+    # Every pixel holds the complete passes' n samples, and those the pass in progress has reached
+    # (the first pixels in row order) one more: white, then n / (n + 1) grey after them.
+    codes = shot("samples")[:, :, 0].reshape(-1).round()
+    levels = sorted(set(codes))
+    lower = codes < 255
+    if levels[-1] != 255 or len(levels) > 2 or (lower.any() and not lower[lower.argmax():].all()) or levels[0] < 127:
+        fail("the samples view is not white up to where the pass in progress has reached: levels %s" % levels)
+    v = shot("variance")
+    if mean(v, CORNERS[0]).max() > 8.0 or not mean(v, CENTRE).mean() > mean(v, CORNERS[0]).mean() + 20.0:
+        fail("the variance view: sky %s, model %s" % (mean(v, CORNERS[0]), mean(v, CENTRE)))
+    v = shot("false-colour")
+    if abs(mean(v, CORNERS[0]) - (230, 220, 60)).max() > 0.5:  # the band from +1 to +2 stops
+        fail("the false-colour view of the sky is %s, not the +1 band's colour" % mean(v, CORNERS[0]))
+    v = shot("relative-error", ["--error-threshold", "0.05"])
+    red = ((v[:, :, 0] > 250) & (v[:, :, 1] < 5) & (v[:, :, 2] < 5))
+    if red[CENTRE].mean() < 0.5 or red[CORNERS[0]].any() or red[CORNERS[1]].any():
+        fail("the relative-error view marks %.2f of the model and %d sky pixels" % (red[CENTRE].mean(), red[CORNERS[0]].sum()))
+    v = shot("gamut")
+    if red_share(v, CORNERS[0]) > 0.0 or abs(v[2, 2, 0] - v[2, 2, 2]) > 0.5:
+        fail("the gamut view marks the sky at exposure 0: %s" % v[2, 2])
+    v = shot("gamut", ["--exposure", "1"])
+    if red_share(v, CORNERS[0]) < 1.0:
+        fail("the gamut view does not mark the sky whose blue is 2 after the exposure: %s" % v[2, 2])
+    # --save-exr: the frame with the chosen layers, named as render --aov names them
+    out = view(["--seed", "1", "--save-exr", "views.exr", "--save-layers", "albedo,depth,slot,variance,samples"], "save.png")
+    if "wrote views.exr" not in out:
+        fail("--save-exr wrote nothing: " + out)
+    info = subprocess.run(["oiiotool", "--info", "-v", "views.exr"], cwd=SCRATCH, capture_output=True, text=True).stdout
+    channels = re.search(r"channel list: (.*)", info)
+    expected = "R, G, B, IndexMA.X, albedo.R, albedo.G, albedo.B, depth.Z, samples.X, variance.R, variance.G, variance.B"
+    if not channels or channels.group(1).strip() != expected:
+        fail("views.exr's channels: %s, expected %s" % (channels.group(1) if channels else info, expected))
+    stats = subprocess.run(["oiiotool", "views.exr", "--ch", "samples.X", "--printstats"], cwd=SCRATCH, capture_output=True,
+                           text=True).stdout
+    low = re.search(r"Stats Min: ([0-9.]+)", stats)
+    if not low or float(low.group(1)) < 2.0:
+        fail("views.exr's samples.X is under the 2 spp the run waited for: " + stats)
+
+
+def red_share(image, region):
+    r = image[region[0], region[1]]
+    return ((r[:, :, 0] > 250) & (r[:, :, 1] < 5) & (r[:, :, 2] < 5)).mean()
+
+
 CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env,
          "references": case_references, "background": case_background, "resize": case_resize, "sections": case_sections,
-         "denoise": case_denoise}
+         "denoise": case_denoise, "views": case_views}
 
 if __name__ == "__main__":
     if not os.environ.get("DISPLAY"):
