@@ -101,7 +101,7 @@ void run_bench_denoise(const BenchDenoiseCommand& c) {
                 row.render_seconds = renderer->statistics().render_seconds;
                 const film::ImageRgb raw = renderer->image();
                 Clock::time_point aov_start = Clock::now();
-                const film::DenoiseGuide guide = render::denoise_guide(renderer->first_hit_aovs());
+                const film::DenoiseGuide guide = render::denoise_guide(renderer->first_hit_aovs(), renderer->variance());
                 row.aov_seconds = seconds_since(aov_start);
                 // the filter's three steps timed apart: demodulation and its variance estimate on
                 // the host, the passes where the render runs, remodulation on the host

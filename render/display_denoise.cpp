@@ -1,12 +1,24 @@
 #include "render/display_denoise.hpp"
 
+#include <cmath>
+
 namespace lab::render {
 
-film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs) {
+film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs, const film::ImageRgb& variance) {
     film::DenoiseGuide guide;
     guide.albedo = aovs.albedo;
     guide.normal = aovs.normal;
     guide.depth = aovs.depth;
+    guide.variance.resize(variance.pixel_count());
+    for (size_t p = 0; p < guide.variance.size(); ++p) {
+        const float* v = variance.rgb.data() + 3 * p;
+        const float sigma = 0.2126f * std::sqrt(v[0]) + 0.7152f * std::sqrt(v[1]) + 0.0722f * std::sqrt(v[2]);
+        if (!std::isfinite(sigma)) {
+            guide.variance.clear();
+            break;
+        }
+        guide.variance[p] = sigma * sigma;
+    }
     return guide;
 }
 

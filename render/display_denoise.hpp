@@ -12,8 +12,12 @@
 
 namespace lab::render {
 
-// The filter's guide from the render's first-hit AOVs (the variance left to be estimated from the image).
-film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs);
+// The filter's guide: the render's first-hit AOVs, and the variance of each pixel's mean luminance
+// from the film's per-channel variances (Renderer::variance), (sum_c w_c sigma_c)^2: the channels
+// taken as fully correlated, as one path carries all three, which bounds the luminance's variance
+// from above. Where any pixel has no variance (NaN: fewer than 2 samples), the variance is left
+// out, for film::demodulate to estimate from the image.
+film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs, const film::ImageRgb& variance);
 
 // The denoised image, its passes on `renderer`'s device.
 film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const Renderer& renderer,

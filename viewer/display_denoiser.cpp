@@ -5,7 +5,7 @@
 namespace lab::viewer {
 
 void DisplayDenoiser::restart() {
-    guide_ = film::DenoiseGuide();
+    first_hits_ = render::FirstHitAovs();
     guide_samples_ = 0;
     last_ = film::ImageRgb();
     last_samples_ = 0;
@@ -18,11 +18,11 @@ film::ImageRgb DisplayDenoiser::shown(const render::Renderer& renderer, const fi
     const bool first = last_samples_ == 0;
     const bool due = samples > last_samples_ && (first || last || since_last * kTimeShare >= cost_seconds_ * (1.0 - kTimeShare));
     if (due && renderer.pass_pixels() == 0 && samples > 0 && (guide_samples_ == 0 || (samples >= 2 * guide_samples_ && guide_samples_ < kGuideSamples))) {
-        guide_ = render::denoise_guide(renderer.first_hit_aovs());
+        first_hits_ = renderer.first_hit_aovs();
         guide_samples_ = samples;
     }
     if (due && guide_samples_ > 0) {
-        last_ = render::denoised(raw, guide_, renderer);
+        last_ = render::denoised(raw, render::denoise_guide(first_hits_, renderer.variance()), renderer);
         last_samples_ = samples;
         last_run_ = Clock::now();
         cost_seconds_ = std::chrono::duration<double>(last_run_ - start).count();

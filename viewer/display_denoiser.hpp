@@ -3,9 +3,9 @@
 // the filter costs about as much as a sample of every pixel, so it runs at most a share of the
 // worker's time: when the render has new samples and the time since the last filter is at least
 // its cost x (1 - share) / share; in between, the last denoised image of the state stays shown.
-// Its guide, the first-hit AOVs, is taken when a pass is complete (Renderer::first_hit_aovs reads
-// whole passes), at 1, 2, 4, 8 and 16 samples per pixel, so that its edges are antialiased like the
-// image's; after that it no longer changes.
+// Its guide is the film's variance of each pixel's mean, read at each filter, and the first-hit
+// AOVs, taken when a pass is complete (Renderer::first_hit_aovs reads whole passes) at 1, 2, 4, 8
+// and 16 samples per pixel, so that their edges are antialiased like the image's, and then kept.
 #pragma once
 
 #include <chrono>
@@ -34,7 +34,7 @@ public:
 
 private:
     using Clock = std::chrono::steady_clock;
-    film::DenoiseGuide guide_;
+    render::FirstHitAovs first_hits_;  // the guide's; the variance is the film's at each filter
     int guide_samples_ = 0;
     film::ImageRgb last_;
     int last_samples_ = 0;
