@@ -53,8 +53,8 @@ float dielectric_fresnel_average_of(float ior);
 // is 1 - E), by the lobe's visible-normal sampler at strata x strata; the Fresnel reflectance itself
 // where the interface is smooth.
 double dielectric_reflection_albedo(float roughness, float ior, float mu, int strata);
-// E(mu) / SHEEN_TABLE_SCALE of the fuzz's sheen lobe (brdf/sheen.h) by the cosine-weighted midpoint
-// rule at strata x strata.
+// E(mu) / SHEEN_TABLE_SCALE of the fuzz's sheen lobe (brdf/sheen.h) by the midpoint rule over
+// 2 strata x strata cells even in sqrt(mu_i) and phi.
 double sheen_albedo(float roughness, float mu, int strata);
 // The sheen's lobe peaks near the horizon at low roughness: its table takes more strata per side.
 inline constexpr int kSheenStrataFactor = 4;
