@@ -8,7 +8,9 @@ namespace brdf {
 using namespace single_source;
 #include "bsdf.h"
 #include "merl.h"
-// lobes of the OpenPBR model, which no model includes yet (docs/materials.md)
+// the OpenPBR model's lobes, for the tests and table generators that call them on their own
+#include "dielectric_reflection.h"
 #include "eon_diffuse.h"
+#include "sheen.h"
 #include "thin_film.h"
 }  // namespace brdf

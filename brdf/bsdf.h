@@ -23,6 +23,9 @@
 #if BRDF_FEATURE_MEASURED
 #include "measured.h"
 #endif
+#if BRDF_FEATURE_OPENPBR
+#include "openpbr_model.h"
+#endif
 
 SS_FN float3 bsdf_eval_clamped(const Material* clamped, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
     Material m = *clamped;
@@ -36,6 +39,9 @@ SS_FN float3 bsdf_eval_clamped(const Material* clamped, GLOBAL_MEM const float* 
 #endif
 #if BRDF_FEATURE_MEASURED
     if (m.model == BRDF_MODEL_MEASURED) return merl_eval(measured + m.measured_offset, wo, wi);
+#endif
+#if BRDF_FEATURE_OPENPBR
+    if (m.model == BRDF_MODEL_OPENPBR) return openpbr_eval(&m, wo, wi);
 #endif
     return float3_splat(0.0f);
 }
@@ -53,6 +59,9 @@ SS_FN float bsdf_pdf_clamped(const Material* clamped, GLOBAL_MEM const float* me
 #if BRDF_FEATURE_MEASURED
     if (m.model == BRDF_MODEL_MEASURED) return measured_pdf(measured + m.measured_offset, wo, wi);
 #endif
+#if BRDF_FEATURE_OPENPBR
+    if (m.model == BRDF_MODEL_OPENPBR) return openpbr_pdf(&m, wo, wi);
+#endif
     return 0.0f;
 }
 
@@ -69,6 +78,9 @@ SS_FN BsdfSample bsdf_sample_clamped(const Material* clamped, GLOBAL_MEM const f
 #endif
 #if BRDF_FEATURE_MEASURED
     if (m.model == BRDF_MODEL_MEASURED) s = measured_sample(measured + m.measured_offset, wo, u);
+#endif
+#if BRDF_FEATURE_OPENPBR
+    if (m.model == BRDF_MODEL_OPENPBR) s = openpbr_sample(&m, wo, u);
 #endif
     s.wi = rotate_about_normal(s.wi, m.tangent_rotation);
     return s;

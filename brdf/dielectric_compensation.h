@@ -28,27 +28,11 @@ typedef struct DielectricEnergy {
 
 /* E_s(mu) or E_avg,s for side 0 (outside) or 1 (inside), GGX of roughness r, index eta. */
 SS_FN float dielectric_energy_albedo(int side, float r, float eta, float mu) {
-    float x = energy_grid_ior_coordinate(eta);
-    int k = min((int)x, DIELECTRIC_GRID_IOR - 2);
-    float y = energy_grid_node_coordinate(r, 0.0f, 1.0f, DIELECTRIC_GRID_ROUGHNESS);
-    int i = min((int)y, DIELECTRIC_GRID_ROUGHNESS - 2);
-    float z = energy_grid_mu_coordinate_of(mu, DIELECTRIC_GRID_MU);
-    float e[2];
-    for (int dk = 0; dk < 2; ++dk) {
-        CONSTANT_MEM const ushort* slice = energy_dielectric_albedo + ((side * DIELECTRIC_GRID_IOR + k + dk) * DIELECTRIC_GRID_ROUGHNESS + i) * DIELECTRIC_GRID_MU;
-        e[dk] = mix(energy_grid_lerp_albedo(slice, DIELECTRIC_GRID_MU, z), energy_grid_lerp_albedo(slice + DIELECTRIC_GRID_MU, DIELECTRIC_GRID_MU, z),
-                    y - (float)i);
-    }
-    return mix(e[0], e[1], x - (float)k);
+    return energy_grid_ior_albedo(energy_dielectric_albedo + side * DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU, r, eta, mu);
 }
 
 SS_FN float dielectric_energy_average(int side, float r, float eta) {
-    float x = energy_grid_ior_coordinate(eta);
-    int k = min((int)x, DIELECTRIC_GRID_IOR - 2);
-    float y = energy_grid_node_coordinate(r, 0.0f, 1.0f, DIELECTRIC_GRID_ROUGHNESS);
-    CONSTANT_MEM const float* row = energy_dielectric_average + (side * DIELECTRIC_GRID_IOR + k) * DIELECTRIC_GRID_ROUGHNESS;
-    return mix(energy_grid_lerp(row, DIELECTRIC_GRID_ROUGHNESS, y), energy_grid_lerp(row + DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_ROUGHNESS, y),
-               x - (float)k);
+    return energy_grid_ior_average(energy_dielectric_average + side * DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS, r, eta);
 }
 
 SS_FN float dielectric_fresnel_average(float eta) {

@@ -29,16 +29,6 @@ typedef struct MicrofacetEnergy {
 /* The perceptual roughness of the isotropic distribution of alpha = sqrt(alpha_x alpha_y). */
 SS_FN float energy_roughness(Microfacet mf) { return sqrt(sqrt(mf.ax * mf.ay)); }
 
-/* E(mu) of a (roughness, mu) table of ENERGY_GRID_ROUGHNESS rows, interpolated in both. */
-SS_FN float energy_table_albedo(CONSTANT_MEM const ushort* table, float r, float mu) {
-    float x = energy_grid_roughness_coordinate(r);
-    int i = min((int)x, ENERGY_GRID_ROUGHNESS - 2);
-    float m = energy_grid_mu_coordinate(mu);
-    float lo = energy_grid_lerp_albedo(table + i * ENERGY_GRID_MU, ENERGY_GRID_MU, m);
-    float hi = energy_grid_lerp_albedo(table + (i + 1) * ENERGY_GRID_MU, ENERGY_GRID_MU, m);
-    return mix(lo, hi, x - (float)i);
-}
-
 /* The Hyper-Cauchy shape slice below g, and the weight of the one above. */
 SS_FN int energy_shape_slice(float g, float* weight) {
     float s = energy_grid_shape_coordinate(g);

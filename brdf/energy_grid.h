@@ -81,4 +81,40 @@ SS_FN float energy_grid_lerp_albedo(CONSTANT_MEM const ushort* row, int n, float
     return mix(energy_grid_albedo_value(row, i), energy_grid_albedo_value(row, i + 1), t);
 }
 
+/* E(mu) of a (roughness, mu) table of ENERGY_GRID_ROUGHNESS rows, interpolated in both. */
+SS_FN float energy_table_albedo(CONSTANT_MEM const ushort* table, float r, float mu) {
+    float x = energy_grid_roughness_coordinate(r);
+    int i = min((int)x, ENERGY_GRID_ROUGHNESS - 2);
+    float m = energy_grid_mu_coordinate(mu);
+    float lo = energy_grid_lerp_albedo(table + i * ENERGY_GRID_MU, ENERGY_GRID_MU, m);
+    float hi = energy_grid_lerp_albedo(table + (i + 1) * ENERGY_GRID_MU, ENERGY_GRID_MU, m);
+    return mix(lo, hi, x - (float)i);
+}
+
+/* E(mu) of an [ior][roughness][mu] table on the dielectric grid, interpolated in all three. */
+SS_FN float energy_grid_ior_albedo(CONSTANT_MEM const ushort* table, float r, float eta, float mu) {
+    float x = energy_grid_ior_coordinate(eta);
+    int k = min((int)x, DIELECTRIC_GRID_IOR - 2);
+    float y = energy_grid_node_coordinate(r, 0.0f, 1.0f, DIELECTRIC_GRID_ROUGHNESS);
+    int i = min((int)y, DIELECTRIC_GRID_ROUGHNESS - 2);
+    float z = energy_grid_mu_coordinate_of(mu, DIELECTRIC_GRID_MU);
+    float e[2];
+    for (int dk = 0; dk < 2; ++dk) {
+        CONSTANT_MEM const ushort* slice = table + ((k + dk) * DIELECTRIC_GRID_ROUGHNESS + i) * DIELECTRIC_GRID_MU;
+        e[dk] = mix(energy_grid_lerp_albedo(slice, DIELECTRIC_GRID_MU, z), energy_grid_lerp_albedo(slice + DIELECTRIC_GRID_MU, DIELECTRIC_GRID_MU, z),
+                    y - (float)i);
+    }
+    return mix(e[0], e[1], x - (float)k);
+}
+
+/* E_avg of an [ior][roughness] table on the dielectric grid. */
+SS_FN float energy_grid_ior_average(CONSTANT_MEM const float* table, float r, float eta) {
+    float x = energy_grid_ior_coordinate(eta);
+    int k = min((int)x, DIELECTRIC_GRID_IOR - 2);
+    float y = energy_grid_node_coordinate(r, 0.0f, 1.0f, DIELECTRIC_GRID_ROUGHNESS);
+    CONSTANT_MEM const float* row = table + k * DIELECTRIC_GRID_ROUGHNESS;
+    return mix(energy_grid_lerp(row, DIELECTRIC_GRID_ROUGHNESS, y), energy_grid_lerp(row + DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_ROUGHNESS, y),
+               x - (float)k);
+}
+
 #endif

@@ -16,8 +16,11 @@
 #ifndef BRDF_FEATURE_MEASURED
 #define BRDF_FEATURE_MEASURED 1 /* MERL tables and their sampler (brdf/measured.h) */
 #endif
+#ifndef BRDF_FEATURE_OPENPBR
+#define BRDF_FEATURE_OPENPBR 1 /* OpenPBR Surface's layers (brdf/openpbr_model.h) and their tables */
+#endif
 #ifndef BRDF_FEATURE_DIFFUSE
-#define BRDF_FEATURE_DIFFUSE 1 /* Lambert */
+#define BRDF_FEATURE_DIFFUSE 1 /* Lambert (lab), energy-preserving Oren-Nayar (openpbr) */
 #endif
 #ifndef BRDF_FEATURE_RETROREFLECTION
 #define BRDF_FEATURE_RETROREFLECTION 1 /* Disney diffuse */
@@ -30,6 +33,15 @@
 #endif
 #ifndef BRDF_FEATURE_TRANSMISSION
 #define BRDF_FEATURE_TRANSMISSION 1 /* smooth and rough dielectric */
+#endif
+#ifndef BRDF_FEATURE_COAT
+#define BRDF_FEATURE_COAT 1 /* openpbr: the clear coat */
+#endif
+#ifndef BRDF_FEATURE_FUZZ
+#define BRDF_FEATURE_FUZZ 1 /* openpbr: the fuzz's sheen and its table */
+#endif
+#ifndef BRDF_FEATURE_THIN_FILM
+#define BRDF_FEATURE_THIN_FILM 1 /* openpbr: thin-film iridescence on the dielectric specular */
 #endif
 #ifndef BRDF_FEATURE_ENERGY_COMPENSATION
 #define BRDF_FEATURE_ENERGY_COMPENSATION 1 /* Kulla-Conty multiple scattering and its tables */

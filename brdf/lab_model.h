@@ -29,15 +29,10 @@
 #include "glossy.h"
 #endif
 #if BRDF_FEATURE_TRANSMISSION
-#include "dielectric.h"
+#include "dielectric_lobe.h"
 #endif
 #if BRDF_FEATURE_ENERGY_COMPENSATION
 #include "energy_compensation.h"
-#if BRDF_FEATURE_TRANSMISSION
-#if BRDF_FEATURE_GGX
-#include "dielectric_compensation.h"
-#endif
-#endif
 #endif
 
 typedef struct LobeWeights {
@@ -108,8 +103,6 @@ SS_FN float3 lab_multiple_scattering_eval(const Material* m, Microfacet mf, floa
     return f_ms * multiple_scattering_eval(mf, wo, wi);
 }
 #endif
-
-SS_FN float mean3(float3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 
 #if BRDF_FEATURE_GLOSSY
 /* How much more peaked than cosine-weighted the glossy lobe is at wo: pi f cos_i at the mirror
@@ -206,13 +199,8 @@ SS_FN float3 lab_eval_lobes(const Material* m, LobeWeights w, Microfacet mf, flo
 #endif
     }
 #if BRDF_FEATURE_TRANSMISSION
-    if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf)) {
-        float interface = rough_dielectric_eval(mf, m->ior, wo, wi);
-#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GGX
-        if (lab_dielectric_compensated(m, mf)) interface += dielectric_multiple_scattering_eval(mf, m->ior, wo, wi);
-#endif
-        f += material_albedo(m) * (w.transmission * interface);
-    }
+    if (w.transmission > 0.0f && !lab_transmission_is_smooth(m, mf))
+        f += material_albedo(m) * (w.transmission * dielectric_lobe_eval(mf, m->ior, lab_dielectric_compensated(m, mf), wo, wi));
 #endif
     return f;
 }
@@ -230,17 +218,8 @@ SS_FN float lab_pdf_lobes(const Material* m, Microfacet mf, LobeChoice c, float3
 #endif
     }
 #if BRDF_FEATURE_TRANSMISSION
-    if (c.transmission > 0.0f && !lab_transmission_is_smooth(m, mf)) {
-        float interface = rough_dielectric_pdf(mf, m->ior, wo, wi);
-#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GGX
-        /* the multiple-scattering lobes are picked with their share of the white interface's albedo */
-        if (lab_dielectric_compensated(m, mf)) {
-            DielectricEnergy d = dielectric_energy(mf, m->ior, wo);
-            interface = (1.0f - d.lost_o) * interface + d.lost_o * dielectric_multiple_scattering_pdf(d, wo, wi);
-        }
-#endif
-        pdf += c.transmission * interface;
-    }
+    if (c.transmission > 0.0f && !lab_transmission_is_smooth(m, mf))
+        pdf += c.transmission * dielectric_lobe_pdf(mf, m->ior, lab_dielectric_compensated(m, mf), wo, wi);
 #endif
     return pdf;
 }
@@ -304,20 +283,7 @@ SS_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
             s.pdf *= c.transmission;
             return s;
         }
-        bool drawn = false;
-#if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GGX
-        if (lab_dielectric_compensated(m, mf)) {
-            if (wo.z == 0.0f) return s;
-            DielectricEnergy d = dielectric_energy(mf, m->ior, wo);
-            if (u_interface < d.lost_o) {
-                wi = dielectric_multiple_scattering_sample(d, wo, u_interface / d.lost_o, u.y, u.z);
-                drawn = true;
-            } else {
-                u_interface = fmin((u_interface - d.lost_o) / (1.0f - d.lost_o), 0.99999994f);
-            }
-        }
-#endif
-        if (!drawn && !rough_dielectric_sample_direction(mf, m->ior, wo, u_interface, u.y, u.z, &wi)) return s;
+        if (!dielectric_lobe_sample_direction(mf, m->ior, lab_dielectric_compensated(m, mf), wo, u_interface, u.y, u.z, &wi)) return s;
 #else
         return s;
 #endif

@@ -9,6 +9,7 @@
 #define BRDF_MODEL_LAB 0        /* the physically plausible default model */
 #define BRDF_MODEL_DTOADQ2017 1 /* the 2017 write-up's formulas, kept for comparison */
 #define BRDF_MODEL_MEASURED 2   /* a MERL table (brdf/measured.h); measured_offset says where it lies */
+#define BRDF_MODEL_OPENPBR 3    /* OpenPBR Surface 1.1's layers (brdf/openpbr_model.h) */
 
 #define BRDF_DISTRIBUTION_GGX 0
 #define BRDF_DISTRIBUTION_HYPER_CAUCHY 1
@@ -33,6 +34,28 @@ typedef struct Material {
     int distribution;           /* BRDF_DISTRIBUTION_*, used by glossy and rough transmission */
     int energy_compensation;    /* 1: microfacet lobes get Kulla-Conty multiple scattering; 0: single scattering only */
     int measured_offset;        /* BRDF_MODEL_MEASURED: first float of its block in the measured-tables buffer */
+    /* BRDF_MODEL_OPENPBR's inputs that have no field above; the others share one (base_color is albedo,
+     * base_metalness metallic, specular_roughness roughness, specular_roughness_anisotropy anisotropic,
+     * specular_ior ior, transmission_weight weight_transmission, subsurface_weight subsurface,
+     * subsurface_scatter_anisotropy subsurface_asymmetry). Meanings: docs/materials.md. */
+    float base_weight;
+    float base_diffuse_roughness;
+    float specular_weight;
+    float specular_color[3];
+    float transmission_color[3];
+    float subsurface_color[3];
+    float coat_weight;
+    float coat_color[3];
+    float coat_roughness;
+    float coat_roughness_anisotropy;
+    float coat_ior;
+    float coat_darkening;
+    float fuzz_weight;
+    float fuzz_color[3];
+    float fuzz_roughness;
+    float thin_film_weight;
+    float thin_film_thickness;  /* micrometres */
+    float thin_film_ior;
 } Material;
 
 SS_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }
@@ -44,6 +67,7 @@ SS_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0
 #define BRDF_HC_SHAPE_MAX 16.0f
 #define BRDF_IOR_MIN 1.0f
 #define BRDF_IOR_MAX 3.0f
+#define BRDF_THIN_FILM_THICKNESS_MAX 2.0f /* micrometres; thicker films average to their incoherent sum */
 
 /* fmin(fmax()) rather than clamp(): it maps NaN to the lower bound instead of leaving it. */
 SS_FN float clamp_param(float x, float lo, float hi) { return fmin(fmax(x, lo), hi); }
@@ -65,6 +89,26 @@ SS_FN Material material_clamped(const Material* in) {
     m.weight_specular = clamp_param(m.weight_specular, 0.0f, 1.0f);
     m.weight_transmission = clamp_param(m.weight_transmission, 0.0f, 1.0f);
     m.ior = clamp_param(m.ior, BRDF_IOR_MIN, BRDF_IOR_MAX);
+    for (int c = 0; c < 3; ++c) {
+        m.specular_color[c] = clamp_param(m.specular_color[c], 0.0f, 1.0f);
+        m.transmission_color[c] = clamp_param(m.transmission_color[c], 0.0f, 1.0f);
+        m.subsurface_color[c] = clamp_param(m.subsurface_color[c], 0.0f, 1.0f);
+        m.coat_color[c] = clamp_param(m.coat_color[c], 0.0f, 1.0f);
+        m.fuzz_color[c] = clamp_param(m.fuzz_color[c], 0.0f, 1.0f);
+    }
+    m.base_weight = clamp_param(m.base_weight, 0.0f, 1.0f);
+    m.base_diffuse_roughness = clamp_param(m.base_diffuse_roughness, 0.0f, 1.0f);
+    m.specular_weight = clamp_param(m.specular_weight, 0.0f, 1.0f);
+    m.coat_weight = clamp_param(m.coat_weight, 0.0f, 1.0f);
+    m.coat_roughness = clamp_param(m.coat_roughness, 0.0f, 1.0f);
+    m.coat_roughness_anisotropy = clamp_param(m.coat_roughness_anisotropy, 0.0f, 1.0f);
+    m.coat_ior = clamp_param(m.coat_ior, BRDF_IOR_MIN, BRDF_IOR_MAX);
+    m.coat_darkening = clamp_param(m.coat_darkening, 0.0f, 1.0f);
+    m.fuzz_weight = clamp_param(m.fuzz_weight, 0.0f, 1.0f);
+    m.fuzz_roughness = clamp_param(m.fuzz_roughness, 0.0f, 1.0f);
+    m.thin_film_weight = clamp_param(m.thin_film_weight, 0.0f, 1.0f);
+    m.thin_film_thickness = clamp_param(m.thin_film_thickness, 0.0f, BRDF_THIN_FILM_THICKNESS_MAX);
+    m.thin_film_ior = clamp_param(m.thin_film_ior, BRDF_IOR_MIN, BRDF_IOR_MAX);
     return m;
 }
 

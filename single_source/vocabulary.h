@@ -59,6 +59,7 @@ SS_FN float safe_sqrt(float x) { return sqrt(fmax(x, 0.0f)); }
 SS_FN float pow5(float x) { float x2 = x * x; return x2 * x2 * x; }
 SS_FN float3 float3_splat(float v) { return make_float3(v, v, v); }
 SS_FN float max_component(float3 v) { return fmax(v.x, fmax(v.y, v.z)); }
+SS_FN float mean3(float3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
 /* A float3 from a plain array: structs shared with the host store vectors as float[3], which has
  * one layout on both sides (an OpenCL float3 is 16 bytes). */
 SS_FN float3 float3_from_array(const float v[3]) { return make_float3(v[0], v[1], v[2]); }

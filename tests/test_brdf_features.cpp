@@ -71,6 +71,44 @@ TEST_CASE("used_features follows the lobes a material can reach", "[features]") 
     CHECK(feature_on({glass, metal}, "BRDF_FEATURE_HYPER_CAUCHY"));
 }
 
+TEST_CASE("used_features: an openpbr material compiles only the layers it uses", "[features][openpbr]") {
+    brdf::Material plain = brdf::default_material(BRDF_MODEL_OPENPBR);  // rough specular over EON diffuse
+    CHECK(feature_on({plain}, "BRDF_FEATURE_OPENPBR"));
+    CHECK(feature_on({plain}, "BRDF_FEATURE_DIFFUSE"));
+    CHECK(feature_on({plain}, "BRDF_FEATURE_GGX"));
+    for (const char* off : {"BRDF_FEATURE_LAB_MODEL", "BRDF_FEATURE_COAT", "BRDF_FEATURE_FUZZ", "BRDF_FEATURE_THIN_FILM", "BRDF_FEATURE_SUBSURFACE",
+                            "BRDF_FEATURE_TRANSMISSION", "BRDF_FEATURE_HYPER_CAUCHY", "BRDF_FEATURE_ENERGY_COMPENSATION"}) {
+        INFO(off);
+        CHECK_FALSE(feature_on({plain}, off));
+    }
+    brdf::Material layered = plain;
+    layered.coat_weight = 1.0f, layered.fuzz_weight = 0.5f, layered.thin_film_weight = 1.0f;
+    for (const char* on : {"BRDF_FEATURE_COAT", "BRDF_FEATURE_FUZZ", "BRDF_FEATURE_THIN_FILM"}) {
+        INFO(on);
+        CHECK(feature_on({layered}, on));
+    }
+    brdf::Material metal = plain;  // a metal's film would go on the dielectric specular it does not have
+    metal.metallic = 1.0f, metal.thin_film_weight = 1.0f;
+    CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_THIN_FILM"));
+    CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_DIFFUSE"));
+    CHECK(feature_on({metal}, "BRDF_FEATURE_ENERGY_COMPENSATION"));
+    // the lab's materials leave the openpbr model and its tables out of the kernel
+    brdf::Material lambert = lobe_material(1, 0, 0, 0);
+    CHECK_FALSE(feature_on({lambert}, "BRDF_FEATURE_OPENPBR"));
+    lab::opencl::AssembledSource lab_source = assembled_with({lambert});
+    for (const char* absent : {"brdf/openpbr_model.h", "brdf/energy_table_openpbr.h", "brdf/sheen.h", "brdf/thin_film.h", "brdf/eon_diffuse.h"}) {
+        INFO(absent);
+        CHECK_FALSE(contains_file(lab_source, absent));
+    }
+    lab::opencl::AssembledSource plain_source = assembled_with({plain});
+    CHECK(contains_file(plain_source, "brdf/openpbr_model.h"));
+    CHECK(contains_file(plain_source, "brdf/eon_diffuse.h"));
+    for (const char* absent : {"brdf/thin_film.h", "brdf/henyey_greenstein.h", "brdf/dielectric.h", "brdf/lab_model.h"}) {
+        INFO(absent);
+        CHECK_FALSE(contains_file(plain_source, absent));
+    }
+}
+
 TEST_CASE("switched-off features never reach the kernel source", "[features]") {
     brdf::Material gold = lobe_material(0, 1, 0, 0);
     gold.metallic = 1.0f;

@@ -13,6 +13,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/angles.hpp"
 #include "brdf/host/preset.hpp"
+#include "tests/energy_table_rows.hpp"
 #include "tests/lobe_material.hpp"
 #include "validation/albedo.hpp"
 #include "validation/energy.hpp"
@@ -118,18 +119,8 @@ TEST_CASE("energy tables: entries agree with an independent Monte Carlo estimate
 }
 
 TEST_CASE("energy tables: the committed tables are what the generator writes", "[energy_compensation]") {
-    // a regeneration of sample rows at the generator's own resolution (tools/generate_energy_tables),
-    // rounded up to the tables' 16-bit step (brdf/energy_grid.h): never below the estimate, less than a
-    // step above it (2e-7: a margin for float rounding between this regeneration and the generator's)
-    auto check_row = [](const std::function<double(float, float)>& albedo, int n_r, int n_mu, int i, const unsigned short* committed) {
-        std::vector<float> row = energy_slice(albedo, n_r, n_mu, 2, i, i);
-        for (int j = 0; j < n_mu; ++j) {
-            INFO("roughness node " << i << ", mu node " << j);
-            float stored = brdf::energy_grid_albedo_value(committed, i * n_mu + j);
-            CHECK(stored >= row[size_t(j)] - 2e-7f);
-            CHECK(stored <= row[size_t(j)] + 1.0f / ENERGY_TABLE_ONE + 2e-7f);
-        }
-    };
+    // sample rows regenerated (tests/energy_table_rows.hpp)
+    auto check_row = check_energy_table_row;
     for (int i : {5, 19, 31}) {
         check_row([](float r, float mu) { return single_scattering_albedo(BRDF_DISTRIBUTION_GGX, 2.0f, r, mu, kEnergyTableStrata); },
                   ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, i, brdf::energy_ggx_albedo);

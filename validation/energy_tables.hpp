@@ -48,6 +48,26 @@ double dielectric_single_scattering_albedo(int side, float roughness, float ior,
 // F_avg = 2 int_0^1 F(mu) mu dmu of the exact dielectric Fresnel reflectance, from outside.
 float dielectric_fresnel_average_of(float ior);
 
+// OpenPBR's layers (brdf/openpbr_energy.h): E(mu) of the GGX reflection off a dielectric of index
+// ior with its exact Fresnel reflectance (the coat and the dielectric specular, what each passes down
+// is 1 - E), by the lobe's visible-normal sampler at strata x strata; the Fresnel reflectance itself
+// where the interface is smooth.
+double dielectric_reflection_albedo(float roughness, float ior, float mu, int strata);
+// E(mu) / SHEEN_TABLE_SCALE of the fuzz's sheen lobe (brdf/sheen.h) by the midpoint rule over
+// 2 strata x strata cells even in sqrt(mu_i) and phi.
+double sheen_albedo(float roughness, float mu, int strata);
+// The sheen's lobe peaks near the horizon at low roughness: its table takes more strata per side.
+inline constexpr int kSheenStrataFactor = 4;
+
+struct OpenPbrTables {
+    std::vector<float> specular_albedo;   // [ior][roughness][mu] on the dielectric grid, rounded up
+    std::vector<float> specular_average;  // [ior][roughness]
+    std::vector<float> sheen_albedo;      // [roughness][mu] on the conductors' grid, E / SHEEN_TABLE_SCALE, rounded up
+};
+
+OpenPbrTables compute_openpbr_tables(int strata, int threads);
+std::string openpbr_table_header(const OpenPbrTables& tables, int strata);
+
 struct EnergyTables {
     std::vector<float> ggx_albedo;           // [roughness][mu], rounded up to 16 bits (energy_table_round_up)
     std::vector<float> ggx_average;          // [roughness]

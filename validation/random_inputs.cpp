@@ -16,6 +16,17 @@ float draw(UniformRandom& rng, float lo, float hi, float edge_probability) {
 }  // namespace
 
 brdf::Material random_edge_material(UniformRandom& rng, int model, float edge_probability) {
+    if (model == BRDF_MODEL_OPENPBR) {  // OpenPBR's inputs over their ranges, colours per channel
+        brdf::Material m = brdf::default_material(model);
+        for (const brdf::ScalarParameter& p : brdf::openpbr_parameters()) {
+            if (p.field) m.*p.field = draw(rng, p.min, p.max, edge_probability);
+            else
+                for (float& c : m.*p.color) c = draw(rng, p.min, p.max, edge_probability);
+        }
+        m.tangent_rotation = draw(rng, -2.0f * 3.14159265f, 2.0f * 3.14159265f, edge_probability);
+        m.energy_compensation = rng.next_float() < 0.8f ? 1 : 0;
+        return m;
+    }
     brdf::Material m = brdf::default_material();
     for (const brdf::ScalarParameter& p : brdf::scalar_parameters()) {
         if (p.field) {

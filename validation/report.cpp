@@ -75,7 +75,7 @@ void print_validation_table(std::ostream& out, const std::vector<MaterialValidat
                           verdict(v.chi_square_passed()));
         else
             std::snprintf(chi, sizeof chi, "%2d dirs delta only  %s", v.chi_square_tests, verdict(v.chi_square_passed()));
-        std::snprintf(recip, sizeof recip, "%-10.2g %s", v.reciprocity_error, verdict(v.reciprocity_passed()));
+        std::snprintf(recip, sizeof recip, "%-10.2g %s", v.reciprocity_error, v.reciprocity_by_design() ? "scaled" : verdict(v.reciprocity_passed()));
         std::snprintf(energy, sizeof energy, "%.4f th %5.1f ph %5.1f %s", v.albedo.albedo, v.albedo.theta_deg,
                       v.albedo.phi_deg, verdict(v.energy_passed()));
         std::snprintf(line, sizeof line, row, v.name.c_str(), brdf::model_name(v.model), chi, recip, energy,

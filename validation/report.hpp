@@ -46,7 +46,10 @@ struct MaterialValidation {
     bool cancelled = false;  // stopped early by ValidationOptions::cancelled: the figures are partial
 
     bool chi_square_passed() const { return chi_square_failure.empty(); }
-    bool reciprocity_passed() const { return reciprocity_error <= reciprocity_tolerance; }
+    // openpbr's albedo scaling departs from reciprocity by design (docs/materials.md): its figure is
+    // shown with the badge "scaled" instead of a verdict
+    bool reciprocity_by_design() const { return model == BRDF_MODEL_OPENPBR; }
+    bool reciprocity_passed() const { return reciprocity_by_design() || reciprocity_error <= reciprocity_tolerance; }
     bool energy_passed() const { return albedo.albedo <= 1.0 + albedo_limit; }
     bool passed() const { return chi_square_passed() && reciprocity_passed() && energy_passed(); }
 };

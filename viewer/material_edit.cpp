@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "brdf/host/parameters.hpp"
 #include "common/input_error.hpp"
 
 namespace lab::viewer {
@@ -20,6 +21,14 @@ double parse_number(const std::string& text, const std::string& origin, const st
     return v;  // NaN and infinities pass here; the preset loader refuses them by name
 }
 
+// albedo, or one of OpenPBR's colour inputs (base_color, coat_color, ...)
+bool is_color_key(const std::string& key) {
+    if (key == "albedo") return true;
+    for (const brdf::ScalarParameter& p : brdf::openpbr_parameters())
+        if (!p.field && key == p.key) return true;
+    return false;
+}
+
 }  // namespace
 
 brdf::Preset with_parameter(const brdf::Preset& preset, const std::string& key, const std::string& value, const std::string& origin) {
@@ -30,7 +39,7 @@ brdf::Preset with_parameter(const brdf::Preset& preset, const std::string& key, 
         if (value != "true" && value != "false" && value != "1" && value != "0")
             throw InputError(origin, key, "expected true, false, 1 or 0, got \"" + value + "\"");
         doc[key] = value == "true" || value == "1";
-    } else if (key == "albedo") {
+    } else if (is_color_key(key)) {
         std::vector<double> rgb;
         std::stringstream parts(value);
         for (std::string part; std::getline(parts, part, ',');) rgb.push_back(parse_number(part, origin, key));

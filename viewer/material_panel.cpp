@@ -1,6 +1,7 @@
 #include "viewer/material_panel.hpp"
 
 #include <cstring>
+#include <string>
 
 #include <imgui.h>
 
@@ -44,18 +45,46 @@ bool scalar_row(const brdf::ScalarParameter& p, brdf::Material* m, const brdf::M
     return changed;
 }
 
-bool albedo_row(brdf::Material* m, const brdf::Material& preset) {
+// A colour: picker in sRGB, stored linear, reset to the preset.
+bool color_row(const char* key, float (brdf::Material::*field)[3], brdf::Material* m, const brdf::Material& preset) {
+    float* linear = m->*field;
     float srgb[3];
-    for (int c = 0; c < 3; ++c) srgb[c] = film::srgb_encode(m->albedo[c]);
-    bool changed = ImGui::ColorEdit3("albedo (sRGB)", srgb, ImGuiColorEditFlags_Float);
+    for (int c = 0; c < 3; ++c) srgb[c] = film::srgb_encode(linear[c]);
+    ImGui::PushID(key);
+    std::string label = std::string(key) + " (sRGB)";
+    bool changed = ImGui::ColorEdit3(label.c_str(), srgb, ImGuiColorEditFlags_Float);
     if (changed)
-        for (int c = 0; c < 3; ++c) m->albedo[c] = film::srgb_decode(srgb[c] < 0.0f ? 0.0f : (srgb[c] > 1.0f ? 1.0f : srgb[c]));
+        for (int c = 0; c < 3; ++c) linear[c] = film::srgb_decode(srgb[c] < 0.0f ? 0.0f : (srgb[c] > 1.0f ? 1.0f : srgb[c]));
     ImGui::SameLine();
-    if (ImGui::SmallButton("reset##albedo")) {
-        std::memcpy(m->albedo, preset.albedo, sizeof m->albedo);
+    if (ImGui::SmallButton("reset")) {
+        std::memcpy(linear, preset.*field, sizeof(float) * 3);
         changed = true;
     }
-    ImGui::Text("linear %.4f %.4f %.4f", m->albedo[0], m->albedo[1], m->albedo[2]);
+    ImGui::Text("linear %.4f %.4f %.4f", linear[0], linear[1], linear[2]);
+    ImGui::PopID();
+    return changed;
+}
+
+bool albedo_row(brdf::Material* m, const brdf::Material& preset) { return color_row("albedo", &brdf::Material::albedo, m, preset); }
+
+// OpenPBR's inputs in OpenPBR's groups (base, specular, transmission, subsurface, coat, fuzz, thin film).
+bool openpbr_panel(brdf::Material* m, const brdf::Material& preset) {
+    bool changed = false;
+    ImGui::TextUnformatted("model: openpbr (OpenPBR Surface 1.1)");
+    bool compensation = m->energy_compensation != 0;
+    if (ImGui::Checkbox("energy compensation", &compensation)) {
+        m->energy_compensation = compensation ? 1 : 0;
+        changed = true;
+    }
+    std::string group;
+    for (const brdf::ScalarParameter& p : brdf::openpbr_parameters()) {
+        if (group != p.group) {
+            group = p.group;
+            ImGui::Separator();
+            ImGui::TextUnformatted(p.group);
+        }
+        changed |= p.field ? scalar_row(p, m, preset) : color_row(p.key, p.color, m, preset);
+    }
     return changed;
 }
 
@@ -67,6 +96,7 @@ bool material_panel(brdf::Material* m, const brdf::Material& preset) {
         ImGui::TextUnformatted("measured (MERL table): no parameters to edit");
         return false;
     }
+    if (m->model == BRDF_MODEL_OPENPBR) return openpbr_panel(m, preset);
     int model = m->model == BRDF_MODEL_DTOADQ2017 ? 1 : 0;
     if (ImGui::Combo("model", &model, "lab\0dtoadq2017\0")) {
         m->model = model == 1 ? BRDF_MODEL_DTOADQ2017 : BRDF_MODEL_LAB;

@@ -1,10 +1,13 @@
 // The table of material parameters: key, range, default, meaning. One table serves the preset
 // loader, the validation sweeps, the fit's parameter space, the viewer's material panel and the
-// range table of docs/materials.md (which the tests check against it).
+// range table of docs/materials.md (which the tests check against it). The lab and dtoadq2017
+// models read scalar_parameters(); the openpbr model reads openpbr_parameters(), OpenPBR Surface
+// 1.1's inputs under their own names, defaults and ranges (open_pbr_surface.mtlx), flat keys.
 #pragma once
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "brdf/brdf.hpp"
 
@@ -18,6 +21,8 @@ struct ScalarParameter {
     float to_material;     // JSON value times this is stored (degrees to radians)
     const char* unit;
     const char* meaning;
+    float (Material::*color)[3] = nullptr;  // a colour (field is null): an array of 3 in JSON, each in [min, max]
+    const char* group = "";                 // openpbr: OpenPBR's group (base, specular, coat, ...) for the viewer
 };
 
 inline constexpr float kDegrees = 3.14159265358979323846f / 180.0f;
@@ -58,11 +63,19 @@ inline const std::array<ScalarParameter, 15>& scalar_parameters() {
     return table;
 }
 
+// OpenPBR Surface 1.1's inputs that the lab evaluates (brdf/openpbr_model.h), in OpenPBR's groups and
+// order. Inputs it leaves out (transmission_depth and scatter, dispersion, subsurface_radius,
+// emission, geometry_*): docs/materials.md.
+const std::vector<ScalarParameter>& openpbr_parameters();
+
+// The table a material of `model` takes its keys from: openpbr_parameters() or scalar_parameters().
+std::vector<ScalarParameter> parameters_of_model(int model);
+
 // Enumerated parameters and their spellings.
 const char* model_name(int model);
 const char* distribution_name(int distribution);
 
-// A material with every parameter at its default.
-Material default_material();
+// A material with every parameter at its default (lab's table; openpbr's takes OpenPBR's defaults).
+Material default_material(int model = BRDF_MODEL_LAB);
 
 }  // namespace brdf

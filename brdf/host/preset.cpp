@@ -63,6 +63,25 @@ int parse_enum(const json& doc, const std::string& source, const std::string& ke
     throw InputError(source, key, "unknown value \"" + s + "\" (expected \"" + a + "\" or \"" + b + "\")");
 }
 
+// The model a preset names: lab (the default), dtoadq2017 or openpbr.
+int parse_model(const json& doc, const std::string& source) {
+    if (!doc.contains("model")) return BRDF_MODEL_LAB;
+    const json& value = doc.at("model");
+    if (!value.is_string()) throw InputError(source, "model", std::string("expected a string, got ") + value.type_name());
+    const std::string s = value.get<std::string>();
+    for (int model : {BRDF_MODEL_LAB, BRDF_MODEL_DTOADQ2017, BRDF_MODEL_OPENPBR})
+        if (s == model_name(model)) return model;
+    throw InputError(source, "model", "unknown value \"" + s + "\" (expected \"lab\", \"dtoadq2017\" or \"openpbr\")");
+}
+
+// An openpbr preset: OpenPBR's input names as flat keys, each left out at OpenPBR's default.
+void reject_unknown_openpbr_keys(const json& doc, const std::string& source) {
+    std::set<std::string> top = {"name", "description", "model", "energy_compensation"};
+    for (const ScalarParameter& p : openpbr_parameters()) top.insert(p.key);
+    for (auto it = doc.begin(); it != doc.end(); ++it)
+        if (!top.count(it.key())) throw InputError(source, it.key(), "unknown key for model \"openpbr\" (its keys are OpenPBR Surface's inputs)");
+}
+
 void reject_unknown_keys(const json& doc, const std::string& source) {
     std::set<std::string> top = {"name", "description", "model", "distribution", "energy_compensation", "lobes", "measured"};
     std::set<std::string> lobes;
@@ -104,21 +123,48 @@ void parse_measured(const json& doc, const std::string& source, const std::strin
     preset->measured = relative;
 }
 
+
+// A colour: an array of 3 numbers, each within the entry's range.
+void parse_color(const json& value, const std::string& source, const ScalarParameter& p, float* rgb) {
+    if (!value.is_array() || value.size() != 3) throw InputError(source, p.key, "expected an array of 3 numbers (linear RGB)");
+    for (int c = 0; c < 3; ++c) rgb[c] = checked_number(value.at(c), source, std::string(p.key) + "[" + std::to_string(c) + "]", p.min, p.max);
+}
+
 }  // namespace
 
 Preset parse_preset(const json& doc, const std::string& source, const std::string& base_dir) {
     if (!doc.is_object()) throw InputError(source, "", "a preset must be a JSON object");
-    reject_unknown_keys(doc, source);
+    const int model = doc.contains("measured") ? BRDF_MODEL_LAB : parse_model(doc, source);
+    if (model == BRDF_MODEL_OPENPBR)
+        reject_unknown_openpbr_keys(doc, source);
+    else
+        reject_unknown_keys(doc, source);
     Preset preset;
     preset.source = source;
-    preset.material = default_material();
+    preset.material = default_material(model);
     preset.name = std::filesystem::path(source).stem().string();
     for (const char* key : {"name", "description"}) {
         if (!doc.contains(key)) continue;
         if (!doc.at(key).is_string()) throw InputError(source, key, std::string("expected a string, got ") + doc.at(key).type_name());
         (std::string(key) == "name" ? preset.name : preset.description) = doc.at(key).get<std::string>();
     }
-    preset.material.model = parse_enum(doc, source, "model", "lab", BRDF_MODEL_LAB, "dtoadq2017", BRDF_MODEL_DTOADQ2017, BRDF_MODEL_LAB);
+    if (model == BRDF_MODEL_OPENPBR) {
+        if (doc.contains("energy_compensation")) {
+            const json& value = doc.at("energy_compensation");
+            if (!value.is_boolean())
+                throw InputError(source, "energy_compensation", std::string("expected true or false, got ") + value.type_name());
+            preset.material.energy_compensation = value.get<bool>() ? 1 : 0;
+        }
+        for (const ScalarParameter& p : openpbr_parameters()) {
+            if (!doc.contains(p.key)) continue;
+            if (p.field)
+                preset.material.*p.field = checked_number(doc.at(p.key), source, p.key, p.min, p.max);
+            else
+                parse_color(doc.at(p.key), source, p, preset.material.*p.color);
+        }
+        return preset;
+    }
+    preset.material.model = model;
     preset.material.distribution = parse_enum(doc, source, "distribution", "ggx", BRDF_DISTRIBUTION_GGX, "hyper_cauchy",
                                               BRDF_DISTRIBUTION_HYPER_CAUCHY, BRDF_DISTRIBUTION_GGX);
     if (doc.contains("energy_compensation")) {
@@ -136,11 +182,7 @@ Preset parse_preset(const json& doc, const std::string& source, const std::strin
             preset.material.*p.field = checked_number(*value, source, p.key, p.min, p.max) * p.to_material;
             continue;
         }
-        // the albedo: three numbers
-        if (!value->is_array() || value->size() != 3)
-            throw InputError(source, p.key, "expected an array of 3 numbers (linear RGB)");
-        for (int c = 0; c < 3; ++c)
-            preset.material.albedo[c] = checked_number(value->at(c), source, std::string(p.key) + "[" + std::to_string(c) + "]", p.min, p.max);
+        parse_color(*value, source, p, preset.material.albedo);  // the albedo
     }
     return preset;
 }
@@ -184,6 +226,19 @@ json preset_to_json(const Preset& preset) {
     json doc;
     doc["name"] = preset.name;
     if (!preset.description.empty()) doc["description"] = preset.description;
+    if (preset.material.model == BRDF_MODEL_OPENPBR) {
+        doc["model"] = model_name(BRDF_MODEL_OPENPBR);
+        doc["energy_compensation"] = preset.material.energy_compensation != 0;
+        for (const ScalarParameter& p : openpbr_parameters()) {
+            if (p.field) {
+                doc[p.key] = shortest_decimal(preset.material.*p.field);
+                continue;
+            }
+            const float* rgb = preset.material.*p.color;
+            doc[p.key] = {shortest_decimal(rgb[0]), shortest_decimal(rgb[1]), shortest_decimal(rgb[2])};
+        }
+        return doc;
+    }
     if (preset.material.model == BRDF_MODEL_MEASURED)
         doc["measured"] = preset.measured;
     else
