@@ -4,8 +4,9 @@
 // worker's time: when the render has new samples and the time since the last filter is at least
 // its cost x (1 - share) / share; in between, the last denoised image of the state stays shown.
 // Its guide is the film's variance of each pixel's mean, read at each filter, and the first-hit
-// AOVs, taken when a pass is complete (Renderer::first_hit_aovs reads whole passes) at 1, 2, 4, 8
-// and 16 samples per pixel, so that their edges are antialiased like the image's, and then kept.
+// AOVs, taken when a pass is complete (Renderer::first_hit_aovs reads whole passes) at 1, 2 and 4
+// samples per pixel, so that their edges are antialiased, and then kept (as the views' are: a pass
+// of 16 samples would hold up the next change by a fraction of a second).
 #pragma once
 
 #include <chrono>
@@ -21,7 +22,7 @@ public:
     // At most this share of the worker's time goes to the filter and its guide.
     static constexpr double kTimeShare = 0.15;
     // The guide is taken again until it holds this many samples per pixel.
-    static constexpr int kGuideSamples = 16;
+    static constexpr int kGuideSamples = 4;
 
     // A new state or size: the guide and the last denoised image are of the old one.
     void restart();
