@@ -6,8 +6,11 @@
  * two or more bounces, each absorbing 1 - F_avg:
  *   F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)),   F_avg = 2 int F(mu) mu dmu = F0 + (1 - F0) / 21 (Schlick).
  * f_ms is symmetric in wo and wi, so the compensated lobe stays reciprocal. E and E_avg come from
- * tables (brdf/energy_grid.h) over roughness and shape; an anisotropic distribution uses the
- * isotropic one of the same alpha_x alpha_y. */
+ * tables (brdf/energy_grid.h) over roughness and shape. An anisotropic GGX distribution's E depends
+ * on the azimuth of w too, and no isotropic roughness matches it (docs/materials.md gives the figures):
+ * its E(w) comes from a table over the ratio alpha_y / alpha_x, that azimuth, roughness and mu, and
+ * E_avg from the same table's hemispherical average. An anisotropic Hyper-Cauchy one uses the isotropic
+ * table of the same alpha_x alpha_y. */
 #ifndef BRDF_ENERGY_COMPENSATION_H
 #define BRDF_ENERGY_COMPENSATION_H
 #include "single_source/vocabulary.h"
@@ -16,6 +19,7 @@
 #include "microfacet.h"
 #if BRDF_FEATURE_GGX
 #include "energy_table_ggx.h"
+#include "energy_table_ggx_anisotropic.h"
 #endif
 #if BRDF_FEATURE_HYPER_CAUCHY
 #include "energy_table_hyper_cauchy.h"
@@ -37,8 +41,67 @@ SS_FN int energy_shape_slice(float g, float* weight) {
     return k;
 }
 
-/* E at mu of the distribution of normals mf, and its average. */
-SS_FN float microfacet_energy_albedo(Microfacet mf, float mu) {
+#if BRDF_FEATURE_GGX
+/* Whether mf takes the anisotropic table. */
+SS_FN bool energy_is_anisotropic(Microfacet mf) { return mf.kind == BRDF_DISTRIBUTION_GGX && mf.ax != mf.ay; }
+
+/* The fractional ratio and roughness node coordinates of mf (alpha_x >= alpha_y after the swap). */
+SS_FN float2 energy_anisotropic_coordinates(float ax, float ay) {
+    float q = ay / ax, r = sqrt(sqrt(0.5f * (ax * ax + ay * ay)));
+    return make_float2(clamp(q, 0.0f, 1.0f) * (float)(ANISO_GRID_RATIO - 1),
+                       energy_grid_node_coordinate(r, 0.0f, ANISO_GRID_ROUGHNESS_MAX, ANISO_GRID_ROUGHNESS));
+}
+
+/* atan2(y, x) for x, y >= 0 in basic arithmetic (Abramowitz and Stegun 4.4.49, within 1e-5 rad), so
+ * the C++ and OpenCL builds round it alike, as their atan2 do not; 0 at the pole, where E is the same
+ * at every phi. */
+SS_FN float energy_azimuth(float x, float y) {
+    if (!(x > 0.0f || y > 0.0f)) return 0.0f;
+    float t = fmin(x, y) / fmax(x, y), t2 = t * t;
+    float a = t * (0.9998660f + t2 * (-0.3302995f + t2 * (0.1801410f + t2 * (-0.0851330f + t2 * 0.0208351f))));
+    return y > x ? 0.5f * SS_PI - a : a;
+}
+
+/* E(w) of an anisotropic GGX distribution: the table interpolated in ratio, azimuth, roughness and mu. */
+SS_FN float energy_anisotropic_albedo(Microfacet mf, float3 w) {
+    float ax = mf.ax, ay = mf.ay, wx = fabs(w.x), wy = fabs(w.y);
+    if (ay > ax) {
+        ax = mf.ay, ay = mf.ax, wx = fabs(w.y), wy = fabs(w.x);
+    }
+    float2 c = energy_anisotropic_coordinates(ax, ay);
+    float p = energy_azimuth(wx, wy) * (2.0f * SS_INV_PI) * (float)(ANISO_GRID_PHI - 1);
+    p = clamp(p, 0.0f, (float)(ANISO_GRID_PHI - 1));
+    float m = energy_grid_mu_coordinate_of(w.z, ANISO_GRID_MU);
+    int k = min((int)c.x, ANISO_GRID_RATIO - 2), l = min((int)p, ANISO_GRID_PHI - 2), i = min((int)c.y, ANISO_GRID_ROUGHNESS - 2);
+    float tk = c.x - (float)k, tl = p - (float)l, ti = c.y - (float)i, e = 0.0f;
+    for (int dk = 0; dk < 2; ++dk)
+        for (int dl = 0; dl < 2; ++dl)
+            for (int di = 0; di < 2; ++di) {
+                float weight = (dk ? tk : 1.0f - tk) * (dl ? tl : 1.0f - tl) * (di ? ti : 1.0f - ti);
+                int row = (((k + dk) * ANISO_GRID_PHI + l + dl) * ANISO_GRID_ROUGHNESS + i + di) * ANISO_GRID_MU;
+                e += weight * energy_grid_lerp_albedo(energy_ggx_anisotropic_albedo + row, ANISO_GRID_MU, m);
+            }
+    return e;
+}
+
+/* E_avg of an anisotropic GGX distribution, interpolated in ratio and roughness like E above, so that
+ * it is the hemispherical average of the interpolated E(w) (the generator averages over the azimuth
+ * the interpolant, linear in phi between its nodes). */
+SS_FN float energy_anisotropic_average(Microfacet mf) {
+    float2 c = energy_anisotropic_coordinates(fmax(mf.ax, mf.ay), fmin(mf.ax, mf.ay));
+    int k = min((int)c.x, ANISO_GRID_RATIO - 2);
+    CONSTANT_MEM const float* row = energy_ggx_anisotropic_average + k * ANISO_GRID_ROUGHNESS;
+    return mix(energy_grid_lerp(row, ANISO_GRID_ROUGHNESS, c.y), energy_grid_lerp(row + ANISO_GRID_ROUGHNESS, ANISO_GRID_ROUGHNESS, c.y),
+               c.x - (float)k);
+}
+#endif
+
+/* E at w (upper side) of the distribution of normals mf, and its average. */
+SS_FN float microfacet_energy_albedo(Microfacet mf, float3 w) {
+    float mu = w.z;
+#if BRDF_FEATURE_GGX
+    if (energy_is_anisotropic(mf)) return energy_anisotropic_albedo(mf, w);
+#endif
     float r = energy_roughness(mf);
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) {
@@ -55,6 +118,9 @@ SS_FN float microfacet_energy_albedo(Microfacet mf, float mu) {
 }
 
 SS_FN float microfacet_energy_average(Microfacet mf) {
+#if BRDF_FEATURE_GGX
+    if (energy_is_anisotropic(mf)) return energy_anisotropic_average(mf);
+#endif
     float x = energy_grid_roughness_coordinate(energy_roughness(mf));
 #if BRDF_FEATURE_HYPER_CAUCHY
     if (mf.kind == BRDF_DISTRIBUTION_HYPER_CAUCHY) {
@@ -81,15 +147,15 @@ SS_FN float multiple_scattering_eval(Microfacet mf, float3 wo, float3 wi) {
     if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return 0.0f;
     float e_avg = microfacet_energy_average(mf);
     if (!(e_avg < 1.0f - 1e-6f)) return 0.0f;
-    float lost_o = fmax(1.0f - microfacet_energy_albedo(mf, wo.z), 0.0f);
-    float lost_i = fmax(1.0f - microfacet_energy_albedo(mf, wi.z), 0.0f);
+    float lost_o = fmax(1.0f - microfacet_energy_albedo(mf, wo), 0.0f);
+    float lost_i = fmax(1.0f - microfacet_energy_albedo(mf, wi), 0.0f);
     return lost_o * lost_i * SS_INV_PI / (1.0f - e_avg);
 }
 
-/* Directional albedo of f_ms (without its colour): 1 - E(mu_o), where E_avg < 1. */
-SS_FN float multiple_scattering_albedo(Microfacet mf, float mu_o) {
-    if (!(mu_o > 0.0f) || !(microfacet_energy_average(mf) < 1.0f - 1e-6f)) return 0.0f;
-    return fmax(1.0f - microfacet_energy_albedo(mf, mu_o), 0.0f);
+/* Directional albedo of f_ms (without its colour): 1 - E(wo), where E_avg < 1. */
+SS_FN float multiple_scattering_albedo(Microfacet mf, float3 wo) {
+    if (!(wo.z > 0.0f) || !(microfacet_energy_average(mf) < 1.0f - 1e-6f)) return 0.0f;
+    return fmax(1.0f - microfacet_energy_albedo(mf, wo), 0.0f);
 }
 
 #endif

@@ -27,6 +27,22 @@ SS_FN float energy_grid_shape(int k) {
     return 1.0f + 1.0f / (t_lo + (t_hi - t_lo) * (float)k / (float)(ENERGY_GRID_SHAPE - 1));
 }
 
+/* The anisotropic GGX table (brdf/energy_table_ggx_anisotropic.h): E(w) over [ratio][phi][roughness][mu]
+ * and E_avg over [ratio][roughness], for alpha_x >= alpha_y (the lookup swaps the axes otherwise).
+ * ratio q = alpha_y / alpha_x at nodes k / 4; the azimuth phi of w from the longer axis at nodes even
+ * over [0, pi / 2] (E is even about both axes); roughness sqrt(alpha_rms), alpha_rms^2 = (alpha_x^2 +
+ * alpha_y^2) / 2, at nodes even over [0, 1.5], which covers the lab model's Disney mapping (up to 1.499)
+ * and OpenPBR's (alpha_rms = roughness^2, so at most 1); mu even in sqrt(mu) like the others. 15 KB in
+ * all, which keeps every table a kernel can hold under the 64 KB of __constant memory. */
+#define ANISO_GRID_RATIO 5
+#define ANISO_GRID_PHI 6
+#define ANISO_GRID_ROUGHNESS 16
+#define ANISO_GRID_MU 16
+#define ANISO_GRID_ROUGHNESS_MAX 1.5f
+
+/* alpha_x and alpha_y of ratio node coordinate q (alpha_y / alpha_x) and rms roughness r. */
+SS_FN float anisotropic_grid_alpha_x(float q, float r) { return r * r * sqrt(2.0f / (1.0f + q * q)); }
+
 /* The dielectric's tables (brdf/energy_table_dielectric.h, GGX): E over [side][ior][roughness][mu],
  * nodes even in 1 / ior over [1/3, 1] (denser where glass and water are), in roughness, and in sqrt(mu)
  * over [0, 1] like the conductors'. The node at ior 1 holds the rough interface of ior 1.01: an index-matched one is smooth. */

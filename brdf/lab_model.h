@@ -152,7 +152,7 @@ SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf
 #if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GLOSSY
     if (up && lab_glossy_compensated(m, mf))
         c.cosine += w.glossy * mean3(multiple_scattering_fresnel(lab_specular_f0(m), microfacet_energy_average(mf))) *
-                    multiple_scattering_albedo(mf, wo.z);
+                    multiple_scattering_albedo(mf, wo);
 #endif
     c.specular = w.specular * reflectance;
     c.transmission = w.transmission * albedo;

@@ -281,7 +281,7 @@ SS_FN OpenPbrChoice openpbr_choice(const Material* m, const OpenPbr* p, float3 w
 #if BRDF_FEATURE_ENERGY_COMPENSATION
         if (p->metal_compensated)
             c.cosine += under * p->metal * m->specular_weight * mean3(multiple_scattering_fresnel(p->base, microfacet_energy_average(p->specular))) *
-                        multiple_scattering_albedo(p->specular, wo.z);
+                        multiple_scattering_albedo(p->specular, wo);
 #endif
     }
     if (p->opaque > 0.0f) c.specular = under * p->opaque * (mean3(p->specular_albedo) + OPENPBR_CHOICE_FLOOR);

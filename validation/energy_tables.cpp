@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <initializer_list>
+#include <utility>
 #include <sstream>
 
 #include "brdf/host/parameters.hpp"
@@ -42,6 +44,15 @@ double single_scattering_albedo(int distribution, float shape, float roughness, 
     // every direction reflected off a visible normal is above the horizon
     if (brdf::microfacet_is_smooth(mf) || !(mu > 0.0f)) return 1.0;
     brdf::float3 wo(std::sqrt(std::fmax(0.0f, 1.0f - mu * mu)), 0.0f, mu);
+    return visible_normal_albedo(mf, wo, strata, [&](brdf::float3 wi) { return brdf::microfacet_reflection_eval(mf, brdf::float3(1.0f), wo, wi).x; });
+}
+
+double anisotropic_albedo(float ratio, float phi, float roughness, float mu, int strata) {
+    float ax = brdf::anisotropic_grid_alpha_x(ratio, roughness);
+    brdf::Microfacet mf = brdf::microfacet_make(BRDF_DISTRIBUTION_GGX, std::fmax(ax, BRDF_MIN_ALPHA), std::fmax(ratio * ax, BRDF_MIN_ALPHA), 2.0f);
+    if (brdf::microfacet_is_smooth(mf) || !(mu > 0.0f)) return 1.0;
+    float s = std::sqrt(std::fmax(0.0f, 1.0f - mu * mu));
+    brdf::float3 wo(s * std::cos(phi), s * std::sin(phi), mu);
     return visible_normal_albedo(mf, wo, strata, [&](brdf::float3 wi) { return brdf::microfacet_reflection_eval(mf, brdf::float3(1.0f), wo, wi).x; });
 }
 
@@ -257,6 +268,71 @@ EnergyTables compute_energy_tables(int strata, int threads) {
     for (int k = 0; k < DIELECTRIC_GRID_IOR; ++k)
         t.dielectric_fresnel.push_back(dielectric_fresnel_average_of(std::fmax(brdf::energy_grid_ior(k), 1.01f)));
     return t;
+}
+
+AnisotropicTables compute_anisotropic_tables(int strata, int threads) {
+    const int nq = ANISO_GRID_RATIO, np = ANISO_GRID_PHI, per = ANISO_GRID_ROUGHNESS * ANISO_GRID_MU;
+    // slices at every half node in ratio and azimuth: (2 nq - 1) x (2 np - 1), each lifted in roughness and mu
+    std::vector<std::vector<float>> half(size_t((2 * nq - 1) * (2 * np - 1)));
+    for (int hq = 0; hq < 2 * nq - 1; ++hq)
+        for (int hp = 0; hp < 2 * np - 1; ++hp) {
+            float ratio = 0.5f * float(hq) / float(nq - 1), phi = 0.25f * float(M_PI) * float(hp) / float(np - 1);
+            half[size_t(hq * (2 * np - 1) + hp)] = energy_slice([&](float r, float mu) {
+                return anisotropic_albedo(ratio, phi, r * ANISO_GRID_ROUGHNESS_MAX, mu, strata);
+            }, ANISO_GRID_ROUGHNESS, ANISO_GRID_MU, threads, 0, ANISO_GRID_ROUGHNESS - 1);
+        }
+    auto at = [&](int hq, int hp) -> const std::vector<float>& { return half[size_t(hq * (2 * np - 1) + hp)]; };
+    // raise the nodes around each midpoint (in azimuth, in ratio, and the cell's centre) by how far it lies above their interpolant
+    std::vector<float> lift(size_t(nq * np * per), 0.0f);
+    auto raise = [&](std::initializer_list<std::pair<int, int>> nodes, const std::vector<float>& mid) {
+        for (int e = 0; e < per; ++e) {
+            double mean = 0.0;
+            for (auto [k, l] : nodes) mean += at(2 * k, 2 * l)[size_t(e)];
+            double deficit = std::fmin(double(mid[size_t(e)]), 1.0) - mean / double(nodes.size());
+            for (auto [k, l] : nodes) {
+                float& v = lift[size_t((k * np + l) * per + e)];
+                v = std::fmax(v, float(deficit));
+            }
+        }
+    };
+    for (int k = 0; k < nq; ++k)
+        for (int l = 0; l < np; ++l) {
+            if (l + 1 < np) raise({{k, l}, {k, l + 1}}, at(2 * k, 2 * l + 1));
+            if (k + 1 < nq) raise({{k, l}, {k + 1, l}}, at(2 * k + 1, 2 * l));
+            if (k + 1 < nq && l + 1 < np) raise({{k, l}, {k, l + 1}, {k + 1, l}, {k + 1, l + 1}}, at(2 * k + 1, 2 * l + 1));
+        }
+    AnisotropicTables t;
+    for (int k = 0; k < nq; ++k)
+        for (int l = 0; l < np; ++l)
+            for (int e = 0; e < per; ++e)
+                t.albedo.push_back(std::fmin(at(2 * k, 2 * l)[size_t(e)] + lift[size_t((k * np + l) * per + e)], 1.0f));
+    round_up(t.albedo);
+    // the mean over phi of the interpolant, linear in phi between the nodes: node l's weight is the mean of its hat function
+    std::vector<double> weight(size_t(np), 0.0);
+    const int n_phi = 1 << 14;
+    for (int j = 0; j < n_phi; ++j) {
+        double u = (j + 0.5) / n_phi * (np - 1);
+        int l = std::min(int(u), np - 2);
+        weight[size_t(l)] += (l + 1 - u) / n_phi;
+        weight[size_t(l) + 1] += (u - l) / n_phi;
+    }
+    for (int k = 0; k < nq; ++k)
+        for (int i = 0; i < ANISO_GRID_ROUGHNESS; ++i) {
+            double sum = 0.0;
+            for (int l = 0; l < np; ++l)
+                sum += weight[size_t(l)] *
+                       average_albedo(t.albedo.data() + size_t(((k * np + l) * ANISO_GRID_ROUGHNESS + i) * ANISO_GRID_MU), ANISO_GRID_MU);
+            t.average.push_back(float(sum));
+        }
+    return t;
+}
+
+std::string anisotropic_table_header(const AnisotropicTables& t, int strata) {
+    return header("BRDF_ENERGY_TABLE_GGX_ANISOTROPIC_H",
+                  "Anisotropic GGX: E(w) [ratio][phi][roughness][mu] (16-bit, rounded up) and E_avg [ratio][roughness].", strata,
+                  albedo_array_text("energy_ggx_anisotropic_albedo", "ANISO_GRID_RATIO * ANISO_GRID_PHI * ANISO_GRID_ROUGHNESS * ANISO_GRID_MU",
+                                    t.albedo) +
+                      "\n" + array_text("energy_ggx_anisotropic_average", "ANISO_GRID_RATIO * ANISO_GRID_ROUGHNESS", t.average, 8));
 }
 
 OpenPbrTables compute_openpbr_tables(int strata, int threads) {

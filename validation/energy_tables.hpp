@@ -59,6 +59,20 @@ double sheen_albedo(float roughness, float mu, int strata);
 // The sheen's lobe peaks near the horizon at low roughness: its table takes more strata per side.
 inline constexpr int kSheenStrataFactor = 4;
 
+// E(w) of the GGX reflection with F = 1 of the anisotropic grid's node (brdf/energy_grid.h): ratio
+// alpha_y / alpha_x, azimuth phi of wo from the x axis, rms roughness, mu; as single_scattering_albedo.
+double anisotropic_albedo(float ratio, float phi, float roughness, float mu, int strata);
+
+struct AnisotropicTables {
+    std::vector<float> albedo;   // [ratio][phi][roughness][mu], conservative, rounded up
+    std::vector<float> average;  // [ratio][roughness]: the hemispherical average of the interpolated E
+};
+
+// The slices over roughness and mu come from energy_slice(); the azimuth and the ratio are made
+// conservative the same way, by E at the midpoints between their nodes (and the cells' centres).
+AnisotropicTables compute_anisotropic_tables(int strata, int threads);
+std::string anisotropic_table_header(const AnisotropicTables& tables, int strata);
+
 struct OpenPbrTables {
     std::vector<float> specular_albedo;   // [ior][roughness][mu] on the dielectric grid, rounded up
     std::vector<float> specular_average;  // [ior][roughness]
