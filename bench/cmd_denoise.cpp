@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,7 @@
 #include "cli/commands.hpp"
 #include "cli/render_job.hpp"
 #include "common/input_error.hpp"
+#include "common/seconds_since.hpp"
 #include "film/image_output.hpp"
 #include "render/display_denoise.hpp"
 #include "render/host_renderer.hpp"
@@ -41,17 +43,11 @@ struct BenchDenoiseCommand {
 };
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // The reference's own noise taken out of an error (both are RMSEs over the same pixels).
 double without_reference_noise(double error, double noise) { return std::sqrt(std::max(0.0, error * error - noise * noise)); }
 
-std::string file_stem(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-    const size_t dot = name.find_last_of('.');
-    return dot == std::string::npos ? name : name.substr(0, dot);
-}
+std::string file_stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
 struct CaseRow {
     int spp = 0;

@@ -8,6 +8,7 @@
 #include "brdf/brdf.hpp"
 #include "brdf/host/features.hpp"
 #include "common/input_error.hpp"
+#include "common/seconds_since.hpp"
 #include "ibl/background_blur.hpp"
 #include "render/camera_setup.hpp"
 #include "render/film_resolve.hpp"
@@ -17,7 +18,6 @@ namespace lab::render {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // NORMAL_TETRAHEDRAL, NORMAL_CENTRAL, NORMAL_ANALYTIC of sdf/normals.h (which only a translation unit
 // with a scene can include).

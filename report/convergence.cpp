@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "common/seconds_since.hpp"
 #include "film/image_stats.hpp"
 
 namespace lab::report {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 }  // namespace
 
 double image_error_value(const film::ImageRgb& image, const film::ImageRgb& reference, ErrorMetric metric) {

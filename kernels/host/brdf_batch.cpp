@@ -5,6 +5,7 @@
 
 #include "brdf/host/measured_registry.hpp"
 #include "brdf/host/parameters.hpp"
+#include "common/seconds_since.hpp"
 #include "kernels/host/embedded_sources.hpp"
 #include "kernels/host/material_layout.hpp"
 
@@ -23,7 +24,6 @@ static_assert(sizeof(brdf::float3) == 3 * sizeof(float), "brdf::float3 must be t
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 Program timed_build(const Runtime& runtime, const std::string& options, double* seconds) {
     Clock::time_point start = Clock::now();
