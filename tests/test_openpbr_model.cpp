@@ -198,7 +198,7 @@ std::vector<FurnaceCase> furnace_cases() {
 
 }  // namespace
 
-TEST_CASE("openpbr: white furnace, layers over a white base keep albedo in [0.97, 1]", "[brdf][openpbr][furnace]") {
+TEST_CASE("openpbr: white furnace, layers over a white base keep albedo in [0.97, 1]", "[brdf][openpbr][furnace][sweep]") {
     double lowest = 2.0, highest = 0.0;
     std::string lowest_at, highest_at;
     for (const FurnaceCase& c : furnace_cases()) {
@@ -345,7 +345,7 @@ TEST_CASE("chi-square: openpbr's layered sampler over a sweep of materials", "[c
     std::printf("chi-square [openpbr]: %d tests (Sidak over %d), smallest p-value %.4g (%s)\n", tests, tests, smallest, smallest_at.c_str());
 }
 
-TEST_CASE("chi-square: openpbr's check rejects a pdf that misses a lobe", "[chi_square][openpbr]") {
+TEST_CASE("chi-square: openpbr's check rejects a pdf that misses a lobe", "[chi_square][openpbr][sweep]") {
     Material m = busy_base();
     m.coat_weight = 1.0f;
     float3 wo = brdf::direction_from_degrees(52.0f, 200.0f);
@@ -363,7 +363,7 @@ TEST_CASE("chi-square: openpbr's check rejects a pdf that misses a lobe", "[chi_
     CHECK_FALSE(bad.passed);
 }
 
-TEST_CASE("openpbr energy tables: the committed tables are what the generator writes", "[openpbr][energy_compensation]") {
+TEST_CASE("openpbr energy tables: the committed tables are what the generator writes", "[openpbr][energy_compensation][sweep]") {
     // sample rows regenerated (tests/energy_table_rows.hpp)
     auto check_row = check_energy_table_row;
     const int strata = lab::validation::kEnergyTableStrata;

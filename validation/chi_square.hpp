@@ -54,8 +54,9 @@ ChiSquareResult chi_square_test(const DirectionSampler& sampler, const Direction
 std::string describe(const ChiSquareResult& result);
 
 // The BSDF's sampler for a fixed wo. Each non-delta sample must also carry pdf == bsdf_pdf(wo, wi)
-// and f == bsdf_eval(wo, wi) (relative 1e-4), flags matching the side of wi, and delta samples a
-// positive discrete probability; a broken promise is reported as a defect.
+// and f == bsdf_eval(wo, wi) (relative 1e-4; checked on one sample in eight, chosen by u), flags
+// matching the side of wi, and delta samples a positive discrete probability; a broken promise is
+// reported as a defect.
 DirectionSampler bsdf_direction_sampler(const brdf::Material& material, brdf::float3 wo);
 DirectionDensity bsdf_direction_density(const brdf::Material& material, brdf::float3 wo);
 
