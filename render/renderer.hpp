@@ -230,6 +230,10 @@ private:
     int film_samples() const { return int(restored_.count()) + run_samples(); }
     int samples_per_launch_ = 1;
     int launch_pixels_ = 0;  // 0: whole image
+    // An integrator that splats squares its film per pass (add_pass_squares): the film as the pass
+    // in progress found it, read at its start (or, after a complete pass, kept from its end).
+    FilmReadback pass_start_;
+    bool pass_start_valid_ = false;
     int pass_pixels_ = 0;    // the pass in progress has reached pixels [0, pass_pixels_)
     int pass_samples_ = 0;   // and adds samples next_sample_ .. next_sample_ + pass_samples_ - 1 to them
     double render_seconds_ = 0.0;
