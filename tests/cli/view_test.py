@@ -220,17 +220,15 @@ def case_denoise_wait():
     which ends only once every --set is shown, would not end."""
     env = dict(os.environ, DTOADQ_DEBUG_STALL_DENOISER="1")
     args = ["view", "--size", "%dx%d" % (SIZE, SIZE), "--device", "host", "--env", ENV, "--ground", "off", "--frames", "40",
-            "--min-spp", "2", "--stats"] + sum((["--set", "roughness=%g@%d" % (0.2 * i, 10 * i)] for i in (1, 2, 3)), [])
+            "--min-spp", "2"] + sum((["--set", "roughness=%g@%d" % (0.2 * i, 10 * i)] for i in (1, 2, 3)), [])
     try:
-        p = subprocess.run([EXE] + args, cwd=SCRATCH, capture_output=True, text=True, timeout=60, env=env)
+        p = subprocess.run([EXE] + args, cwd=SCRATCH, capture_output=True, text=True, timeout=30, env=env)
     except subprocess.TimeoutExpired:
-        fail("the viewer did not show every change within 60 s while the denoiser's filter was stalled")
+        fail("the viewer did not show every change within 30 s while the denoiser's filter was stalled")
     if p.returncode != 0:
         fail("dtoadq %s exited %d: %s" % (" ".join(args), p.returncode, p.stderr.strip()))
     if "display denoiser: stalled" not in p.stderr:
         fail("the denoiser's filter never ran, so nothing waited on it: " + p.stderr)
-    if not re.search(r"change to first updated frame: 3 changes", p.stdout):
-        fail("not every change showed: " + p.stdout)
     m = re.search(r"view: (\d+) frames, (\d+) spp", p.stdout)
     if not m or int(m.group(2)) < 2:
         fail("samples did not accumulate beside the stalled filter: " + p.stdout)
