@@ -19,9 +19,12 @@ public:
 class DeviceDisplayFilter final : public DisplayFilter {
 public:
     explicit DeviceDisplayFilter(std::string selector) : selector_(std::move(selector)) {}
-    bool passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options, const film::FilterCancelled& cancelled) override {
+    void prepare() override {
         if (!runtime_) runtime_.emplace(selector_);
         if (!denoiser_) denoiser_.emplace(*runtime_);
+    }
+    bool passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options, const film::FilterCancelled& cancelled) override {
+        prepare();
         return denoiser_->passes(buffers, options, cancelled);
     }
 

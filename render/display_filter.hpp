@@ -13,6 +13,9 @@ namespace lab::render {
 class DisplayFilter {
 public:
     virtual ~DisplayFilter() = default;
+    // Builds what the passes need (a program), so that the first filter does not: on the thread
+    // that will filter, before it is needed. Throws what passes would.
+    virtual void prepare() {}
     // As film::atrous_passes; false: `cancelled` said so between two passes.
     virtual bool passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options, const film::FilterCancelled& cancelled) = 0;
 };

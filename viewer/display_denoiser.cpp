@@ -90,6 +90,10 @@ film::ImageRgb DisplayDenoiser::shown(const render::Renderer& renderer, const fi
 }
 
 void DisplayDenoiser::run() {
+    try {
+        filter_->prepare();  // its program, while the renderer builds its own: not at the first filter, beside a change
+    } catch (const std::exception&) {  // the first filter throws it again, and the worker reports it
+    }
     for (;;) {
         Job job;
         {
