@@ -250,9 +250,6 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (!run.resume.empty()) resumed = render::read_film_file(run.resume);
     render::RenderLimits limits = run_limits(run, range, resumed);
     RenderJob job = prepare_render_job(options);
-    if (aov_selection.variance && job.input.settings.integrator == render::Integrator::lt)
-        throw InputError("--aov", "", "variance: the light tracer's image is all splats from other pixels' paths, whose squares the film does not "
-                                      "keep (its variance covers a pixel's own samples: pt, bdpt)");
     std::optional<opencl::Runtime> runtime;
     std::unique_ptr<render::Renderer> renderer = make_renderer(job, options.device, &runtime);
     auto metadata_now = [&] {

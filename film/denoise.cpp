@@ -96,9 +96,10 @@ ImageRgb remodulate(const AtrousBuffers& filtered, const DenoiseGuide& guide) {
     return out;
 }
 
-void atrous_passes(AtrousBuffers* b, const DenoiseOptions& options) {
+bool atrous_passes(AtrousBuffers* b, const DenoiseOptions& options, const FilterCancelled& cancelled) {
     std::vector<std::array<float, 4>> next(b->illumination.size());
     for (int i = 0; i < options.passes; ++i) {
+        if (cancelled && cancelled()) return false;
         const atrous::AtrousPass pass =
             atrous::atrous_pass(b->width, b->height, 1 << i, options.sigma_normal, options.sigma_depth, options.sigma_luminance);
         for (int y = 0; y < b->height; ++y)
@@ -108,6 +109,7 @@ void atrous_passes(AtrousBuffers* b, const DenoiseOptions& options) {
             }
         b->illumination.swap(next);
     }
+    return true;
 }
 
 ImageRgb denoise(const ImageRgb& radiance, const DenoiseGuide& guide, const DenoiseOptions& options) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,8 +45,13 @@ struct AtrousBuffers {
 AtrousBuffers demodulate(const ImageRgb& radiance, const DenoiseGuide& guide);
 // The filtered illumination times the albedo again.
 ImageRgb remodulate(const AtrousBuffers& filtered, const DenoiseGuide& guide);
-// options.passes passes of widths 1, 2, 4, ... on the host's threads (this one).
-void atrous_passes(AtrousBuffers* buffers, const DenoiseOptions& options);
+// Asked between passes whether to give up (a filter on a thread of its own whose image is no longer
+// wanted); empty: never.
+using FilterCancelled = std::function<bool()>;
+
+// options.passes passes of widths 1, 2, 4, ... on the host's threads (this one). False: `cancelled`
+// said so between two passes, and the buffers hold a partly filtered image.
+bool atrous_passes(AtrousBuffers* buffers, const DenoiseOptions& options, const FilterCancelled& cancelled = {});
 
 // The denoised image, on the host: demodulate, the passes, remodulate.
 ImageRgb denoise(const ImageRgb& radiance, const DenoiseGuide& guide, const DenoiseOptions& options = {});

@@ -29,6 +29,13 @@ film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide
     return film::remodulate(buffers, guide);
 }
 
+film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, DisplayFilter& filter,
+                        const film::FilterCancelled& cancelled, const film::DenoiseOptions& options) {
+    film::AtrousBuffers buffers = film::demodulate(radiance, guide);
+    if (!filter.passes(&buffers, options, cancelled)) return film::ImageRgb();
+    return film::remodulate(buffers, guide);
+}
+
 std::vector<film::ImageChannel> noisy_channels(const film::ImageRgb& radiance) {
     std::vector<film::ImageChannel> channels;
     for (int c = 0; c < 3; ++c) {

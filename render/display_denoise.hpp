@@ -8,6 +8,7 @@
 
 #include "film/denoise.hpp"
 #include "film/image_output.hpp"
+#include "render/display_filter.hpp"
 #include "render/renderer.hpp"
 
 namespace lab::render {
@@ -22,6 +23,11 @@ film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs, const film::ImageRgb&
 // The denoised image, its passes on `renderer`'s device.
 film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const Renderer& renderer,
                         const film::DenoiseOptions& options = {});
+
+// The same by `filter` (on another thread than the renderer's); an empty image when `cancelled`
+// stopped it.
+film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, DisplayFilter& filter,
+                        const film::FilterCancelled& cancelled, const film::DenoiseOptions& options = {});
 
 // The raw image as EXR channels noisy.R, noisy.G, noisy.B.
 std::vector<film::ImageChannel> noisy_channels(const film::ImageRgb& radiance);

@@ -16,6 +16,8 @@ const std::vector<std::string>& channel_names() {
     return names;
 }
 
+const char* const kPassesChannel = "film.squares.passes";
+
 // Metadata that differs between parts of one render and does not change what it estimates (the
 // display's tone map, exposure and denoising change the image shown, never the film).
 bool is_per_part(const std::string& key) {
@@ -52,6 +54,15 @@ std::vector<film::ImageChannel> film_channels(const FilmReadback& film) {
             channel.values[p] = c < 4 ? film.accumulation[4 * p + c] : c < 7 ? film.splat[3 * p + (c - 4)] : film.squares[4 * p + (c - 7)];
         channels.push_back(std::move(channel));
     }
+    // A film squared per pass (render::add_pass_squares) keeps its count of passes; one squared per
+    // sample has none (0 everywhere) and no such channel.
+    film::ImageChannel passes{kPassesChannel, std::vector<float>(pixels)};
+    bool per_pass = false;
+    for (size_t p = 0; p < pixels; ++p) {
+        passes.values[p] = film.squares[4 * p + 3];
+        per_pass = per_pass || passes.values[p] != 0.0f;
+    }
+    if (per_pass) channels.push_back(std::move(passes));
     return channels;
 }
 
@@ -67,6 +78,12 @@ FilmFile read_film_file(const std::string& path) {
                                        "): only an EXR written by dtoadq render or preview holds one");
     }
     size_t pixels = size_t(file.width) * size_t(file.height);
+    std::vector<film::ImageChannel> passes;  // absent from a film squared per sample
+    try {
+        int width = 0, height = 0;
+        passes = film::read_exr_channels(path, {kPassesChannel}, &width, &height);
+    } catch (const InputError&) {
+    }
     file.film.accumulation.resize(4 * pixels);
     file.film.splat.resize(3 * pixels);
     file.film.squares.assign(4 * pixels, 0.0f);
@@ -74,6 +91,7 @@ FilmFile read_film_file(const std::string& path) {
         for (size_t c = 0; c < 4; ++c) file.film.accumulation[4 * p + c] = channels[c].values[p];
         for (size_t c = 0; c < 3; ++c) file.film.splat[3 * p + c] = channels[4 + c].values[p];
         for (size_t c = 0; c < 3; ++c) file.film.squares[4 * p + c] = channels[7 + c].values[p];
+        if (!passes.empty()) file.film.squares[4 * p + 3] = passes[0].values[p];
         float nonfinite = file.film.accumulation[4 * p + 3];
         if (!(nonfinite >= 0.0f && nonfinite == std::floor(nonfinite)))
             throw InputError(path, "film.nonfinite", "pixel " + std::to_string(p) + " holds " + std::to_string(nonfinite) + ", not a count");

@@ -61,12 +61,34 @@ film::ImageRgb resolve_variance(const FilmReadback& film, int samples_per_pixel,
                 out.rgb[3 * p + c] = std::numeric_limits<float>::quiet_NaN();
                 continue;
             }
-            const double sum = double(film.accumulation[4 * p + c]), squares = double(film.squares[4 * p + c]);
-            const double sample_variance = std::max(0.0, (squares - sum * sum / n) / (n - 1.0));
+            const double passes = double(film.squares[4 * p + 3]);
+            const bool per_pass = passes > 0.0;
+            if (per_pass && passes < 2.0) {
+                out.rgb[3 * p + c] = std::numeric_limits<float>::quiet_NaN();
+                continue;
+            }
+            const double sum = double(film.accumulation[4 * p + c]) + (per_pass ? double(film.splat[3 * p + c]) : 0.0);
+            const double squares = double(film.squares[4 * p + c]);
+            const double sample_variance = std::max(0.0, (squares - sum * sum / n) / ((per_pass ? passes : n) - 1.0));
             out.rgb[3 * p + c] = float(sample_variance / n);
         }
     }
     return out;
+}
+
+void add_pass_squares(const FilmReadback& start, FilmReadback* now, int pass_samples) {
+    const size_t pixels = now->accumulation.size() / 4;
+    if (start.accumulation.size() != now->accumulation.size() || start.squares.size() != now->squares.size() ||
+        start.splat.size() != now->splat.size() || now->squares.size() != 4 * pixels || now->splat.size() != 3 * pixels || pass_samples < 1)
+        throw std::invalid_argument("add_pass_squares: the films before and after the pass do not match");
+    for (size_t p = 0; p < pixels; ++p) {
+        for (size_t c = 0; c < 3; ++c) {
+            const double y = double(now->accumulation[4 * p + c]) - double(start.accumulation[4 * p + c]) + double(now->splat[3 * p + c]) -
+                             double(start.splat[3 * p + c]);
+            now->squares[4 * p + c] = float(double(start.squares[4 * p + c]) + y * y / double(pass_samples));
+        }
+        now->squares[4 * p + 3] = start.squares[4 * p + 3] + 1.0f;
+    }
 }
 
 }  // namespace lab::render

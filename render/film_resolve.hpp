@@ -26,11 +26,24 @@ film::ImageRgb resolve_film(const FilmReadback& film, int samples_per_pixel, int
 // Per pixel: how many of its own samples are finite (those its mean is over), as resolve_film counts them.
 std::vector<float> finite_sample_counts(const FilmReadback& film, int samples_per_pixel, int width, int height, PartialPass partial = {});
 
-// Per pixel and channel: the variance of the pixel's mean, s^2 / n, from its n finite own samples'
-// sum and sum of squares, s^2 = (sum x^2 - (sum x)^2 / n) / (n - 1) the unbiased sample variance
-// (in double; clamped at 0, where the float sums' rounding would make it negative). NaN where
-// n < 2 (no spread to estimate). What was splatted onto the pixel (the light tracer's t = 1
-// connections) is not in it.
+// Per pixel and channel: the variance of the pixel's mean, s^2 / n, n its finite own samples, in
+// double, clamped at 0 (where the float sums' rounding would make it negative):
+// - squared per sample (squares.w = 0: the path tracer's film): s^2 = (sum x^2 - (sum x)^2 / n) /
+//   (n - 1), the unbiased sample variance of its own samples; NaN where n < 2;
+// - squared per pass (squares.w = m > 0 passes, add_pass_squares: an integrator that splats):
+//   s^2 = (sum_j Y_j^2 / k_j - (sum_j Y_j)^2 / n) / (m - 1), Y_j a pass's k_j own samples and
+//   what the light paths of that pass splatted onto the pixel, sum_j Y_j = accumulation + splat;
+//   its expectation is the variance of one sample (own plus splats), since E[Y_j^2 / k_j] =
+//   sigma^2 + k_j mu^2 and E[(sum Y)^2 / n] = sigma^2 + n mu^2; NaN where m < 2.
 film::ImageRgb resolve_variance(const FilmReadback& film, int samples_per_pixel, int width, int height, PartialPass partial = {});
+
+// For an integrator that splats (IntegratorDescriptor::splats): the light paths of every pixel's
+// work-item splat onto any pixel, so which of a pixel's samples a splat belongs to is unknown and
+// a per-sample square cannot hold it; a whole pass can. Sets now->squares to start's plus, per
+// pixel, Y^2 / pass_samples (xyz) and 1 (w), Y = the pass's own samples and splats (now - start,
+// accumulation and splat): `start` and `*now` are the film before and after one complete pass of
+// `pass_samples` samples per pixel. What the kernel wrote into the squares during the pass (its
+// own samples' squares) is replaced.
+void add_pass_squares(const FilmReadback& start, FilmReadback* now, int pass_samples);
 
 }  // namespace lab::render

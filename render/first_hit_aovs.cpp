@@ -36,29 +36,36 @@ FirstHitAovs Renderer::first_hit_aovs() const {
     return first_hit_aovs(sample_ranges());
 }
 
-FirstHitAovs Renderer::first_hit_aovs(const SampleRanges& ranges) const {
+FirstHitAovs Renderer::first_hit_aovs(const SampleRanges& ranges) const { return *first_hit_aovs(ranges, {}); }
+
+std::optional<FirstHitAovs> Renderer::first_hit_aovs(const SampleRanges& ranges, const std::function<bool()>& cancelled) const {
     const int pixels = input_.settings.width * input_.settings.height;
     std::vector<brdf::float4> albedo(size_t(pixels), brdf::float4(0.0f)), normal_depth(size_t(pixels), brdf::float4(0.0f));
     std::vector<int> slots(size_t(pixels), -1);
     const int64_t slot_sample = ranges.empty() ? -1 : ranges.ranges().front().first;
     const kernel::RenderScene scene = host_render_scene();
     const kernel::RenderKernelSettings settings = kernel_settings(0, 0);
-    std::atomic<int> next{0};
-    auto work = [&] {
-        const HostSceneScope scene_scope(input_.scene);
-        for (int pixel = next++; pixel < pixels; pixel = next++)
-            for (const auto& [first, end] : ranges.ranges())
-                for (int64_t sample = first; sample < end; ++sample) {
-                    const host_kernels::FirstHit h = host_kernels::first_hit_sample(&settings, &camera_, &scene, pixel, int(sample));
-                    albedo[size_t(pixel)] += brdf::float4(h.albedo, h.coverage);
-                    normal_depth[size_t(pixel)] += brdf::float4(h.normal, h.depth);
-                    if (sample == slot_sample) slots[size_t(pixel)] = h.slot;
-                }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
+    const int piece = cancelled ? kFirstHitPiece : pixels;
+    for (int begin = 0; begin < pixels; begin += piece) {
+        if (cancelled && cancelled()) return std::nullopt;
+        const int end = std::min(pixels, begin + piece);
+        std::atomic<int> next{begin};
+        auto work = [&] {
+            const HostSceneScope scene_scope(input_.scene);
+            for (int pixel = next++; pixel < end; pixel = next++)
+                for (const auto& [first, last] : ranges.ranges())
+                    for (int64_t sample = first; sample < last; ++sample) {
+                        const host_kernels::FirstHit h = host_kernels::first_hit_sample(&settings, &camera_, &scene, pixel, int(sample));
+                        albedo[size_t(pixel)] += brdf::float4(h.albedo, h.coverage);
+                        normal_depth[size_t(pixel)] += brdf::float4(h.normal, h.depth);
+                        if (sample == slot_sample) slots[size_t(pixel)] = h.slot;
+                    }
+        };
+        std::vector<std::thread> pool;
+        for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
+        work();
+        for (std::thread& t : pool) t.join();
+    }
     return first_hit_means(albedo, normal_depth, std::move(slots), ranges.count());
 }
 

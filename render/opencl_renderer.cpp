@@ -144,7 +144,7 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& launch_settings,
     runtime_.finish();
 }
 
-FirstHitAovs OpenClRenderer::first_hit_aovs(const SampleRanges& ranges) const {
+std::optional<FirstHitAovs> OpenClRenderer::first_hit_aovs(const SampleRanges& ranges, const std::function<bool()>& cancelled) const {
     if (!first_hit_program_) {
         first_hit_program_.emplace(runtime_.build(kernels::assemble_scene_kernel("kernels/first_hit.cl", compiled_), build_options_));
         first_hit_kernel_ = first_hit_program_->kernel("render_first_hits");
@@ -159,14 +159,18 @@ FirstHitAovs OpenClRenderer::first_hit_aovs(const SampleRanges& ranges) const {
     opencl::BufferHandle slot_buffer = runtime_.buffer(slots.size() * sizeof(cl_int), CL_MEM_READ_WRITE);
     runtime_.write(slot_buffer, slots.data(), slots.size() * sizeof(cl_int));
     const cl_int slot_sample = ranges.empty() ? -1 : cl_int(ranges.ranges().front().first);
-    for (const auto& [first, end] : ranges.ranges()) {
-        cl_uint a = bind_render_arguments(first_hit_kernel_, kernel_settings(int(first), int(end - first)));
-        opencl::set_kernel_arg(first_hit_kernel_, a++, albedo_sums);
-        opencl::set_kernel_arg(first_hit_kernel_, a++, normal_depth_sums);
-        opencl::set_kernel_arg(first_hit_kernel_, a++, slot_sample);
-        opencl::set_kernel_arg(first_hit_kernel_, a++, slot_buffer);
-        launch_range(runtime_, first_hit_kernel_, PixelRange{0, image}, local_size_, size_t(image));
-        runtime_.finish();
+    const int piece = cancelled ? kFirstHitPiece : image;
+    for (int begin = 0; begin < image; begin += piece) {
+        if (cancelled && cancelled()) return std::nullopt;
+        for (const auto& [first, end] : ranges.ranges()) {
+            cl_uint a = bind_render_arguments(first_hit_kernel_, kernel_settings(int(first), int(end - first)));
+            opencl::set_kernel_arg(first_hit_kernel_, a++, albedo_sums);
+            opencl::set_kernel_arg(first_hit_kernel_, a++, normal_depth_sums);
+            opencl::set_kernel_arg(first_hit_kernel_, a++, slot_sample);
+            opencl::set_kernel_arg(first_hit_kernel_, a++, slot_buffer);
+            launch_range(runtime_, first_hit_kernel_, PixelRange{begin, std::min(image - begin, piece)}, local_size_, size_t(image));
+            runtime_.finish();
+        }
     }
     runtime_.read(albedo_sums, albedo.data(), bytes);
     runtime_.read(normal_depth_sums, normal_depth.data(), bytes);
@@ -178,6 +182,8 @@ void OpenClRenderer::display_filter_passes(film::AtrousBuffers* buffers, const f
     if (!denoiser_) denoiser_.emplace(runtime_);
     denoiser_->passes(buffers, options);
 }
+
+std::unique_ptr<DisplayFilter> OpenClRenderer::display_filter() const { return device_display_filter(runtime_.device().id()); }
 
 FilmReadback OpenClRenderer::read_film() const {
     size_t pixels = size_t(input_.settings.width) * size_t(input_.settings.height);

@@ -35,8 +35,10 @@ public:
     // The first-hit AOVs by render_first_hits (kernels/first_hit.cl), a program built at the first
     // call after each build of the integrator's, so a render without AOVs never compiles it.
     using Renderer::first_hit_aovs;
-    FirstHitAovs first_hit_aovs(const SampleRanges& ranges) const override;
+    std::optional<FirstHitAovs> first_hit_aovs(const SampleRanges& ranges, const std::function<bool()>& cancelled) const override;
     void display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const override;
+    // On this renderer's device, in a context of its own.
+    std::unique_ptr<DisplayFilter> display_filter() const override;
 
 private:
     void build_kernel() override;

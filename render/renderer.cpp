@@ -12,6 +12,7 @@
 #include "ibl/background_blur.hpp"
 #include "render/camera_setup.hpp"
 #include "render/film_resolve.hpp"
+#include "render/integrator.hpp"
 
 namespace lab::render {
 
@@ -179,8 +180,13 @@ int Renderer::add_samples(int max_samples, double budget_seconds) {
     if (max_samples > 0 && int64_t(next_sample_) + max_samples > SampleRanges::kMaxEnd)
         throw std::invalid_argument("Renderer::add_samples: sample indices past " + std::to_string(SampleRanges::kMaxEnd));
     const int pixels = input_.settings.width * input_.settings.height;
+    const bool per_pass_squares = integrator_descriptor(input_.settings.integrator).splats();
     while (added < max_samples) {
         if (pass_pixels_ == 0) pass_samples_ = std::min(max_samples - added, samples_per_launch_);
+        if (per_pass_squares && pass_pixels_ == 0 && !pass_start_valid_) {
+            pass_start_ = read_film();
+            pass_start_valid_ = true;
+        }
         int count = pixels - pass_pixels_;
         if (launch_pixels_ > 0) {
             const int tile = (launch_pixels_ + kLaunchGranularity - 1) / kLaunchGranularity * kLaunchGranularity;
@@ -189,6 +195,12 @@ int Renderer::add_samples(int max_samples, double budget_seconds) {
         launch(kernel_settings(next_sample_, pass_samples_), PixelRange{pass_pixels_, count});
         pass_pixels_ += count;
         if (pass_pixels_ == pixels) {  // the pass is complete
+            if (per_pass_squares) {
+                FilmReadback now = read_film();
+                add_pass_squares(pass_start_, &now, pass_samples_);
+                write_film(now);
+                pass_start_ = std::move(now);
+            }
             next_sample_ += pass_samples_;
             added += pass_samples_;
             pass_pixels_ = 0;
@@ -202,6 +214,7 @@ int Renderer::add_samples(int max_samples, double budget_seconds) {
 void Renderer::reset() {
     clear_film();
     pass_pixels_ = 0;
+    pass_start_valid_ = false;
     restored_ = SampleRanges();
     run_first_ = next_sample_ = first_sample_;
     render_seconds_ = 0.0;
@@ -227,6 +240,7 @@ void Renderer::restore_film(const FilmReadback& film, const SampleRanges& ranges
     if (ranges.end() > SampleRanges::kMaxEnd) throw std::invalid_argument("Renderer::restore_film: sample indices out of range");
     write_film(film);
     pass_pixels_ = 0;
+    pass_start_valid_ = false;
     restored_ = ranges;
     run_first_ = next_sample_ = int(ranges.end());
     render_seconds_ = 0.0;
@@ -295,6 +309,8 @@ void Renderer::display_filter_passes(film::AtrousBuffers* buffers, const film::D
     film::atrous_passes(buffers, options);
 }
 
+std::unique_ptr<DisplayFilter> Renderer::display_filter() const { return host_display_filter(); }
+
 PartialPass Renderer::partial_pass() const { return PartialPass{pass_pixels_, pass_pixels_ > 0 ? pass_samples_ : 0}; }
 
 film::ImageRgb Renderer::image() const {
@@ -303,6 +319,9 @@ film::ImageRgb Renderer::image() const {
 }
 
 film::ImageRgb Renderer::variance() const {
+    // Squared per pass: during a pass, the complete passes' (the pass's squares come at its end).
+    if (pass_pixels_ > 0 && pass_start_valid_)
+        return resolve_variance(pass_start_, film_samples(), input_.settings.width, input_.settings.height);
     return resolve_variance(read_film(), film_samples(), input_.settings.width, input_.settings.height,
                             partial_pass());
 }

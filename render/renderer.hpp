@@ -9,7 +9,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +21,7 @@
 #include "film/image.hpp"
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
+#include "render/display_filter.hpp"
 #include "render/film_readback.hpp"
 #include "render/film_resolve.hpp"
 #include "render/light_set.hpp"
@@ -151,10 +154,18 @@ public:
     FirstHitAovs first_hit_aovs() const;
     // The same over other sample indices (the viewer's views take a few, not every sample so far);
     // any time, since it reads nothing of the film.
-    virtual FirstHitAovs first_hit_aovs(const SampleRanges& ranges) const;
+    FirstHitAovs first_hit_aovs(const SampleRanges& ranges) const;
+    // The same, given up (nullopt) as soon as `cancelled` says so: it is asked between pieces of
+    // about kFirstHitPiece pixels (a thread that renders and must answer a change soon waits at
+    // most one piece); empty: never asked, and the image is one launch.
+    virtual std::optional<FirstHitAovs> first_hit_aovs(const SampleRanges& ranges, const std::function<bool()>& cancelled) const;
+    static constexpr int kFirstHitPiece = 4096;
     // The display denoiser's passes (film/denoise.hpp) where this renderer runs: on the host's
     // thread here; OpenClRenderer runs them on its device (kernels/denoise.cl, built at the first call).
     virtual void display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const;
+    // The same passes on the same device, apart from this renderer (render/display_filter.hpp): for
+    // a thread that filters while this one renders.
+    virtual std::unique_ptr<DisplayFilter> display_filter() const;
     // What a launch of `count` samples from `first_sample` is given; public for host-side tools that
     // trace the same rays (the viewer's pixel inspector).
     kernel::RenderKernelSettings kernel_settings(int first_sample, int count) const;
@@ -219,6 +230,10 @@ private:
     int film_samples() const { return int(restored_.count()) + run_samples(); }
     int samples_per_launch_ = 1;
     int launch_pixels_ = 0;  // 0: whole image
+    // An integrator that splats squares its film per pass (add_pass_squares): the film as the pass
+    // in progress found it, read at its start (or, after a complete pass, kept from its end).
+    FilmReadback pass_start_;
+    bool pass_start_valid_ = false;
     int pass_pixels_ = 0;    // the pass in progress has reached pixels [0, pass_pixels_)
     int pass_samples_ = 0;   // and adds samples next_sample_ .. next_sample_ + pass_samples_ - 1 to them
     double render_seconds_ = 0.0;

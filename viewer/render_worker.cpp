@@ -189,7 +189,7 @@ struct RenderWorker::Loop {
     std::shared_ptr<const render::FirstHitAovs> first_hits;  // of state first_hits_generation, at the full size
     uint64_t first_hits_generation = 0;
     uint64_t generation = 0, sequence = 0;
-    DisplayDenoiser denoiser;    // of the full-size render of the current state
+    std::unique_ptr<DisplayDenoiser> denoiser;  // of the full-size render of the current state
     std::vector<double> row_seconds;  // per pixel and sample, by full-size row, as last measured
 
     void measured(double seconds, int pixels) {
@@ -205,9 +205,19 @@ void RenderWorker::run() {
     loop.renderer = make_renderer();
     if (!loop.renderer) return;
     loop.renderer->set_samples_per_launch(1);  // small launches keep a chunk close to its budget
+    try {
+        // Builds the first-hit program (no samples: no march) before the first change can wait for it.
+        loop.renderer->first_hit_aovs(render::SampleRanges());
+    } catch (const std::exception&) {  // the views and the denoiser report it when they take the AOVs
+    }
     loop.width = loop.renderer->settings().width;
     loop.height = loop.renderer->settings().height;
     loop.row_seconds.assign(size_t(loop.height), 0.0);
+    loop.denoiser = std::make_unique<DisplayDenoiser>(loop.renderer->display_filter(), [this] {
+        std::lock_guard<std::mutex> lock(mutex_);
+        views_changed_ = true;  // a denoised image to publish, the render perhaps done
+        wake_.notify_all();
+    });
     while (!stop_.load()) {
         ViewState next;
         uint64_t next_generation = 0;
@@ -288,7 +298,7 @@ bool RenderWorker::take_state(Loop& loop, const ViewState& next, uint64_t next_g
     }
     loop.generation = next_generation;
     loop.first_pass = film::ImageRgb();
-    loop.denoiser.restart();
+    loop.denoiser->restart();
     // A new full size (the window's render area changed): the cost per pixel measured so far still holds.
     const bool resized = next.width > 0 && next.height > 0 && (next.width != loop.width || next.height != loop.height);
     if (resized) {
@@ -350,10 +360,15 @@ void RenderWorker::publish(Loop& loop) {
         show_first_pass_beyond(&image, loop.first_pass, renderer.pass_pixels());
         shown_scale = loop.first_pass_scale_shown;
     }
+    // Asked between the pieces of a first-hit march: a newer state ends it.
+    const std::function<bool()> changed = [&] {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return loop.generation != pending_generation_ || stop_.load();
+    };
     int denoised_samples = 0;
     if (denoise_.load() && loop.scale == 1 && renderer.samples_per_pixel() > 0) {
         try {
-            image = loop.denoiser.shown(renderer, image, renderer.samples_per_pixel() >= max_samples_, &denoised_samples);
+            image = loop.denoiser->shown(renderer, image, renderer.samples_per_pixel() >= max_samples_, changed, &denoised_samples);
         } catch (const std::exception& e) {  // the filter's kernel failed: show the raw image, say why
             denoise_.store(false);
             std::lock_guard<std::mutex> lock(mutex_);
@@ -380,8 +395,11 @@ void RenderWorker::publish(Loop& loop) {
     }
     if (full_size && want_first_hits_.load() && loop.first_hits_generation != loop.generation) {
         try {
-            loop.first_hits = std::make_shared<const render::FirstHitAovs>(renderer.first_hit_aovs(render::SampleRanges(0, kViewFirstHitSamples)));
-            loop.first_hits_generation = loop.generation;
+            std::optional<render::FirstHitAovs> first_hits = renderer.first_hit_aovs(render::SampleRanges(0, kViewFirstHitSamples), changed);
+            if (first_hits) {
+                loop.first_hits = std::make_shared<const render::FirstHitAovs>(std::move(*first_hits));
+                loop.first_hits_generation = loop.generation;
+            }
         } catch (const std::exception& e) {  // a failed build of the first-hit program: the views say so
             std::lock_guard<std::mutex> lock(mutex_);
             error_ = e.what();

@@ -11,8 +11,9 @@ class DeviceDenoiser {
 public:
     // Builds kernels/denoise.cl. Throws opencl::KernelBuildError or opencl::OpenClError.
     explicit DeviceDenoiser(const opencl::Runtime& runtime);
-    // As film::atrous_passes, on the device: the illumination in, filtered, back.
-    void passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const;
+    // As film::atrous_passes, on the device: the illumination in, filtered, back. With `cancelled`,
+    // each pass is waited for before it is asked; false: it said so, and the buffers are unchanged.
+    bool passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options, const film::FilterCancelled& cancelled = {}) const;
 
 private:
     const opencl::Runtime& runtime_;

@@ -6,7 +6,8 @@ a scripted --set changes the model and not the backdrop, a saved preset loads ba
 map loaded in the window replaces the environment, or, when missing, leaves it and shows the error;
 the look-dev references come and go, the backdrop's opacity and the shadow catcher follow the
 environment panel's script, a resize changes the render area and the render, every panel section
-opens without overlap, the denoised display is nearer a longer render than the raw one, and every
+opens without overlap, the denoised display is nearer a longer render than the raw one, a change
+never waits for the denoiser's filter, and every
 view of the view menu shows what it should.
 
 usage: view_test.py DTOADQ SCRATCH_DIR [CASE]   (CASE: one of CASES; default all). Exit 77: skipped.
@@ -211,6 +212,28 @@ def case_denoise():
     print("denoise: RMS against 32 spp %.2f codes denoised, %.2f raw (%.2fx)" % (error_on, error_off, error_on / error_off))
 
 
+def case_denoise_wait():
+    """A change never waits for the display denoiser: with its filter stalled at its first image
+    (DTOADQ_DEBUG_STALL_DENOISER=1: it does not return until the viewer closes), every scripted
+    change still shows and samples still accumulate. A worker that waited for a running filter, or
+    for its cancellation, would never show the first change after the stall, and the headless run,
+    which ends only once every --set is shown, would not end."""
+    env = dict(os.environ, DTOADQ_DEBUG_STALL_DENOISER="1")
+    args = ["view", "--size", "%dx%d" % (SIZE, SIZE), "--device", "host", "--env", ENV, "--ground", "off", "--frames", "40",
+            "--min-spp", "2"] + sum((["--set", "roughness=%g@%d" % (0.2 * i, 10 * i)] for i in (1, 2, 3)), [])
+    try:
+        p = subprocess.run([EXE] + args, cwd=SCRATCH, capture_output=True, text=True, timeout=30, env=env)
+    except subprocess.TimeoutExpired:
+        fail("the viewer did not show every change within 30 s while the denoiser's filter was stalled")
+    if p.returncode != 0:
+        fail("dtoadq %s exited %d: %s" % (" ".join(args), p.returncode, p.stderr.strip()))
+    if "display denoiser: stalled" not in p.stderr:
+        fail("the denoiser's filter never ran, so nothing waited on it: " + p.stderr)
+    m = re.search(r"view: (\d+) frames, (\d+) spp", p.stdout)
+    if not m or int(m.group(2)) < 2:
+        fail("samples did not accumulate beside the stalled filter: " + p.stdout)
+
+
 LAYOUT = re.compile(r"layout: window (\d+)x(\d+), render area (\d+)x(\d+), image (\d+),(\d+) (\d+)x(\d+), render (\d+)x(\d+), "
                     r"panel (\d+),(\d+) (\d+)x(\d+), columns (\d)")
 SECTION = re.compile(r"section (\w+): (-?\d+),(-?\d+) (\d+)x(\d+)")
@@ -341,7 +364,7 @@ def red_share(image, region):
 
 CASES = {"accumulate": case_accumulate, "set": case_set, "preset": case_preset, "export": case_export, "env": case_env,
          "references": case_references, "background": case_background, "resize": case_resize, "sections": case_sections,
-         "denoise": case_denoise, "views": case_views}
+         "denoise": case_denoise, "denoise_wait": case_denoise_wait, "views": case_views}
 
 if __name__ == "__main__":
     if not os.environ.get("DISPLAY"):
