@@ -349,8 +349,6 @@ cli_bad_input(NAME render.unknown_light_selection ABSENT ${PNG} EXPECT "${E}--li
 # --aov: an unknown AOV, and AOVs asked of a PNG (no layers), stop the command before the render
 cli_bad_input(NAME render.unknown_aov ABSENT ${PNG} EXPECT "${E}--aov: unknown AOV \"albdo\" \\(expected a comma-separated list of albedo, normal, depth, slot, variance, samples\\)$"
               ARGS ${RENDER} --aov albedo,albdo)
-cli_bad_input(NAME render.lt_variance ABSENT ${CLI_SCRATCH}/lt_variance.exr EXPECT "${E}--aov: variance: the light tracer's image is all splats"
-              ARGS render scenes/metaballs.json --size 16x16 --spp 1 --integrator lt --aov variance -o ${CLI_SCRATCH}/lt_variance.exr)
 cli_bad_input(NAME preview.aov_to_png ABSENT ${PNG} EXPECT "${E}--aov: AOVs are EXR layers, and .*\\.png is not an \\.exr"
               ARGS preview --size 8x8 --spp 1 --aov depth -o ${PNG})
 cli_bad_input(NAME render.no_sample_slot ABSENT ${PNG} EXPECT "${E}${D}/scene_no_sample\\.json: materials: no material named \"sample\""
@@ -536,7 +534,7 @@ find_program(VIEW_TEST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT VIEW_TEST_PYTHON)
   find_program(VIEW_TEST_PYTHON python3)
 endif()
-foreach(view_case accumulate set preset export env references background resize sections denoise views)
+foreach(view_case accumulate set preset export env references background resize sections denoise denoise_wait views)
   add_test(NAME cli.view.${view_case}
            COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/view_test.py $<TARGET_FILE:dtoadq> ${CLI_SCRATCH}/view_${view_case} ${view_case})
   # One at a time: xvfb-run -a started twice at once can pick the same display number.
