@@ -103,6 +103,7 @@ SS_FN float3 openpbr_film_change(const Material* m, float eta, float cos_angle) 
     return float3_splat(0.0f);
 }
 
+#if BRDF_FEATURE_THIN_FILM
 /* One channel of the metal's Fresnel under a film (thickness > 0) at wavenumber nu (deviation
  * sigma_nu): the F82-tint value f82 plus what the film changes of the reflectance of the conductor
  * of the same F0 and edge tint (conductor_index_from_tint, as OpenPBR's reference viewer takes it),
@@ -113,6 +114,7 @@ SS_FN float openpbr_metal_film_channel(const Material* m, float f82, float f0, f
     float change = thin_film_conductor_change(clamp(cos_angle, 0.0f, 1.0f), m->thin_film_ior, n, m->thin_film_thickness, nu, sigma_nu);
     return clamp(f82 + m->thin_film_weight * change, 0.0f, 1.0f);
 }
+#endif
 
 /* The metal's Fresnel: F82 tint of F0 = base and tint specular_color, with the thin film where there
  * is one, times specular_weight. A film of weight or thickness 0 leaves F82 bit for bit. */
