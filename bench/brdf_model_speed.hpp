@@ -24,7 +24,8 @@ struct ModelSpeedOptions {
 };
 
 // Lab's materials closest to an openpbr material's base: its colour, metalness, roughness,
-// anisotropy, index (as F0), subsurface and transmission, a Lambert diffuse under a GGX glossy lobe.
+// anisotropy, index (as F0), subsurface and transmission, a Lambert diffuse under a GGX glossy lobe
+// weighted by that F0.
 brdf::Material lab_on_same_base(const brdf::Material& openpbr);
 // The openpbr material with coat, fuzz and thin film off.
 brdf::Material openpbr_base_only(const brdf::Material& openpbr);
