@@ -1,9 +1,10 @@
 // bench brdf's comparison of the openpbr model with the lab model: evaluations and samples per
 // second of every preset in the C++ build (one thread) and the OpenCL build, each as a ratio to the
-// lab presets' rates (their geometric mean) measured in the same repeat; and each openpbr preset's base with coat, fuzz and
-// thin film off against the lab model on the same base (the lobes a kernel then compiles are the
-// base's alone), in evaluations, samples and preview paths per second. Every ratio is paired within
-// one repeat; the tables give the median over the repeats and the range.
+// lab presets' rates (their geometric mean) measured in the same repeat; and each openpbr preset's
+// base with coat, fuzz and thin film off against the lab model on the same base (the lobes a kernel
+// then compiles are the base's alone), in evaluations, samples and preview paths and rays per
+// second. Every ratio is paired within one repeat; the tables give the median over the repeats and
+// the range.
 #pragma once
 
 #include <string>
