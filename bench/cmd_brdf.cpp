@@ -1,6 +1,7 @@
 // dtoadq bench: performance figures (each subcommand in a file of bench/, registered here). `bench brdf` times bsdf_eval, bsdf_pdf and bsdf_sample in the
-// C++ build (one thread and all threads) and in the OpenCL build, and prints how much each preset's
-// own sampler reduces variance against cosine-weighted sampling.
+// C++ build (one thread and all threads) and in the OpenCL build, the openpbr model against the lab
+// model per preset and on the same base (bench/brdf_model_speed.hpp), and prints how much each
+// preset's own sampler reduces variance against cosine-weighted sampling.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,11 +19,11 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "common/input_error.hpp"
+#include "bench/brdf_model_speed.hpp"
+#include "bench/brdf_workload.hpp"
 #include "kernels/host/brdf_batch.hpp"
 #include "validation/parallel_for.hpp"
-#include "validation/random_inputs.hpp"
 #include "validation/sampling_efficiency.hpp"
-#include "validation/uniform_random.hpp"
 
 namespace lab::cli {
 namespace {
@@ -38,44 +39,8 @@ struct BenchBrdfOptions {
     int threads = int(std::max(1u, std::thread::hardware_concurrency()));
     int repeats = 3;
     bool sorted = false;
+    ModelSpeedOptions models;
 };
-
-// The timed batch: item i uses preset i mod P (neighbours differ: the worst case for SIMD lanes)
-// or, sorted, the presets in consecutive blocks; a wo in the upper hemisphere, a wi anywhere, a u.
-struct Workload {
-    std::vector<brdf::Material> materials;
-    std::vector<int> index;
-    std::vector<brdf::float3> wo, wi, u;
-};
-
-Workload make_workload(const std::vector<brdf::Preset>& presets, long n, bool sorted) {
-    Workload w;
-    for (const brdf::Preset& p : presets) w.materials.push_back(p.material);
-    validation::UniformRandom rng(2017);
-    for (long i = 0; i < n; ++i) {
-        w.index.push_back(sorted ? int(i * long(presets.size()) / n) : int(i % long(presets.size())));
-        w.wo.push_back(validation::uniform_hemisphere_direction(rng));
-        w.wi.push_back(validation::uniform_sphere_direction(rng));
-        w.u.push_back(rng.next_float3());
-    }
-    return w;
-}
-
-// Keeps the optimiser from dropping the timed calls.
-volatile float g_sink = 0.0f;
-
-enum class Operation { eval, pdf, sample };
-
-float run_cpp(const Workload& w, Operation op, long begin, long end) {
-    float sum = 0.0f;
-    for (long i = begin; i < end; ++i) {
-        const brdf::Material& m = w.materials[size_t(w.index[size_t(i)])];
-        if (op == Operation::eval) sum += brdf::bsdf_eval(&m, w.wo[size_t(i)], w.wi[size_t(i)]).x;
-        else if (op == Operation::pdf) sum += brdf::bsdf_pdf(&m, w.wo[size_t(i)], w.wi[size_t(i)]);
-        else sum += brdf::bsdf_sample(&m, w.wo[size_t(i)], w.u[size_t(i)]).pdf;
-    }
-    return sum;
-}
 
 // Best of `repeats` wall-clock runs: the figure least disturbed by the rest of the machine.
 double best_seconds(int repeats, const std::function<void()>& run) {
@@ -180,10 +145,17 @@ void run_bench_brdf(const BenchBrdfOptions& o) {
         throw InputError("command line", "--efficiency-samples", "must be in [1000, 100000000]");
     if (o.threads < 1 || o.threads > 256) throw InputError("command line", "--threads", "must be in [1, 256]");
     if (o.repeats < 1 || o.repeats > 100) throw InputError("command line", "--repeats", "must be in [1, 100]");
+    if (o.models.samples < 1000 || o.models.samples > 100000000)
+        throw InputError("command line", "--model-samples", "must be in [1000, 100000000]");
+    if (o.models.repeats < 0 || o.models.repeats > 100) throw InputError("command line", "--model-repeats", "must be in [0, 100]");
+    if (!(o.models.preview_seconds >= 0.0 && o.models.preview_seconds <= 3600.0))
+        throw InputError("command line", "--preview-seconds", "must be in [0, 3600]");
 
     std::vector<brdf::Preset> presets = load_preset_folder(o.presets, "--presets");
     opencl::Runtime runtime(o.device);
-    Workload w = make_workload(presets, o.samples, o.sorted);
+    std::vector<brdf::Material> materials;
+    for (const brdf::Preset& p : presets) materials.push_back(p.material);
+    Workload w = make_workload(materials, o.samples, o.sorted);
     std::printf("dtoadq bench brdf: %ld items %s %zu presets in %s, best of %d runs\n", o.samples,
                 o.sorted ? "in blocks of" : "cycling through", presets.size(), o.presets.c_str(), o.repeats);
     std::printf("OpenCL device %s, %u compute units, %s\n", runtime.device().description().c_str(), runtime.device().compute_units,
@@ -215,6 +187,7 @@ void run_bench_brdf(const BenchBrdfOptions& o) {
     print_rate_row("OpenCL, kernel only", cl.kernel, single);
     print_rate_row("OpenCL, with transfers", cl.end_to_end, single);
 
+    if (o.models.repeats > 0) print_model_speed(presets, runtime, batch, o.models);
     print_efficiency(presets, o);
 }
 
@@ -235,6 +208,16 @@ void register_bench(CLI::App& app) {
         ->capture_default_str();
     brdf_cmd->add_option("--threads", options->threads, "Threads of the multi-threaded C++ figures")->capture_default_str();
     brdf_cmd->add_option("--repeats", options->repeats, "Timed runs per figure; the best is reported")->capture_default_str();
+    brdf_cmd->add_option("--model-samples", options->models.samples, "Items per timed batch of one material in the openpbr-against-lab tables")
+        ->capture_default_str();
+    brdf_cmd->add_option("--model-repeats", options->models.repeats, "Paired repeats of the openpbr-against-lab tables (0: leave them out)")
+        ->capture_default_str();
+    brdf_cmd->add_option("--preview-seconds", options->models.preview_seconds,
+                         "Preview render time per figure of the same-base table (0: no preview columns)")
+        ->capture_default_str();
+    brdf_cmd->add_option("--preview-size", options->models.preview_size, "Preview image size of the same-base table")->capture_default_str();
+    brdf_cmd->add_option("--preview-env", options->models.preview_env, "Preview environment of the same-base table (file or constant:R,G,B)")
+        ->capture_default_str();
     brdf_cmd->add_flag("--sorted", options->sorted, "Give the presets consecutive blocks of items instead of alternating them");
     brdf_cmd->callback([options] { run_bench_brdf(*options); });
     register_bench_preview(*bench);

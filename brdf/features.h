@@ -41,7 +41,7 @@
 #define BRDF_FEATURE_FUZZ 1 /* openpbr: the fuzz's sheen and its table */
 #endif
 #ifndef BRDF_FEATURE_THIN_FILM
-#define BRDF_FEATURE_THIN_FILM 1 /* openpbr: thin-film iridescence on the dielectric specular */
+#define BRDF_FEATURE_THIN_FILM 1 /* openpbr: thin-film iridescence on the dielectric specular and the metal */
 #endif
 #ifndef BRDF_FEATURE_ENERGY_COMPENSATION
 #define BRDF_FEATURE_ENERGY_COMPENSATION 1 /* Kulla-Conty multiple scattering and its tables */

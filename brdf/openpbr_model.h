@@ -14,7 +14,8 @@
  *             reflectance, rho the base colour, applied in proportion to coat_darkening. The coat
  *             roughens the specular below: r^4 -> min(1, r^4 + 2 coat_roughness^4), by coat_weight;
  *   metal     GGX with the F82-tint Fresnel (brdf/fresnel.h) of F0 = base_weight base_color and
- *             tint specular_color, times specular_weight; Kulla-Conty multiple scattering;
+ *             tint specular_color, times specular_weight; Kulla-Conty multiple scattering; the thin
+ *             film's change of an equivalent conductor's reflectance added by thin_film_weight;
  *   specular  GGX reflection off the dielectric of specular_ior, its F0 scaled by specular_weight
  *             (through the index, brdf/dielectric_reflection.h), tinted by specular_color, with the
  *             thin film's Airy reflectance (brdf/thin_film.h) mixed into its Fresnel by
@@ -79,7 +80,7 @@ typedef struct OpenPbr {
     float fuzz_albedo;         /* fuzz_weight times the normalised sheen's albedo at mu_o */
     float fuzz_normalisation;  /* 1 / max(1, E_sheen(mu_o)) */
     float coat_albedo;         /* E_coat(mu_o) */
-    float3 specular_albedo;    /* what the dielectric specular reflects at mu_o, film and tint included */
+    float3 specular_albedo;    /* what the dielectric specular reflects at mu_o, film and tint included (0 without an opaque dielectric) */
     float3 darkening;          /* D, mixed in by coat_darkening */
 } OpenPbr;
 
@@ -95,11 +96,38 @@ SS_FN float3 openpbr_specular_fresnel(const Material* m, float eta, float cos_an
 
 /* What the film adds to the specular's Fresnel reflectance at cos (0 without a film). */
 SS_FN float3 openpbr_film_change(const Material* m, float eta, float cos_angle) {
-    return openpbr_specular_fresnel(m, eta, cos_angle) - float3_splat(fresnel_dielectric(clamp(cos_angle, 0.0f, 1.0f), eta));
+#if BRDF_FEATURE_THIN_FILM
+    if (m->thin_film_weight > 0.0f)
+        return openpbr_specular_fresnel(m, eta, cos_angle) - float3_splat(fresnel_dielectric(clamp(cos_angle, 0.0f, 1.0f), eta));
+#endif
+    return float3_splat(0.0f);
 }
 
+#if BRDF_FEATURE_THIN_FILM
+/* One channel of the metal's Fresnel under a film (thickness > 0) at wavenumber nu (deviation
+ * sigma_nu): the F82-tint value f82 plus what the film changes of the reflectance of the conductor
+ * of the same F0 and edge tint (conductor_index_from_tint, as OpenPBR's reference viewer takes it),
+ * weighted by thin_film_weight; in [0, 1]. At normal incidence both curves are F0, so there it is
+ * that conductor's film reflectance. */
+SS_FN float openpbr_metal_film_channel(const Material* m, float f82, float f0, float tint, float cos_angle, float nu, float sigma_nu) {
+    float2 n = conductor_index_from_tint(f0, tint);
+    float change = thin_film_conductor_change(clamp(cos_angle, 0.0f, 1.0f), m->thin_film_ior, n, m->thin_film_thickness, nu, sigma_nu);
+    return clamp(f82 + m->thin_film_weight * change, 0.0f, 1.0f);
+}
+#endif
+
+/* The metal's Fresnel: F82 tint of F0 = base and tint specular_color, with the thin film where there
+ * is one, times specular_weight. A film of weight or thickness 0 leaves F82 bit for bit. */
 SS_FN float3 openpbr_metal_fresnel(const Material* m, float3 base, float cos_angle) {
-    return fresnel_f82_tint(base, float3_from_array(m->specular_color), cos_angle) * m->specular_weight;
+    float3 tint = float3_from_array(m->specular_color);
+    float3 f = fresnel_f82_tint(base, tint, cos_angle);
+#if BRDF_FEATURE_THIN_FILM
+    if (m->thin_film_weight > 0.0f && m->thin_film_thickness > 0.0f)
+        f = make_float3(openpbr_metal_film_channel(m, f.x, base.x, tint.x, cos_angle, THIN_FILM_NU_R, THIN_FILM_SIGMA_NU),
+                        openpbr_metal_film_channel(m, f.y, base.y, tint.y, cos_angle, THIN_FILM_NU_G, THIN_FILM_SIGMA_NU),
+                        openpbr_metal_film_channel(m, f.z, base.z, tint.z, cos_angle, THIN_FILM_NU_B, THIN_FILM_SIGMA_NU));
+#endif
+    return f * m->specular_weight;
 }
 
 /* The specular roughness under a coat of weight w: r^4 -> min(1, r^4 + 2 coat_roughness^4). */
@@ -155,17 +183,20 @@ SS_FN OpenPbr openpbr_setup(const Material* m, float3 wo) {
      * for a smooth interface); a rough one sees facets at other angles too, where the film's
      * interference may reflect more: the largest change at mu_o and at the angles one alpha either
      * side of it. 0 without a film. */
-    float e_s = openpbr_specular_albedo(p.specular, p.eta, mu_o);
-    float3 film = openpbr_film_change(m, p.eta, mu_o);
+    p.specular_albedo = float3_splat(0.0f); /* only the opaque dielectric has a layer under its specular */
+    if (p.opaque > 0.0f) {
+        float e_s = openpbr_specular_albedo(p.specular, p.eta, mu_o);
+        float3 film = openpbr_film_change(m, p.eta, mu_o);
 #if BRDF_FEATURE_THIN_FILM
-    if (m->thin_film_weight > 0.0f && !p.specular_smooth) {
-        float theta = acos(clamp(mu_o, 0.0f, 1.0f)), spread = atan(sqrt(p.specular.ax * p.specular.ay));
-        film = fmax(film, fmax(openpbr_film_change(m, p.eta, cos(fmax(theta - spread, 0.0f))),
-                               openpbr_film_change(m, p.eta, cos(fmin(theta + spread, 0.5f * SS_PI)))));
-    }
+        if (m->thin_film_weight > 0.0f && !p.specular_smooth) {
+            float theta = acos(clamp(mu_o, 0.0f, 1.0f)), spread = atan(sqrt(p.specular.ax * p.specular.ay));
+            film = fmax(film, fmax(openpbr_film_change(m, p.eta, cos(fmax(theta - spread, 0.0f))),
+                                   openpbr_film_change(m, p.eta, cos(fmin(theta + spread, 0.5f * SS_PI)))));
+        }
 #endif
-    float3 e_film = clamp(float3_splat(e_s) + film, 0.0f, 1.0f);
-    p.specular_albedo = float3_from_array(m->specular_color) * e_film;
+        float3 e_film = clamp(float3_splat(e_s) + film, 0.0f, 1.0f);
+        p.specular_albedo = float3_from_array(m->specular_color) * e_film;
+    }
     return p;
 }
 

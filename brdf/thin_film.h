@@ -100,6 +100,27 @@ SS_FN float thin_film_conductor_reflectance(float cos_outside, float eta_outside
     return 0.5f * (sqr(film_amplitude(eta_outside, n_base, c1, 0).magnitude) + sqr(film_amplitude(eta_outside, n_base, c1, 1).magnitude));
 }
 
+/* A conductor's complex index eta + i kappa from its normal reflectance r and an edge tint g in
+ * [0, 1], by Gulbrandsen 2014 ("Artist Friendly Metallic Fresnel"): eta runs from
+ * n_max = (1 + sqrt r) / (1 - sqrt r) (g = 0, kappa = 0) down to n_min = (1 - r) / (1 + r) (g = 1),
+ * eta = g n_min + (1 - g) n_max, and kappa solves ((eta - 1)^2 + kappa^2) / ((eta + 1)^2 + kappa^2) = r,
+ * so the conductor reflects exactly r at normal incidence. r is held below 0.99, where n_max is finite. */
+SS_FN float2 conductor_index_from_tint(float r, float g) {
+    r = clamp(r, 0.0f, 0.99f);
+    float sqrt_r = sqrt(r);
+    float n_min = (1.0f - r) / (1.0f + r), n_max = (1.0f + sqrt_r) / (1.0f - sqrt_r);
+    float eta = mix(n_max, n_min, clamp(g, 0.0f, 1.0f));
+    float kappa2 = (sqr(eta + 1.0f) * r - sqr(eta - 1.0f)) / (1.0f - r);
+    return make_float2(eta, sqrt(fmax(kappa2, 0.0f)));
+}
+
+/* What a film (thickness > 0) changes of the reflectance of a conductor of complex index n_base,
+ * outside index 1: the film's reflectance less the bare conductor's. */
+SS_FN float thin_film_conductor_change(float cos_outside, float eta_film, float2 n_base, float thickness_um, float nu, float sigma_nu) {
+    return thin_film_airy(cos_outside, 1.0f, eta_film, n_base, thickness_um, nu, sigma_nu) -
+           thin_film_conductor_reflectance(cos_outside, 1.0f, eta_film, n_base, 0.0f, nu, sigma_nu);
+}
+
 /* The RGB renderer's three channels as Gaussians in wavenumber (Belcour and Barla integrate against
  * Gaussian fits of CIE XYZ instead): centred on 610, 550 and 465 nm, deviation 0.1 / micrometre
  * (about +-30 nm at 550 nm), so a film a few micrometres thick averages to its incoherent sum. */

@@ -87,10 +87,12 @@ TEST_CASE("used_features: an openpbr material compiles only the layers it uses",
         INFO(on);
         CHECK(feature_on({layered}, on));
     }
-    brdf::Material metal = plain;  // a metal's film would go on the dielectric specular it does not have
+    brdf::Material metal = plain;  // the film on the metal, with no dielectric under it
     metal.metallic = 1.0f, metal.thin_film_weight = 1.0f;
-    CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_THIN_FILM"));
+    CHECK(feature_on({metal}, "BRDF_FEATURE_THIN_FILM"));
     CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_DIFFUSE"));
+    metal.thin_film_thickness = 0.0f;  // a film of thickness 0 is no film on the metal
+    CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_THIN_FILM"));
     CHECK(feature_on({metal}, "BRDF_FEATURE_ENERGY_COMPENSATION"));
     // the lab's materials leave the openpbr model and its tables out of the kernel
     brdf::Material lambert = lobe_material(1, 0, 0, 0);

@@ -1,6 +1,7 @@
 // The OpenPBR Surface lobes of the BRDF module against closed forms and independent computations.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -8,6 +9,7 @@
 
 #include "brdf/brdf.hpp"
 #include "brdf/host/angles.hpp"
+#include "brdf/host/parameters.hpp"
 #include "tests/chi_square_suite.hpp"
 
 using brdf::float3;
@@ -257,5 +259,87 @@ TEST_CASE("thin film over a conductor: the Airy series equals the textbook refle
     for (double d : {0.1, 0.5}) {
         float a = brdf::thin_film_conductor_reflectance(0.7f, 1.0f, 1.4f, brdf::float2(1.6f, 0.0f), float(d), 1.7f, 0.1f);
         CHECK(a == Approx(brdf::thin_film_reflectance(0.7f, 1.0f, 1.4f, 1.6f, float(d), 1.7f, 0.1f)).margin(1e-7));
+    }
+}
+
+namespace {
+
+// Gulbrandsen 2014's conductor of normal reflectance r and edge tint g, in double, for the test only.
+std::complex<double> gulbrandsen_textbook(double r, double g) {
+    r = std::min(r, 0.99);
+    double n_min = (1.0 - r) / (1.0 + r), n_max = (1.0 + std::sqrt(r)) / (1.0 - std::sqrt(r));
+    double n = g * n_min + (1.0 - g) * n_max;
+    return {n, std::sqrt(std::max(0.0, ((n + 1.0) * (n + 1.0) * r - (n - 1.0) * (n - 1.0)) / (1.0 - r)))};
+}
+
+// OpenPBR's F82 tint (Kutz et al.'s notation) in double.
+double f82_textbook(double f0, double tint, double mu) {
+    auto schlick = [f0](double m) { return f0 + (1.0 - f0) * std::pow(1.0 - m, 5.0); };
+    const double mu_bar = 1.0 / 7.0;
+    double b = schlick(mu_bar) * (1.0 - tint) / (mu_bar * std::pow(1.0 - mu_bar, 6.0));
+    return std::max(0.0, schlick(mu) - b * mu * std::pow(1.0 - mu, 6.0));
+}
+
+}  // namespace
+
+TEST_CASE("thin film on the metal: F82 plus the film's change of the equivalent conductor's two-interface reflectance", "[brdf][openpbr]") {
+    struct MetalCase {
+        double f0, tint;
+    };
+    // gold-, copper- and aluminium-like channels, a dark metal with a dark tint, a white one (F0 above Gulbrandsen's 0.99)
+    const MetalCase metals[] = {{0.95, 0.9}, {0.55, 0.5}, {0.91, 0.98}, {0.05, 0.2}, {1.0, 1.0}};
+    brdf::Material m = brdf::default_material(BRDF_MODEL_OPENPBR);
+    double worst = 0.0, dielectric_miss = 0.0;
+    for (const MetalCase& c : metals) {
+        // the index in float against Gulbrandsen's in double: eta = n_max + g (n_min - n_max) cancels
+        // towards g = 1, good to a few ulps of n_max; kappa^2 is a difference over 1 - r, and moves with eta
+        brdf::float2 index = brdf::conductor_index_from_tint(float(c.f0), float(c.tint));
+        std::complex<double> exact = gulbrandsen_textbook(c.f0, c.tint);
+        const double eps = std::ldexp(1.0, -24), r = std::min(c.f0, 0.99), n = exact.real();
+        double eta_bound = 8.0 * eps * (1.0 + std::sqrt(r)) / (1.0 - std::sqrt(r));
+        double kappa2_bound = 8.0 * eps * ((n + 1.0) * (n + 1.0) * r + (n - 1.0) * (n - 1.0)) / (1.0 - r) +
+                              std::fabs(2.0 * (n + 1.0) * r - 2.0 * (n - 1.0)) / (1.0 - r) * eta_bound;
+        CHECK(std::fabs(index.x - n) <= eta_bound);
+        CHECK(std::fabs(double(index.y) * index.y - std::norm(exact.imag())) <= kappa2_bound);
+        // the film's part against the textbook over the float index
+        std::complex<double> n3(index.x, index.y);
+        for (double film_ior : {1.33, 1.8}) {
+            for (double weight : {1.0, 0.6}) {
+                m.thin_film_ior = float(film_ior), m.thin_film_weight = float(weight);
+                for (double theta : {0.0, 45.0, 75.0}) {
+                    float cos1 = float(std::cos(theta * M_PI / 180.0));
+                    double f82 = f82_textbook(c.f0, c.tint, cos1);
+                    for (double d : {0.1, 0.35, 0.9}) {
+                        m.thin_film_thickness = float(d);
+                        for (double lambda : {0.45, 0.55, 0.65}) {
+                            double change = thin_film_textbook(cos1, 1.0, film_ior, n3, d, lambda) - thin_film_textbook(cos1, 1.0, 1.0, n3, 0.0, lambda);
+                            double expected = std::min(1.0, std::max(0.0, f82 + weight * change));
+                            float r = brdf::openpbr_metal_film_channel(&m, float(f82), float(c.f0), float(c.tint), cos1, float(1.0 / lambda), 0.0f);
+                            INFO("F0 " << c.f0 << ", tint " << c.tint << ", film " << film_ior << " x " << weight << ", theta " << theta << ", d " << d
+                                       << ", lambda " << lambda);
+                            // the Airy series' float rounding (1e-5, the conductor test above) and the bare conductor's (1e-6)
+                            CHECK(std::fabs(r - expected) <= 1.1e-5);
+                            worst = std::fmax(worst, std::fabs(r - expected));
+                            // the check sees the base: the same film over a dielectric of the same F0 is far off
+                            double eta = (1.0 + std::sqrt(std::min(c.f0, 0.99))) / (1.0 - std::sqrt(std::min(c.f0, 0.99)));
+                            double over_dielectric = f82 + weight * (thin_film_textbook(cos1, 1.0, film_ior, eta, d, lambda) -
+                                                                     thin_film_textbook(cos1, 1.0, 1.0, eta, 0.0, lambda));
+                            dielectric_miss = std::fmax(dielectric_miss, std::fabs(std::min(1.0, std::max(0.0, over_dielectric)) - r));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    CHECK(dielectric_miss > 100 * 1.1e-5);
+    std::printf("thin film on the metal against the two-interface reflectance: largest difference %.2e (over a dielectric base instead: %.2f)\n",
+                worst, dielectric_miss);
+    // the equivalent conductor reflects F0 at normal incidence, so there the film is the two-interface reflectance itself
+    for (const MetalCase& c : metals) {
+        if (c.f0 > 0.99) continue;
+        m.thin_film_weight = 1.0f, m.thin_film_ior = 1.5f, m.thin_film_thickness = 0.3f;
+        brdf::float2 index = brdf::conductor_index_from_tint(float(c.f0), float(c.tint));
+        float r = brdf::openpbr_metal_film_channel(&m, float(c.f0), float(c.f0), float(c.tint), 1.0f, 1.0f / 0.55f, 0.0f);
+        CHECK(std::fabs(r - thin_film_textbook(1.0, 1.0, 1.5, std::complex<double>(index.x, index.y), 0.3, 0.55)) <= 1.1e-5);
     }
 }

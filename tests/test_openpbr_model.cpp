@@ -123,6 +123,24 @@ TEST_CASE("openpbr: a film of thickness 0 is no film", "[brdf][openpbr]") {
     CHECK(differences(film, plain, 2000, 4) > 500);
 }
 
+TEST_CASE("openpbr: a film of weight 0 or thickness 0 on the metal is the plain F82 metal", "[brdf][openpbr]") {
+    Material plain = openpbr();
+    set_color(plain.albedo, 0.9f, 0.6f, 0.3f);
+    set_color(plain.specular_color, 0.8f, 0.9f, 1.0f);
+    plain.metallic = 1.0f, plain.roughness = 0.35f, plain.anisotropic = 0.4f, plain.specular_weight = 0.9f;
+    plain.thin_film_thickness = 0.42f, plain.thin_film_ior = 1.7f;
+    Material thin = plain, unweighted = plain;
+    unweighted.thin_film_weight = 0.0f;
+    thin.thin_film_weight = 1.0f, thin.thin_film_thickness = 0.0f;
+    CHECK(differences(unweighted, plain, 20000, 5) == 0);
+    CHECK(differences(thin, plain, 20000, 6) == 0);
+    // the check sees a film on the metal: weight 1e-3 or 1 nm change most triples
+    unweighted.thin_film_weight = 1e-3f;
+    thin.thin_film_thickness = 1e-3f;
+    CHECK(differences(unweighted, plain, 2000, 5) > 500);
+    CHECK(differences(thin, plain, 2000, 6) > 500);
+}
+
 TEST_CASE("openpbr: a smooth coat reflects Fresnel(coat_ior) at the mirror direction", "[brdf][openpbr]") {
     for (float ior : {1.3f, 1.6f, 2.5f}) {
         Material m = busy_base();
@@ -187,6 +205,11 @@ std::vector<FurnaceCase> furnace_cases() {
     Material m = white;
     m.metallic = 1.0f, m.roughness = 0.5f, m.coat_weight = 1.0f, m.coat_roughness = 0.2f;
     cases.push_back({"white coat over white rough metal", m});
+    for (float thickness : {0.25f, 0.5f, 1.2f}) {
+        m = white;
+        m.metallic = 1.0f, m.roughness = 0.3f, m.thin_film_weight = 1.0f, m.thin_film_thickness = thickness;
+        cases.push_back({"white thin film on white rough metal", m});
+    }
     m = white;
     m.base_diffuse_roughness = 0.5f, m.fuzz_weight = 1.0f, m.coat_weight = 1.0f;
     cases.push_back({"white fuzz over white coat over white rough diffuse", m});
@@ -318,6 +341,10 @@ std::vector<Setting> chi_square_settings() {
     m = openpbr();
     m.thin_film_weight = 1.0f, m.thin_film_thickness = 0.4f, m.roughness = 0.2f, m.base_diffuse_roughness = 1.0f;
     s.push_back({"thin film on the specular over rough diffuse", m});
+    m = openpbr();
+    m.metallic = 1.0f, m.roughness = 0.3f, m.thin_film_weight = 1.0f, m.thin_film_thickness = 0.3f, m.thin_film_ior = 1.8f;
+    set_color(m.albedo, 0.9f, 0.7f, 0.4f);
+    s.push_back({"thin film on a rough F82 metal", m});
     return s;
 }
 

@@ -25,6 +25,7 @@ void add_openpbr(const Material& m, Needs* needs) {
     if (p.metal > 0.0f) {
         if (!p.specular_smooth) needs->ggx = true;
         needs->energy_compensation = needs->energy_compensation || p.metal_compensated;
+        needs->thin_film = needs->thin_film || (m.thin_film_weight > 0.0f && m.thin_film_thickness > 0.0f);
     }
     if (p.opaque > 0.0f) {
         if (!p.specular_smooth) needs->ggx = true;

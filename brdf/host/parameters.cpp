@@ -51,7 +51,7 @@ const std::vector<ScalarParameter>& openpbr_parameters() {
         scalar("fuzz", "fuzz_weight", &M::fuzz_weight, 0.0f, 1.0f, 0.0f, "", "presence of the fuzz (sheen) layer on top"),
         color("fuzz", "fuzz_color", &M::fuzz_color, 1.0f, "colour of the fuzz"),
         scalar("fuzz", "fuzz_roughness", &M::fuzz_roughness, 0.0f, 1.0f, 0.5f, "", "roughness of the fuzz's fibres (Charlie sheen)"),
-        scalar("thin film", "thin_film_weight", &M::thin_film_weight, 0.0f, 1.0f, 0.0f, "", "coverage of the thin film on the dielectric specular"),
+        scalar("thin film", "thin_film_weight", &M::thin_film_weight, 0.0f, 1.0f, 0.0f, "", "coverage of the thin film on the dielectric specular and the metal"),
         scalar("thin film", "thin_film_thickness", &M::thin_film_thickness, 0.0f, BRDF_THIN_FILM_THICKNESS_MAX, 0.5f, "micrometres",
                "thickness of the film"),
         scalar("thin film", "thin_film_ior", &M::thin_film_ior, BRDF_IOR_MIN, BRDF_IOR_MAX, 1.4f, "", "index of refraction of the film"),

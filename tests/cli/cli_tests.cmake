@@ -173,6 +173,10 @@ cli_bad_input(NAME bench_brdf.samples EXPECT "${E}command line: --samples: must 
               ARGS bench brdf --samples 5)
 cli_bad_input(NAME bench_brdf.threads EXPECT "${E}command line: --threads: must be in \\[1, 256\\]$"
               ARGS bench brdf --threads 0)
+cli_bad_input(NAME bench_brdf.model_repeats EXPECT "${E}command line: --model-repeats: must be in \\[0, 100\\]$"
+              ARGS bench brdf --model-repeats 101)
+cli_bad_input(NAME bench_brdf.preview_seconds EXPECT "${E}command line: --preview-seconds: must be in \\[0, 3600\\]$"
+              ARGS bench brdf --preview-seconds nan)
 cli_bad_input(NAME bench_brdf.presets_missing EXPECT "${E}/nonexistent-dtoadq: --presets: not a folder of presets"
               ARGS bench brdf --presets /nonexistent-dtoadq)
 cli_bad_input(NAME bench_brdf.bad_preset_in_folder EXPECT "${E}${D}/[a-z_]+\\.json: "
