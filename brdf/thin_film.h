@@ -64,22 +64,36 @@ SS_FN float thin_film_polarised(FilmAmplitude r12, FilmAmplitude r23, float opd,
     return clamp(reflectance + tail, 0.0f, 1.0f);
 }
 
+/* The light's path through the film: the incidence cosines outside and inside, the optical path
+ * difference 2 eta_film d cos theta_film, and whether it is past the outside-to-film critical angle
+ * (the film then reflects everything; frustrated total reflection through a film thinner than a
+ * wavelength is left out, as Belcour and Barla do). */
+typedef struct FilmPath {
+    float cos_outside, cos_film, opd;
+    int reflects_all;
+} FilmPath;
+
+SS_FN FilmPath film_path(float cos_outside, float eta_outside, float eta_film, float thickness_um) {
+    FilmPath path;
+    path.cos_outside = clamp(cos_outside, 0.0f, 1.0f);
+    float sin2_film = sqr(eta_outside / eta_film) * (1.0f - path.cos_outside * path.cos_outside);
+    path.reflects_all = sin2_film >= 1.0f;
+    path.cos_film = path.reflects_all ? 0.0f : sqrt(1.0f - sin2_film);
+    path.opd = 2.0f * eta_film * thickness_um * path.cos_film;
+    return path;
+}
+
 /* Unpolarised reflectance of the film over a base of complex index n_base (kappa = 0: a dielectric)
- * at incidence cosine cos_outside, thickness in micrometres, nu and sigma_nu in 1/micrometre. Past
- * the outside-to-film critical angle the film reflects everything (frustrated total reflection
- * through a film thinner than a wavelength is left out, as Belcour and Barla do). */
+ * at incidence cosine cos_outside, thickness in micrometres, nu and sigma_nu in 1/micrometre. */
 SS_FN float thin_film_airy(float cos_outside, float eta_outside, float eta_film, float2 n_base, float thickness_um,
                            float nu, float sigma_nu) {
-    float c1 = clamp(cos_outside, 0.0f, 1.0f);
-    float sin2_film = sqr(eta_outside / eta_film) * (1.0f - c1 * c1);
-    if (sin2_film >= 1.0f) return 1.0f;
-    float c2 = sqrt(1.0f - sin2_film);
-    float opd = 2.0f * eta_film * thickness_um * c2;
+    FilmPath path = film_path(cos_outside, eta_outside, eta_film, thickness_um);
+    if (path.reflects_all) return 1.0f;
     float sum = 0.0f;
     for (int polarisation = 0; polarisation < 2; ++polarisation) {
-        FilmAmplitude r12 = film_amplitude(eta_outside, make_float2(eta_film, 0.0f), c1, polarisation);
-        FilmAmplitude r23 = film_amplitude(eta_film, n_base, c2, polarisation);
-        sum += thin_film_polarised(r12, r23, opd, nu, sigma_nu);
+        FilmAmplitude r12 = film_amplitude(eta_outside, make_float2(eta_film, 0.0f), path.cos_outside, polarisation);
+        FilmAmplitude r23 = film_amplitude(eta_film, n_base, path.cos_film, polarisation);
+        sum += thin_film_polarised(r12, r23, path.opd, nu, sigma_nu);
     }
     return 0.5f * sum;
 }
@@ -131,10 +145,20 @@ SS_FN float thin_film_conductor_change(float cos_outside, float eta_film, float2
 
 SS_FN float3 thin_film_reflectance_rgb(float cos_outside, float eta_outside, float eta_film, float eta_base,
                                        float thickness_um) {
-    return make_float3(
-        thin_film_reflectance(cos_outside, eta_outside, eta_film, eta_base, thickness_um, THIN_FILM_NU_R, THIN_FILM_SIGMA_NU),
-        thin_film_reflectance(cos_outside, eta_outside, eta_film, eta_base, thickness_um, THIN_FILM_NU_G, THIN_FILM_SIGMA_NU),
-        thin_film_reflectance(cos_outside, eta_outside, eta_film, eta_base, thickness_um, THIN_FILM_NU_B, THIN_FILM_SIGMA_NU));
+    if (!(thickness_um > 0.0f)) return float3_splat(thin_film_reflectance(cos_outside, eta_outside, eta_film, eta_base, thickness_um, 0.0f, 0.0f));
+    /* thin_film_airy per channel, the interfaces' amplitudes computed once: over a dielectric they
+     * do not depend on the wavelength, only the phase does (the same arithmetic, so the same bits) */
+    FilmPath path = film_path(cos_outside, eta_outside, eta_film, thickness_um);
+    if (path.reflects_all) return float3_splat(1.0f);
+    float3 sum = float3_splat(0.0f);
+    for (int polarisation = 0; polarisation < 2; ++polarisation) {
+        FilmAmplitude r12 = film_amplitude(eta_outside, make_float2(eta_film, 0.0f), path.cos_outside, polarisation);
+        FilmAmplitude r23 = film_amplitude(eta_film, make_float2(eta_base, 0.0f), path.cos_film, polarisation);
+        sum.x += thin_film_polarised(r12, r23, path.opd, THIN_FILM_NU_R, THIN_FILM_SIGMA_NU);
+        sum.y += thin_film_polarised(r12, r23, path.opd, THIN_FILM_NU_G, THIN_FILM_SIGMA_NU);
+        sum.z += thin_film_polarised(r12, r23, path.opd, THIN_FILM_NU_B, THIN_FILM_SIGMA_NU);
+    }
+    return 0.5f * sum;
 }
 
 /* Over a conductor: the base's complex index per channel, eta + i kappa. */
