@@ -11,6 +11,7 @@
 #include "brdf/host/angles.hpp"
 #include "brdf/host/parameters.hpp"
 #include "validation/albedo.hpp"
+#include "validation/energy_tables.hpp"
 
 using namespace lab::validation;
 
@@ -36,17 +37,10 @@ AlbedoEstimate furnace_albedo(const brdf::Material& m, brdf::float3 wo, double a
     single.energy_compensation = 0;
     AlbedoEstimate a = directional_albedo(single, wo, 64, 7);
     if (!m.energy_compensation) return a;
-    const int n_t = 128, n_phi = 64;
-    double added = 0.0;
-    for (int i = 0; i < n_t; ++i) {
-        double t = (i + 0.5) / n_t, mu = t * t, s = std::sqrt(1.0 - mu * mu);
-        for (int j = 0; j < n_phi; ++j) {
-            double phi = 2.0 * M_PI * (j + 0.5) / n_phi;
-            brdf::float3 wi(float(s * std::cos(phi)), float(s * std::sin(phi)), float(mu));
-            added += double(brdf::bsdf_eval(&m, wo, wi).x - brdf::bsdf_eval(&single, wo, wi).x) * mu * 2.0 * t;
-        }
-    }
-    a.value.x += float(added_scale * 2.0 * M_PI * added / (double(n_t) * n_phi));
+    const double added = hemisphere_cosine_midpoint(128, 64, [&](brdf::float3 wi) {
+        return double(brdf::bsdf_eval(&m, wo, wi).x - brdf::bsdf_eval(&single, wo, wi).x);
+    });
+    a.value.x += float(added_scale * added);
     return a;
 }
 

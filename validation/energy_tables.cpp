@@ -80,22 +80,25 @@ double dielectric_reflection_albedo(float roughness, float ior, float mu, int st
     return visible_normal_albedo(mf, wo, strata, [&](brdf::float3 wi) { return brdf::dielectric_reflection_eval(mf, ior, wo, wi); });
 }
 
-double sheen_albedo(float roughness, float mu, int strata) {
-    mu = std::fmax(mu, 1e-4f);  // the node at mu = 0 holds grazing view
-    brdf::float3 wo(std::sqrt(std::fmax(0.0f, 1.0f - mu * mu)), 0.0f, mu);
-    // the midpoint rule in t = sqrt(mu_i) and phi: dense towards the horizon, where the lobe of a
-    // grazing wo peaks and V grows as 1 / mu_i; 2 strata in t per stratum in phi
-    const int n_t = 2 * strata, n_phi = strata;
+double hemisphere_cosine_midpoint(int n_t, int n_phi, const std::function<double(brdf::float3 wi)>& g) {
     double sum = 0.0;
     for (int i = 0; i < n_t; ++i) {
         double t = (i + 0.5) / n_t, mu_i = t * t, s = std::sqrt(1.0 - mu_i * mu_i);
         for (int j = 0; j < n_phi; ++j) {
             double phi = 2.0 * M_PI * (j + 0.5) / n_phi;
             brdf::float3 wi(float(s * std::cos(phi)), float(s * std::sin(phi)), float(mu_i));
-            sum += double(brdf::sheen_eval(roughness, wo, wi)) * mu_i * 2.0 * t;  // f mu_i dmu_i, dmu_i = 2 t dt
+            sum += g(wi) * mu_i * 2.0 * t;  // g mu_i dmu_i, dmu_i = 2 t dt
         }
     }
-    return sum * 2.0 * M_PI / (double(n_t) * n_phi) / SHEEN_TABLE_SCALE;
+    return sum * 2.0 * M_PI / (double(n_t) * n_phi);
+}
+
+double sheen_albedo(float roughness, float mu, int strata) {
+    mu = std::fmax(mu, 1e-4f);  // the node at mu = 0 holds grazing view
+    brdf::float3 wo(std::sqrt(std::fmax(0.0f, 1.0f - mu * mu)), 0.0f, mu);
+    // where the lobe of a grazing wo peaks, V grows as 1 / mu_i; 2 strata in t per stratum in phi
+    return hemisphere_cosine_midpoint(2 * strata, strata, [&](brdf::float3 wi) { return double(brdf::sheen_eval(roughness, wo, wi)); }) /
+           SHEEN_TABLE_SCALE;
 }
 
 float dielectric_fresnel_average_of(float ior) {

@@ -48,6 +48,10 @@ double dielectric_single_scattering_albedo(int side, float roughness, float ior,
 // F_avg = 2 int_0^1 F(mu) mu dmu of the exact dielectric Fresnel reflectance, from outside.
 float dielectric_fresnel_average_of(float ior);
 
+// The integral of g(wi) mu_i dwi over the upper hemisphere by the midpoint rule in t = sqrt(mu_i)
+// (n_t strata) and phi (n_phi): nodes dense towards the horizon, where a grazing lobe peaks.
+double hemisphere_cosine_midpoint(int n_t, int n_phi, const std::function<double(brdf::float3 wi)>& g);
+
 // OpenPBR's layers (brdf/openpbr_energy.h): E(mu) of the GGX reflection off a dielectric of index
 // ior with its exact Fresnel reflectance (the coat and the dielectric specular, what each passes down
 // is 1 - E), by the lobe's visible-normal sampler at strata x strata; the Fresnel reflectance itself
