@@ -1,6 +1,7 @@
 # Run after the Catch2 executable EXECUTABLE is built (cmake/CatchFileGroups.cmake): writes OUTPUT,
 # the ctest tests of its cases that SPEC selects, one per [sweep] case and one per source file for
-# the rest. Catch's -# gives each case the tag [#<file name>].
+# the rest. Catch's -# gives each case the tag [#<file name>]. SPEC is Catch's: terms of tags that
+# must all match, alternatives separated by commas; a file's and the sweeps' tags join every term.
 
 cmake_policy(SET CMP0057 NEW) # if(... IN_LIST ...) in this -P script
 
@@ -22,6 +23,22 @@ if(LABELS)
   string(APPEND properties " LABELS ${LABELS}")
 endif()
 set(script "")
+# SPEC with <tags> added to each of its alternatives (a comma binds looser than a tag in Catch's specs).
+function(spec_with output_var prefix suffix)
+  string(REPLACE "," ";" terms "${SPEC}")
+  if(terms STREQUAL "")
+    set(out "${prefix}${suffix}")
+  else()
+    set(out "")
+    foreach(term IN LISTS terms)
+      if(out)
+        string(APPEND out ",")
+      endif()
+      string(APPEND out "${prefix}${term}${suffix}")
+    endforeach()
+  endif()
+  set(${output_var} "${out}" PARENT_SCOPE)
+endfunction()
 function(add_catch_test name spec)
   string(APPEND script "add_test([==[${PREFIX}${name}]==] [==[${EXECUTABLE}]==] \"-#\" [==[${spec}]==] --warn NoTests)\n"
                        "set_tests_properties([==[${PREFIX}${name}]==] PROPERTIES ${properties})\n")
@@ -29,7 +46,8 @@ function(add_catch_test name spec)
 endfunction()
 
 # The sweeps first: the longest tests, started while the other core has the short ones to run.
-list_catch(names "${SPEC}[sweep]" --list-test-names-only)
+spec_with(sweeps "" "[sweep]")
+list_catch(names "${sweeps}" --list-test-names-only)
 foreach(name IN LISTS names)
   if(name STREQUAL "")
     continue()
@@ -44,7 +62,8 @@ endforeach()
 # Then every file that has a selected case that is not a sweep: --list-tags prints "  <count>  [#file]".
 # The files of a batch (BATCHES: batches separated by "|", files by "+") share one test, which runs
 # them in one process, in the batch's place in the order; every other file is a test of its own.
-list_catch(lines "${SPEC}~[sweep]" --list-tags)
+spec_with(not_sweeps "" "~[sweep]")
+list_catch(lines "${not_sweeps}" --list-tags)
 set(files "")
 foreach(line IN LISTS lines)
   if(line MATCHES "^ *[0-9]+ +\\[#([A-Za-z0-9_]+)\\]$")
@@ -64,7 +83,8 @@ foreach(batch IN LISTS batches)
       if(spec)
         string(APPEND spec ",")
       endif()
-      string(APPEND spec "[#${file}]${SPEC}~[sweep]")
+      spec_with(file_spec "[#${file}]" "~[sweep]")
+      string(APPEND spec "${file_spec}")
     endif()
   endforeach()
   if(present)
@@ -74,7 +94,8 @@ foreach(batch IN LISTS batches)
 endforeach()
 foreach(file IN LISTS files)
   if(NOT file IN_LIST batched)
-    add_catch_test("${file}" "[#${file}]${SPEC}~[sweep]")
+    spec_with(file_spec "[#${file}]" "~[sweep]")
+    add_catch_test("${file}" "${file_spec}")
   endif()
 endforeach()
 file(WRITE ${OUTPUT} "${script}")
