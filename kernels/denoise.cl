@@ -1,22 +1,37 @@
 /* The display denoiser's a-trous pass (film/denoise_atrous.h) on the render device: one work-item
- * per pixel, the pass's values as scalars. The host runs the same function (film/denoise.cpp). */
+ * per eight consecutive pixels of a row, each value a float8 of the eight (SDF_LANES), so that the
+ * pass runs on the CPU's vector lanes without PoCL's work-item vectoriser (docs/render.md, "Cost");
+ * the host builds it with -DSDF_LANES=8 (kernels/host/denoise_device.cpp).
+ * The host runs the same function a pixel at a time (film/denoise.cpp). */
 
 /* No fused multiply-add, as the host build (x86-64 baseline) rounds every product. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "film/denoise_atrous.h"
 
+/* work-item i: row i / packets, pixels 8 (i % packets) .. + 7 of it, packets = ceil(width / 8);
+ * the lanes past the row's end compute its last pixel and are not stored */
 __kernel void denoise_atrous_pass(int width, int height, int step, float sigma_normal, float sigma_depth, float sigma_luminance,
                                   __global const float* illumination, __global const float* guide, __global float* out) {
-    /* no early return for the work-items past the image (the launch rounds up to the local size):
-     * they compute the last pixel and do not store it, so the work-group's loop has one exit and
-     * PoCL can run its work-items as vector lanes */
-    const int n = width * height;
+    const int packets = (width + 7) / 8;
     const int i = (int)get_global_id(0);
-    const int p = i < n ? i : n - 1;
+    if (i >= packets * height) return;
+    const int y = i / packets, x = 8 * (i % packets);
     const AtrousPass pass = atrous_pass(width, height, step, sigma_normal, sigma_depth, sigma_luminance);
-    float filtered[4];
-    atrous_pixel(&pass, illumination, guide, p % width, p / width, filtered);
-    if (i < n)
-        for (int c = 0; c < 4; ++c) out[4 * i + c] = filtered[c];
+    float8 filtered[4];
+    atrous_pixel(&pass, illumination, guide, x, y, filtered);
+    __global float* row = out + 4 * (y * width + x);
+    if (x + 7 < width) {
+        /* interleaved back into four floats a pixel, two pixels a store */
+        const float8 r = filtered[0], g = filtered[1], b = filtered[2], v = filtered[3];
+        vstore8((float8)(r.s0, g.s0, b.s0, v.s0, r.s1, g.s1, b.s1, v.s1), 0, row);
+        vstore8((float8)(r.s2, g.s2, b.s2, v.s2, r.s3, g.s3, b.s3, v.s3), 1, row);
+        vstore8((float8)(r.s4, g.s4, b.s4, v.s4, r.s5, g.s5, b.s5, v.s5), 2, row);
+        vstore8((float8)(r.s6, g.s6, b.s6, v.s6, r.s7, g.s7, b.s7, v.s7), 3, row);
+    } else {
+        float lanes[4][8];
+        for (int c = 0; c < 4; ++c) vstore8(filtered[c], 0, lanes[c]);
+        for (int l = 0; x + l < width; ++l)
+            for (int c = 0; c < 4; ++c) row[4 * l + c] = lanes[c][l];
+    }
 }

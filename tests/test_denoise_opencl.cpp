@@ -27,8 +27,10 @@ TEST_CASE("Denoiser: the OpenCL device's passes give the host's", "[denoise][ope
             guide.albedo.set(x, y, a, a * 0.9f, a * 0.5f);
             guide.normal.set(x, y, tilted ? 0.6f : 0.0f, 0.0f, tilted ? 0.8f : 1.0f);
             guide.depth[size_t(y * width + x)] = x < 3 ? 0.0f : (x > 50 ? 9.0f : 4.0f);
-            const float light = 1.0f + 0.3f * float(tilted) + noise(rng);
-            radiance.set(x, y, a * light, a * 0.9f * light, a * 0.5f * light);
+            // each channel's light its own, so that a pass that mixes channels up (the device's
+            // lanes shuffle them apart) differs from the host's
+            const float light = 1.0f + 0.3f * float(tilted);
+            radiance.set(x, y, a * (light + noise(rng)), a * 0.9f * (light + noise(rng)), a * 0.5f * (light + noise(rng)));
         }
     lab::film::DenoiseOptions options;
     lab::film::AtrousBuffers host = lab::film::demodulate(radiance, guide), device = host;

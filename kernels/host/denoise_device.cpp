@@ -1,5 +1,7 @@
 #include "kernels/host/denoise_device.hpp"
 
+#include <string>
+
 #include "kernels/host/brdf_batch.hpp"
 #include "kernels/host/embedded_sources.hpp"
 
@@ -12,7 +14,7 @@ constexpr size_t kLocalSize = 64;
 }  // namespace
 
 DeviceDenoiser::DeviceDenoiser(const opencl::Runtime& runtime)
-    : runtime_(runtime), program_(build_embedded(runtime, "kernels/denoise.cl", BrdfBatch::kBuildOptions)), pass_(program_.kernel("denoise_atrous_pass")) {}
+    : runtime_(runtime), program_(build_embedded(runtime, "kernels/denoise.cl", std::string(BrdfBatch::kBuildOptions) + " -DSDF_LANES=8")), pass_(program_.kernel("denoise_atrous_pass")) {}
 
 bool DeviceDenoiser::passes(film::AtrousBuffers* b, const film::DenoiseOptions& options, const film::FilterCancelled& cancelled) const {
     const size_t n = b->illumination.size(), bytes = n * sizeof(b->illumination[0]);
@@ -28,7 +30,8 @@ bool DeviceDenoiser::passes(film::AtrousBuffers* b, const film::DenoiseOptions& 
         const opencl::BufferHandle& from = i % 2 == 0 ? ping : pong;
         const opencl::BufferHandle& to = i % 2 == 0 ? pong : ping;
         opencl::set_kernel_args(pass_, b->width, b->height, 1 << i, options.sigma_normal, options.sigma_depth, options.sigma_luminance, from, guide, to);
-        runtime_.launch_1d(pass_, n, kLocalSize);
+        // a work-item per eight pixels of a row (kernels/denoise.cl)
+        runtime_.launch_1d(pass_, size_t((b->width + 7) / 8) * size_t(b->height), kLocalSize);
     }
     runtime_.read(options.passes % 2 == 0 ? ping : pong, b->illumination.data(), bytes);
     return true;

@@ -187,6 +187,8 @@ cli_bad_input(NAME bench_denoise.reference_spp EXPECT "${E}--reference-spp: 16: 
               ARGS bench denoise --spp 1,4,16 --reference-spp 16)
 cli_bad_input(NAME bench_denoise.spp EXPECT "${E}--spp: 0: must be in \\[1, 65536\\]$"
               ARGS bench denoise --spp 0,4)
+cli_bad_input(NAME bench_denoise.passes EXPECT "${E}--passes: 9: must be in \\[1, 8\\]$"
+              ARGS bench denoise --passes 9)
 
 cli_bad_input(NAME no_subcommand EXPECT "${E}.*subcommand"
               ARGS)
