@@ -10,6 +10,8 @@
 
 #include "film/denoise.hpp"
 
+#include "tests/worst_difference.hpp"
+
 namespace {
 
 // A synthetic render: per pixel a true radiance, an albedo, a normal and a depth; the "render" adds
@@ -179,7 +181,7 @@ TEST_CASE("Denoiser: albedo, normal and depth edges and the background stay shar
         double worst = 0.0;
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x)
-                worst = std::max(worst, double(std::fabs(denoised.at(x, y)[1] - s.truth.at(x, y)[1])) / s.guide.albedo.at(x, y)[1]);
+                worst = worse_of(worst, double(std::fabs(denoised.at(x, y)[1] - s.truth.at(x, y)[1])) / s.guide.albedo.at(x, y)[1]);
         INFO(edge << ": largest illumination error beside it " << worst);
         CHECK(worst <= 1e-3);
     };

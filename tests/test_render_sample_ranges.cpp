@@ -36,6 +36,7 @@
 #include "render/progressive.hpp"
 #include "scene/load_scene.hpp"
 #include "tests/render_inputs.hpp"
+#include "tests/worst_difference.hpp"
 
 namespace fs = std::filesystem;
 using lab::render::FilmFile;
@@ -107,7 +108,7 @@ double worst_over_bound(const std::vector<float>& a, const std::vector<float>& b
         double difference = std::fabs(double(a[i]) - double(b[i]));
         if (difference == 0.0) continue;
         double bound = summation_bound(terms, b[i]);
-        worst = std::max(worst, bound > 0.0 ? difference / bound : HUGE_VAL);
+        worst = worse_of(worst, bound > 0.0 ? difference / bound : HUGE_VAL);
     }
     return worst;
 }
@@ -126,7 +127,7 @@ double worst_image_over_bound(const lab::film::ImageRgb& a, const lab::film::Ima
             if (difference == 0.0) continue;
             double bound = summation_bound(terms.own, film.accumulation[4 * p + c]) / finite +
                            summation_bound(terms.splat, film.splat[3 * p + c]) / samples + 3.0 * u * std::fabs(double(b.rgb[3 * p + c]));
-            worst = std::max(worst, bound > 0.0 ? difference / bound : HUGE_VAL);
+            worst = worse_of(worst, bound > 0.0 ? difference / bound : HUGE_VAL);
         }
     }
     return worst;
