@@ -442,14 +442,16 @@ TEST_CASE("chi-square: openpbr's check rejects a pdf that misses a lobe", "[chi_
 }
 
 TEST_CASE("openpbr energy tables: the committed tables are what the generator writes", "[openpbr][energy_compensation][sweep]") {
-    // sample rows regenerated (tests/energy_table_rows.hpp)
+    // rows drawn per run, regenerated (tests/energy_table_rows.hpp)
     auto check_row = check_energy_table_row;
     const int strata = lab::validation::kEnergyTableStrata;
-    for (auto [k, i] : {std::pair<int, int>{0, 6}, {3, 0}, {5, 9}, {9, 15}})
+    for (int row : energy_table_rows_of_run("openpbr specular [ior][roughness]", DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS, 4)) {
+        const int k = row / DIELECTRIC_GRID_ROUGHNESS, i = row % DIELECTRIC_GRID_ROUGHNESS;
         check_row([&, k = k](float r, float mu) { return lab::validation::dielectric_reflection_albedo(r, brdf::energy_grid_ior(k), mu, strata); },
                   DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_MU, i,
                   brdf::energy_openpbr_specular_albedo + k * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU);
-    for (int i : {2, 16, 31})
+    }
+    for (int i : energy_table_rows_of_run("openpbr sheen [roughness]", ENERGY_GRID_ROUGHNESS, 3))
         check_row([&](float r, float mu) { return lab::validation::sheen_albedo(r, mu, strata * lab::validation::kSheenStrataFactor); },
                   ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, i, brdf::energy_openpbr_sheen_albedo);
     // the smooth row is never below the Fresnel reflectance (raised where the interpolant towards the
