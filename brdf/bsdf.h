@@ -26,6 +26,9 @@
 #if BRDF_FEATURE_OPENPBR
 #include "openpbr_model.h"
 #endif
+#if BRDF_FEATURE_EMISSION
+#include "emission.h"
+#endif
 
 SS_FN float3 bsdf_eval_clamped(const Material* clamped, GLOBAL_MEM const float* measured, float3 wo, float3 wi) {
     Material m = *clamped;

@@ -43,6 +43,9 @@
 #ifndef BRDF_FEATURE_THIN_FILM
 #define BRDF_FEATURE_THIN_FILM 1 /* openpbr: thin-film iridescence on the dielectric specular and the metal */
 #endif
+#ifndef BRDF_FEATURE_EMISSION
+#define BRDF_FEATURE_EMISSION 1 /* openpbr: a material's own emission (brdf/emission.h), where the integrators add it */
+#endif
 #ifndef BRDF_FEATURE_ENERGY_COMPENSATION
 #define BRDF_FEATURE_ENERGY_COMPENSATION 1 /* Kulla-Conty multiple scattering and its tables */
 #endif

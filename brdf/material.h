@@ -56,6 +56,8 @@ typedef struct Material {
     float thin_film_weight;
     float thin_film_thickness;  /* micrometres */
     float thin_film_ior;
+    float emission_luminance;   /* nits; radiance emission_luminance emission_color (docs/materials.md, Emission) */
+    float emission_color[3];
 } Material;
 
 SS_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0], m->albedo[1], m->albedo[2]); }
@@ -68,6 +70,7 @@ SS_FN float3 material_albedo(const Material* m) { return make_float3(m->albedo[0
 #define BRDF_IOR_MIN 1.0f
 #define BRDF_IOR_MAX 3.0f
 #define BRDF_THIN_FILM_THICKNESS_MAX 2.0f /* micrometres; thicker films average to their incoherent sum */
+#define BRDF_EMISSION_LUMINANCE_MAX 1e6f  /* nits: a bright lamp's surface; OpenPBR's soft range ends at 1000 */
 
 /* fmin(fmax()) rather than clamp(): it maps NaN to the lower bound instead of leaving it. */
 SS_FN float clamp_param(float x, float lo, float hi) { return fmin(fmax(x, lo), hi); }
@@ -95,6 +98,7 @@ SS_FN Material material_clamped(const Material* in) {
         m.subsurface_color[c] = clamp_param(m.subsurface_color[c], 0.0f, 1.0f);
         m.coat_color[c] = clamp_param(m.coat_color[c], 0.0f, 1.0f);
         m.fuzz_color[c] = clamp_param(m.fuzz_color[c], 0.0f, 1.0f);
+        m.emission_color[c] = clamp_param(m.emission_color[c], 0.0f, 1.0f);
     }
     m.base_weight = clamp_param(m.base_weight, 0.0f, 1.0f);
     m.base_diffuse_roughness = clamp_param(m.base_diffuse_roughness, 0.0f, 1.0f);
@@ -109,7 +113,17 @@ SS_FN Material material_clamped(const Material* in) {
     m.thin_film_weight = clamp_param(m.thin_film_weight, 0.0f, 1.0f);
     m.thin_film_thickness = clamp_param(m.thin_film_thickness, 0.0f, BRDF_THIN_FILM_THICKNESS_MAX);
     m.thin_film_ior = clamp_param(m.thin_film_ior, BRDF_IOR_MIN, BRDF_IOR_MAX);
+    m.emission_luminance = clamp_param(m.emission_luminance, 0.0f, BRDF_EMISSION_LUMINANCE_MAX);
     return m;
+}
+
+/* Whether a material emits light of its own: an openpbr material with emission_luminance and
+ * emission_color above 0 (brdf/emission.h gives the radiance). The host switches the kernel's
+ * emission code on by it (BRDF_FEATURE_EMISSION) and marks the slot's emission
+ * (kernels/render_scene.h). */
+SS_FN bool material_emits(const Material* m) {
+    return m->model == BRDF_MODEL_OPENPBR && m->emission_luminance > 0.0f &&
+           (m->emission_color[0] > 0.0f || m->emission_color[1] > 0.0f || m->emission_color[2] > 0.0f);
 }
 
 #endif

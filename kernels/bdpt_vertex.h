@@ -64,7 +64,8 @@ SS_FN bool vertex_scatters(const RenderScene* scene, const PathVertex* v) {
     return v->type == VERTEX_SURFACE && !(scene->emission[v->index].w > 0.0f && scene->emission[v->index].w < EMISSION_SCATTERS);
 }
 
-/* The light a vertex emits as: its own index, or the light of an emissive surface's slot. */
+/* The light a vertex emits as: its own index, or the light of an emissive sphere's slot; -1 for a
+ * material's emission, which is no light: no light subpath starts there, no light sample finds it. */
 SS_FN int vertex_light_index(const RenderScene* scene, const PathVertex* v) {
     if (v->type == VERTEX_SURFACE) return scene->light_of_slot[v->index];
     return v->index;
@@ -98,6 +99,7 @@ SS_FN float vertex_convert_density(float pdf, const PathVertex* from, const Path
  * (pbrt-v4's PdfLightOrigin). */
 SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* settings, const RenderScene* scene, const PathVertex* v) {
     int index = vertex_light_index(scene, v);
+    if (index < 0) return 0.0f;
     float pmf = light_selection_pmf(scene->light_cdf, settings->light_count, index);
     if (!(pmf > 0.0f)) return 0.0f;
     Light light = scene->lights[index];
@@ -125,7 +127,9 @@ SS_FN float environment_disk_pdf(const RenderKernelSettings* settings, float3 w,
  * PdfLight): a sphere emits from both sides, cosine-distributed on each; a point light uniformly;
  * the environment from a disk of the scene's radius, uniform by area where its rays reach. */
 SS_FN float vertex_pdf_light(const RenderKernelSettings* settings, const RenderScene* scene, const PathVertex* v, const PathVertex* next) {
-    Light light = scene->lights[vertex_light_index(scene, v)];
+    int index = vertex_light_index(scene, v);
+    if (index < 0) return 0.0f; /* a material's emission: no light subpath leaves it */
+    Light light = scene->lights[index];
     if (light.type == LIGHT_ENVIRONMENT) {
         float pdf = environment_disk_pdf(settings, v->p, next->p);
         return next->on_surface ? pdf * fabs(dot(next->frame.n, v->p)) : pdf;
@@ -159,14 +163,21 @@ SS_FN float3 vertex_f(const RenderScene* scene, const PathVertex* v, float3 w, i
     return bsdf_eval_mode(&m, scene->measured, v->wo, frame_to_local(v->frame, w), mode);
 }
 
-/* Radiance emitted by light or emitter vertex v towards `to`: a sphere's Le from both sides, the
- * environment's along the direction (the filtered lookup where the eye sees it directly). */
+/* Radiance emitted by light or emitter vertex v towards `to`: a sphere's Le from both sides, a
+ * material's emission towards wo on its outer side, the environment's along the direction (the
+ * filtered lookup where the eye sees it directly). */
 SS_FN float3 vertex_le(const RenderScene* scene, const PathVertex* v, bool seen_directly) {
     if (v->type == VERTEX_ENVIRONMENT)
         return seen_directly ? environment_radiance_filtered(&scene->env, scene->env_buffers.texels, v->p)
                              : environment_radiance(&scene->env, scene->env_buffers.texels, v->p);
     if (v->type == VERTEX_SURFACE) {
         float4 e = scene->emission[v->index];
+#if BRDF_FEATURE_EMISSION
+        if (e.w == EMISSION_SURFACE) { /* on the outer side only: wo is below the surface from inside */
+            Material m = scene->materials[v->index];
+            return material_emission_clamped(&m, v->wo);
+        }
+#endif
         return make_float3(e.x, e.y, e.z);
     }
     Light light = scene->lights[v->index]; /* float3_from_array takes a private pointer */

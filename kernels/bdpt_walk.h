@@ -39,7 +39,7 @@ SS_FN int bdpt_random_walk(const RenderKernelSettings* settings, MarchSettings m
         }
         SurfaceHit hit = surface_hit(settings, march_settings, origin, direction, r.t, inside);
         /* an emissive sphere scatters on the side the ray arrives from, outside or in (kernels/path_tracer.h) */
-        if (scene->emission[hit.slot].w > 0.0f) hit = facing_side(hit);
+        if (scene->emission[hit.slot].w > 0.0f && scene->emission[hit.slot].w != EMISSION_SURFACE) hit = facing_side(hit);
         v.type = VERTEX_SURFACE;
         v.p = hit.p;
         v.frame = hit.frame;

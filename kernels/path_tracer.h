@@ -174,7 +174,16 @@ SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings marc
     }
     SurfaceHit hit = surface_hit(settings, march_settings, origin, direction, march_result.t, p->inside);
     float4 emitted = scene->emission[hit.slot];
-    if (emitted.w > 0.0f) { /* an emissive sphere, seen from either side */
+    if (emitted.w == EMISSION_SURFACE) {
+#if BRDF_FEATURE_EMISSION
+        /* a material's own emission (on the outer side only: from inside, wo is below the surface):
+         * no light sample can find it, so the path that hits it counts it whole (weight 1),
+         * whatever the light sampling */
+        Material em = scene->materials[hit.slot];
+        radiance += throughput * material_emission_clamped(&em, hit.wo);
+        float3_to_array(radiance, p->radiance);
+#endif
+    } else if (emitted.w > 0.0f) { /* an emissive sphere, seen from either side */
         float weight = light_hit_weight(settings, scene, scene->light_of_slot[hit.slot], previous_p, direction, p->previous_pdf, p->previous_delta);
         radiance += throughput * (weight * make_float3(emitted.x, emitted.y, emitted.z));
         float3_to_array(radiance, p->radiance);

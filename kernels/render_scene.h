@@ -12,13 +12,17 @@
 #include "kernels/lights/light.h"
 
 /* emission[slot].w: the slot emits nothing; it emits and absorbs what reaches it (a black emitter,
- * the path ends there); it emits and scatters by its material too (a reflecting emitter); or it is a
- * shadow catcher, which emits nothing and which the camera sees as the backdrop changed by what
- * the other objects do to its light (kernels/path_tracer.h, docs/environments.md). */
+ * the path ends there); it emits and scatters by its material too (a reflecting emitter); its
+ * material emits (brdf/emission.h: an emissive openpbr material on any shape, on its outer side
+ * only, which no light sample can find: only the paths that hit it count it, with weight 1); or it
+ * is a shadow catcher, which emits nothing and which the camera sees as the backdrop changed by
+ * what the other objects do to its light (kernels/path_tracer.h, docs/environments.md). xyz holds
+ * a sphere light's radiance; a material's emission is the material's (it depends on wo). */
 #define EMISSION_CATCHER -1.0f
 #define EMISSION_NONE 0.0f
 #define EMISSION_ABSORBS 1.0f
 #define EMISSION_SCATTERS 2.0f
+#define EMISSION_SURFACE 3.0f
 
 typedef struct RenderScene {
     GLOBAL_MEM const Material* materials; /* per material slot */

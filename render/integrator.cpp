@@ -50,6 +50,8 @@ std::string listed(const std::vector<std::string>& items) {
 
 bool IntegratorDescriptor::splats() const { return (strategies & STRATEGY_T1) != 0; }
 
+bool IntegratorDescriptor::sees_emissive_materials() const { return strategies == 0 || (strategies & STRATEGY_S0) != 0; }
+
 const IntegratorDescriptor& integrator_descriptor(Integrator integrator) {
     for (const IntegratorDescriptor& d : kIntegrators)
         if (d.integrator == integrator) return d;
@@ -88,8 +90,9 @@ void check_integrator_lights(Integrator integrator, const std::string& file, boo
     const IntegratorDescriptor& d = integrator_descriptor(integrator);
     if (d.bidirectional() && !has_lights)
         throw InputError(file, "--integrator",
-                         std::string(d.name) + " starts its light subpaths on the lights, and the scene has none (no emissive sphere, "
-                                               "point light or environment): add one, or give --env");
+                         std::string(d.name) + " starts its light subpaths on the lights, and the scene has none (no emissive sphere, " +
+                             (d.sees_emissive_materials() ? "point light, environment or emissive material" : "point light or environment") +
+                             "): add one, or give --env");
     if (!d.renders_environment() && has_environment) throw InputError(file, "--integrator", d.environment_refusal);
 }
 

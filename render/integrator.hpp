@@ -35,6 +35,9 @@ struct IntegratorDescriptor {
     bool renders_environment() const { return environment_refusal == nullptr; }
     // Its t = 1 strategies add to the pixel the lens sample reaches, on the splat film.
     bool splats() const;
+    // Its paths from the camera can reach a material's emission, which no light subpath starts
+    // from (the path tracer; bdpt's s = 0): the light tracer's cannot.
+    bool sees_emissive_materials() const;
 };
 
 const IntegratorDescriptor& integrator_descriptor(Integrator integrator);
@@ -53,6 +56,7 @@ bool integrator_runs_strategy(Integrator integrator, int s, int t);
 void check_integrator_has_strategies(Integrator integrator, const std::string& option);
 // Throws lab::InputError naming `file` and --integrator when `integrator` cannot render a scene
 // with these lights, before anything is built or rendered, instead of coming out black.
+// has_lights: lights, or emissive materials bdpt's s = 0 finds.
 void check_integrator_lights(Integrator integrator, const std::string& file, bool has_lights, bool has_environment);
 
 }  // namespace lab::render

@@ -57,6 +57,7 @@ std::vector<brdf::float4> emission_table(const scene::CompiledScene& scene) {
         float kind = EMISSION_NONE;
         if (e.x > 0.0f || e.y > 0.0f || e.z > 0.0f) kind = scatters(scene.materials[k]) ? EMISSION_SCATTERS : EMISSION_ABSORBS;
         else if (k < scene.shadow_catcher.size() && scene.shadow_catcher[k]) kind = EMISSION_CATCHER;
+        else if (brdf::material_emits(&scene.materials[k])) kind = EMISSION_SURFACE;  // its radiance is the material's (brdf/emission.h)
         table.push_back(brdf::float4(e.x, e.y, e.z, kind));
     }
     return table;
@@ -78,11 +79,26 @@ Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
     emission_ = emission_table(compiled_);
     rebuild_lights();
     rebuild_background();
-    check_integrator_lights(input_.settings.integrator, compiled_.file, !lights_.lights.empty(), input_.environment.has_value());
+    check_emissive_materials();
     for (size_t k = 0; k < compiled_.shadow_catcher.size(); ++k)
         if (compiled_.shadow_catcher[k] && input_.settings.integrator != Integrator::pt)
             throw InputError(compiled_.file, "--integrator",
                              std::string("the shadow catcher (material \"") + compiled_.material_names[k] + "\") is rendered by the path tracer only: use --integrator pt");
+}
+
+// A material's emission is found only by paths that hit it (kernels/render_scene.h): bdpt's s = 0,
+// which a scene lit by such materials alone is enough for, and never the light tracer's t = 1.
+void Renderer::check_emissive_materials() const {
+    bool any = false;
+    for (size_t k = 0; k < emission_.size(); ++k) {
+        if (emission_[k].w != EMISSION_SURFACE) continue;
+        any = true;
+        if (!integrator_descriptor(input_.settings.integrator).sees_emissive_materials())
+            throw InputError(compiled_.file, "materials." + compiled_.material_names[k],
+                             std::string("emission_luminance: ") + integrator_descriptor(input_.settings.integrator).noun +
+                                 " cannot see a material's emission (no light subpath starts on it): use --integrator bdpt or pt");
+    }
+    check_integrator_lights(input_.settings.integrator, compiled_.file, any || !lights_.lights.empty(), input_.environment.has_value());
 }
 
 void Renderer::initialize() {
@@ -270,6 +286,7 @@ bool Renderer::set_materials(const std::vector<brdf::Material>& materials) {
     }
     clamp_materials(compiled_.materials);
     emission_ = emission_table(compiled_);
+    check_emissive_materials();
     upload_scene();
     reset();
     return rebuild;

@@ -211,6 +211,9 @@ protected:
 
 private:
     void rebuild_lights();
+    // Throws lab::InputError when the integrator cannot render the scene's lights and emissive
+    // materials (check_integrator_lights; the light tracer never sees a material's emission).
+    void check_emissive_materials() const;
     // The blurred backdrop for input_.settings.background_blur_degrees (none at 0 or without an environment).
     void rebuild_background();
 

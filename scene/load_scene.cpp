@@ -176,6 +176,10 @@ void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
                 return m.emitter < 0 && m.name == e.surface_material;
             });
             if (!declared) f.fail("material", "material \"" + e.surface_material + "\" is not declared in \"materials\"");
+            // a sphere light's radiance is its "radiance": an emissive material on it would be a second one
+            for (const MaterialSlot& m : scene->materials)
+                if (m.emitter < 0 && m.name == e.surface_material && brdf::material_emits(&m.material))
+                    f.fail("material", "material \"" + e.surface_material + "\" emits (emission_luminance): a sphere light's radiance is its \"radiance\"");
         }
         scene->materials.push_back(emitter_slot(path, int(scene->emitters.size()), e, scene->materials));
         scene->emitters.push_back(e);

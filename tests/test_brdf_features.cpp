@@ -94,6 +94,15 @@ TEST_CASE("used_features: an openpbr material compiles only the layers it uses",
     metal.thin_film_thickness = 0.0f;  // a film of thickness 0 is no film on the metal
     CHECK_FALSE(feature_on({metal}, "BRDF_FEATURE_THIN_FILM"));
     CHECK(feature_on({metal}, "BRDF_FEATURE_ENERGY_COMPENSATION"));
+    // a material's emission: compiled only where a material emits (a colour of 0 emits nothing)
+    CHECK_FALSE(feature_on({plain}, "BRDF_FEATURE_EMISSION"));
+    brdf::Material glow = plain;
+    glow.emission_luminance = 100.0f;
+    CHECK(feature_on({plain, glow}, "BRDF_FEATURE_EMISSION"));
+    CHECK(contains_file(assembled_with({glow}), "brdf/emission.h"));
+    CHECK_FALSE(contains_file(assembled_with({plain}), "brdf/emission.h"));
+    glow.emission_color[0] = glow.emission_color[1] = glow.emission_color[2] = 0.0f;
+    CHECK_FALSE(feature_on({glow}, "BRDF_FEATURE_EMISSION"));
     // the lab's materials leave the openpbr model and its tables out of the kernel
     brdf::Material lambert = lobe_material(1, 0, 0, 0);
     CHECK_FALSE(feature_on({lambert}, "BRDF_FEATURE_OPENPBR"));

@@ -119,27 +119,31 @@ TEST_CASE("energy tables: entries agree with an independent Monte Carlo estimate
 }
 
 TEST_CASE("energy tables: the committed tables are what the generator writes", "[energy_compensation]") {
-    // sample rows regenerated (tests/energy_table_rows.hpp)
+    // rows drawn per run, regenerated (tests/energy_table_rows.hpp)
     auto check_row = check_energy_table_row;
-    for (int i : {5, 19, 31}) {
+    for (int i : energy_table_rows_of_run("ggx [roughness]", ENERGY_GRID_ROUGHNESS, 3))
         check_row([](float r, float mu) { return single_scattering_albedo(BRDF_DISTRIBUTION_GGX, 2.0f, r, mu, kEnergyTableStrata); },
                   ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, i, brdf::energy_ggx_albedo);
-        int k = i % ENERGY_GRID_SHAPE;
-        check_row([&](float r, float mu) {
+    for (int row : energy_table_rows_of_run("hyper_cauchy [shape][roughness]", ENERGY_GRID_SHAPE * ENERGY_GRID_ROUGHNESS, 3)) {
+        const int k = row / ENERGY_GRID_ROUGHNESS, i = row % ENERGY_GRID_ROUGHNESS;
+        check_row([&, k = k](float r, float mu) {
             return single_scattering_albedo(BRDF_DISTRIBUTION_HYPER_CAUCHY, brdf::energy_grid_shape(k), r, mu, kEnergyTableStrata);
         }, ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, i, brdf::energy_hyper_cauchy_albedo + k * ENERGY_GRID_ROUGHNESS * ENERGY_GRID_MU);
     }
-    for (int i : {0, 12, 31}) {
+    for (int i = 0; i < ENERGY_GRID_ROUGHNESS; ++i) {  // every row's average: no estimate to redo
         std::vector<float> stored(ENERGY_GRID_MU);
         for (int j = 0; j < ENERGY_GRID_MU; ++j) stored[size_t(j)] = brdf::energy_grid_albedo_value(brdf::energy_ggx_albedo, i * ENERGY_GRID_MU + j);
         CHECK(brdf::energy_ggx_average[i] == Approx(average_albedo(stored.data())).margin(2e-7));
     }
     // the dielectric's, from both sides
-    for (auto [side, k, i] : {std::tuple<int, int, int>{0, 2, 15}, {1, 6, 4}})
+    for (int row : energy_table_rows_of_run("dielectric [side][ior][roughness]", 2 * DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS, 2)) {
+        const int side = row / (DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS), k = row / DIELECTRIC_GRID_ROUGHNESS % DIELECTRIC_GRID_IOR,
+                  i = row % DIELECTRIC_GRID_ROUGHNESS;
         check_row([&, side = side, k = k](float r, float mu) {
             return dielectric_single_scattering_albedo(side, r, brdf::energy_grid_ior(k), mu, kEnergyTableStrata * kDielectricStrataFactor);
         }, DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_MU, i,
                   brdf::energy_dielectric_albedo + (side * DIELECTRIC_GRID_IOR + k) * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU);
+    }
 }
 
 TEST_CASE("energy tables: dielectric entries agree with quadrature, which no sampler enters", "[energy_compensation][sweep]") {

@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "brdf/host/preset.hpp"
 #include "opencl/runtime.hpp"
 #include "render/opencl_renderer.hpp"
 #include "render/scene_environment.hpp"
@@ -64,9 +65,15 @@ struct Case {
     double power;       // the stated bound on the detectable difference
     lab::render::LightSampling sampling = lab::render::LightSampling::mis;  // the path tracer's (BDPT has its own)
     bool without_point_lights = false;  // the path tracer cannot sample a point light seen through smooth glass (below)
+    std::string sample_preset;          // not empty: the preview's input, the test model with this preset in its sample slot (`scene` unused)
 };
 
 lab::render::RenderInput case_input(const Case& c) {
+    if (!c.sample_preset.empty()) {
+        lab::render::RenderInput input = render_input(brdf::load_preset(c.sample_preset).material, c.env, kSize, c.sampling, 0);
+        input.settings.max_depth = c.max_depth;
+        return input;
+    }
     lab::render::RenderInput input;
     input.scene = c.scene[0] == '{' ? lab::scene::parse_scene(c.scene, c.name + ".json") : lab::scene::load_scene(c.scene);
     input.environment = c.env.empty() ? lab::render::load_scene_environment(input.scene) : lab::ibl::load_environment(c.env);
@@ -206,6 +213,35 @@ TEST_CASE("Integrator agreement: BDPT against the path tracer under environments
         {"bare plane, constant environment", kBarePlane, "constant:1,1,1", 6, 32, 16, 0, 0.02},
         {"spheres on a plane, courtyard.exr", kSpheresOnPlane, "envmaps/courtyard.exr", 6, 32, 192, 0, 0.02},
         {"shader_ball, courtyard.exr", "scenes/shader_ball.json", "envmaps/courtyard.exr", 6, 32, 32, 0, 0.06},
+    };
+    for (const Case& c : cases) check_case(c);
+}
+
+// An emissive openpbr torus (coated, with fuzz: its emission leaves through both, brdf/emission.h)
+// standing among the spheres on the plane. No light sample can find it, so the path tracer finds it
+// only where a BSDF-sampled ray hits it, and BDPT only by s = 0; lit by it alone, BDPT has no light
+// subpath at all.
+const char* kGlowingTorus = R"({"camera": {"type": "pinhole", "position": [0, 1.5, 3.5], "look_at": [0, 0.5, 0], "fov_degrees": 45},
+  "materials": {"ground": {"albedo": [0.5, 0.5, 0.5], "lobes": {"diffuse": 1}},
+                "white": {"albedo": [0.8, 0.8, 0.8], "lobes": {"diffuse": 1}},
+                "glossy": {"albedo": [0.8, 0.3, 0.2], "roughness": 0.2, "lobes": {"diffuse": 0.6, "glossy": 0.4}},
+                "glow": {"model": "openpbr", "base_color": [0.1, 0.1, 0.1], "coat_weight": 1, "coat_roughness": 0.2, "fuzz_weight": 0.5,
+                         "emission_luminance": 6, "emission_color": [1, 0.6, 0.3]}},
+  "objects": [{"name": "ground", "material": "ground", "shape": {"type": "plane", "normal": [0, 1, 0], "offset": 0}},
+              {"name": "left", "material": "white", "shape": {"type": "translate", "offset": [-0.8, 0.5, 0], "child": {"type": "sphere", "radius": 0.5}}},
+              {"name": "right", "material": "glossy", "shape": {"type": "translate", "offset": [0.8, 0.5, -0.3], "child": {"type": "sphere", "radius": 0.5}}},
+              {"name": "torus", "material": "glow", "shape": {"type": "translate", "offset": [0, 0.6, -1.2],
+               "child": {"type": "rotate", "euler_degrees": [90, 0, 0], "child": {"type": "torus", "major_radius": 0.45, "minor_radius": 0.15}}}}]})";
+
+// Emissive materials (docs/materials.md, Emission): the torus lit by itself alone and under
+// courtyard.exr, and the preview's input, the test model with the emissive preset under
+// courtyard.exr, against BDPT.
+TEST_CASE("Integrator agreement: BDPT against the path tracer with an emissive openpbr material", "[render][agreement][emission][opencl][sweep]") {
+    std::vector<Case> cases = {
+        {"glowing torus among spheres, its own light alone", kGlowingTorus, "", 6, 32, 160, 0, 0.05},
+        {"glowing torus among spheres, courtyard.exr", kGlowingTorus, "envmaps/courtyard.exr", 6, 32, 32, 0, 0.05},
+        {"preview: glowing_coated_panel on the test model, courtyard.exr", "", "envmaps/courtyard.exr", 6, 32, 32, 0, 0.05,
+         lab::render::LightSampling::mis, false, "presets/glowing_coated_panel.json"},
     };
     for (const Case& c : cases) check_case(c);
 }

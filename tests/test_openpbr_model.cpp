@@ -141,6 +141,57 @@ TEST_CASE("openpbr: a film of weight 0 or thickness 0 on the metal is the plain 
     CHECK(differences(thin, plain, 2000, 6) > 500);
 }
 
+// Emission (brdf/emission.h): emission_luminance emission_color on the outer side, in the renderer's
+// units (1 = 1 nit of white), nothing on the inner side; under a smooth, clear coat without
+// darkening, what the coat lets through, 1 - Fresnel(coat_ior) (textbook, in double); through a
+// coat of colour c at normal incidence, one pass, c^(1/2); under fuzz, never more than without it.
+TEST_CASE("openpbr: emission is luminance times colour on the outer side, through the layers above it", "[brdf][openpbr][emission]") {
+    Material m = busy_base();
+    m.emission_luminance = 300.0f;
+    set_color(m.emission_color, 1.0f, 0.5f, 0.25f);
+    const float3 bare = float3(300.0f, 150.0f, 75.0f);
+    for (float theta : {0.0f, 30.0f, 60.0f, 85.0f}) {
+        INFO("theta " << theta);
+        float3 wo = brdf::direction_from_degrees(theta, 20.0f);
+        float3 e = brdf::material_emission_clamped(&m, wo);
+        CHECK((e.x == bare.x && e.y == bare.y && e.z == bare.z));
+        float3 below = brdf::material_emission_clamped(&m, float3(wo.x, wo.y, -wo.z));  // the inner side
+        CHECK((below.x == 0.0f && below.y == 0.0f && below.z == 0.0f));
+    }
+    Material off = m;
+    off.emission_luminance = 0.0f;
+    CHECK(!brdf::material_emits(&off));
+    CHECK(brdf::material_emission_clamped(&off, float3(0.0f, 0.0f, 1.0f)).x == 0.0f);
+    Material lab = brdf::default_material();  // the lab model has no emission of its own
+    lab.emission_luminance = 300.0f;
+    CHECK(!brdf::material_emits(&lab));
+
+    Material coated = m;
+    coated.coat_weight = 1.0f, coated.coat_roughness = 0.0f, coated.coat_darkening = 0.0f;
+    set_color(coated.coat_color, 1.0f, 1.0f, 1.0f);
+    for (float ior : {1.3f, 1.6f, 2.5f})
+        for (float theta : {0.0f, 40.0f, 75.0f}) {
+            INFO("coat ior " << ior << ", theta " << theta);
+            coated.coat_ior = ior;
+            float3 wo = brdf::direction_from_degrees(theta, 0.0f);
+            float3 e = brdf::material_emission_clamped(&coated, wo);
+            double through = 1.0 - fresnel_textbook(double(wo.z), double(ior));
+            CHECK(double(e.x) == Approx(300.0 * through).epsilon(2e-5));
+            CHECK(double(e.z) == Approx(75.0 * through).epsilon(2e-5));
+        }
+    coated.coat_ior = 1.5f;
+    set_color(coated.coat_color, 0.25f, 0.25f, 0.25f);
+    CHECK(double(brdf::material_emission_clamped(&coated, float3(0.0f, 0.0f, 1.0f)).x) == Approx(300.0 * 0.96 * 0.5).epsilon(2e-5));
+
+    Material fuzzy = m;
+    fuzzy.fuzz_weight = 1.0f;
+    for (float theta : {0.0f, 60.0f, 85.0f}) {
+        float3 e = brdf::material_emission_clamped(&fuzzy, brdf::direction_from_degrees(theta, 0.0f));
+        CHECK(e.x < bare.x);
+        CHECK(e.x > 0.0f);
+    }
+}
+
 TEST_CASE("openpbr: a smooth coat reflects Fresnel(coat_ior) at the mirror direction", "[brdf][openpbr]") {
     for (float ior : {1.3f, 1.6f, 2.5f}) {
         Material m = busy_base();
@@ -391,14 +442,16 @@ TEST_CASE("chi-square: openpbr's check rejects a pdf that misses a lobe", "[chi_
 }
 
 TEST_CASE("openpbr energy tables: the committed tables are what the generator writes", "[openpbr][energy_compensation][sweep]") {
-    // sample rows regenerated (tests/energy_table_rows.hpp)
+    // rows drawn per run, regenerated (tests/energy_table_rows.hpp)
     auto check_row = check_energy_table_row;
     const int strata = lab::validation::kEnergyTableStrata;
-    for (auto [k, i] : {std::pair<int, int>{0, 6}, {3, 0}, {5, 9}, {9, 15}})
+    for (int row : energy_table_rows_of_run("openpbr specular [ior][roughness]", DIELECTRIC_GRID_IOR * DIELECTRIC_GRID_ROUGHNESS, 4)) {
+        const int k = row / DIELECTRIC_GRID_ROUGHNESS, i = row % DIELECTRIC_GRID_ROUGHNESS;
         check_row([&, k = k](float r, float mu) { return lab::validation::dielectric_reflection_albedo(r, brdf::energy_grid_ior(k), mu, strata); },
                   DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_MU, i,
                   brdf::energy_openpbr_specular_albedo + k * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU);
-    for (int i : {2, 16, 31})
+    }
+    for (int i : energy_table_rows_of_run("openpbr sheen [roughness]", ENERGY_GRID_ROUGHNESS, 3))
         check_row([&](float r, float mu) { return lab::validation::sheen_albedo(r, mu, strata * lab::validation::kSheenStrataFactor); },
                   ENERGY_GRID_ROUGHNESS, ENERGY_GRID_MU, i, brdf::energy_openpbr_sheen_albedo);
     // the smooth row is never below the Fresnel reflectance (raised where the interpolant towards the

@@ -112,6 +112,12 @@ TEST_CASE("bad openpbr presets give one line naming the file and the field", "[p
         CHECK(std::string(e.what()).rfind("mine.json: fuzz_weight: malformed JSON", 0) == 0);
     }
     CHECK(error_of(R"({"model": "openpbr", "fuzz_weight": 0.5})").empty());
+    // emission, in nits: from the same table
+    CHECK(error_of(R"({"model": "openpbr", "emission_luminance": -1})") == "mine.json: emission_luminance: value -1 is out of range [0, 1e+06]");
+    CHECK(error_of(R"({"model": "openpbr", "emission_luminance": 2e6})") == "mine.json: emission_luminance: value 2e+06 is out of range [0, 1e+06]");
+    CHECK(error_of(R"({"model": "openpbr", "emission_color": [1, 1, -0.5]})") == "mine.json: emission_color[2]: value -0.5 is out of range [0, 1]");
+    CHECK(error_of(R"({"model": "openpbr", "emission_luminance": 1000, "emission_color": [1, 0.5, 0]})").empty());
+    CHECK(error_of(R"({"emission_luminance": 10})") == "mine.json: emission_luminance: unknown key");  // an OpenPBR input, not the lab model's
 }
 
 TEST_CASE("an unreadable or malformed preset file is one clear line", "[presets]") {

@@ -119,6 +119,13 @@ TEST_CASE("Viewer: --set goes through the preset loader: units, ranges and names
     CHECK_THROWS_WITH(lab::viewer::with_parameter(p, "roughnes", "0.5", "--set"), "--set: roughnes: unknown key");
     CHECK_THROWS_AS(lab::viewer::with_parameter(p, "roughness", "nan", "--set"), lab::InputError);
     CHECK_THROWS_AS(lab::viewer::with_parameter(p, "albedo", "0.1,0.2", "--set"), lab::InputError);
+    brdf::Preset glow = p;
+    glow.material = brdf::default_material(BRDF_MODEL_OPENPBR);
+    CHECK(lab::viewer::with_parameter(glow, "emission_luminance", "250", "--set").material.emission_luminance == 250.0f);
+    CHECK(lab::viewer::with_parameter(glow, "emission_color", "1,0.5,0.25", "--set").material.emission_color[2] == 0.25f);
+    CHECK_THROWS_AS(lab::viewer::with_parameter(glow, "emission_luminance", "nan", "--set"), lab::InputError);
+    CHECK_THROWS_WITH(lab::viewer::with_parameter(glow, "emission_luminance", "-5", "--set"),
+                      "--set: emission_luminance: value -5 is out of range [0, 1e+06]");
 }
 
 TEST_CASE("export to scene adds or replaces one material and keeps the rest in place", "[viewer]") {

@@ -18,7 +18,10 @@ bool scalar_row(const brdf::ScalarParameter& p, brdf::Material* m, const brdf::M
     float value = m->*p.field / p.to_material;
     ImGui::PushID(p.key);
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
-    changed |= ImGui::SliderFloat("##slider", &value, p.min, p.max, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    // a range over several decades (emission_luminance, nits) is a logarithmic slider, so that 1 and 1000 are both reachable
+    const bool decades = p.min >= 0.0f && p.max > 1000.0f;
+    changed |= ImGui::SliderFloat("##slider", &value, p.min, p.max, decades ? "%.4g" : "%.3f",
+                                  ImGuiSliderFlags_AlwaysClamp | (decades ? ImGuiSliderFlags_Logarithmic : 0));
     ImGui::SameLine();
     ImGui::SetNextItemWidth(70.0f);
     if (ImGui::InputFloat("##entry", &value, 0.0f, 0.0f, "%.4f", ImGuiInputTextFlags_EnterReturnsTrue)) changed = true;

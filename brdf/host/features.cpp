@@ -6,7 +6,7 @@ namespace {
 
 struct Needs {
     bool lab = false, dtoadq2017 = false, measured = false, openpbr = false, diffuse = false, retroreflection = false, subsurface = false,
-         glossy = false, transmission = false, coat = false, fuzz = false, thin_film = false, energy_compensation = false, ggx = false,
+         glossy = false, transmission = false, coat = false, fuzz = false, thin_film = false, emission = false, energy_compensation = false, ggx = false,
          hyper_cauchy = false;
 };
 
@@ -21,6 +21,7 @@ void add_openpbr(const Material& m, Needs* needs) {
     OpenPbr p = openpbr_setup(&m, float3(0.0f, 0.0f, 1.0f));
     needs->fuzz = needs->fuzz || m.fuzz_weight > 0.0f;
     needs->coat = needs->coat || m.coat_weight > 0.0f;
+    needs->emission = needs->emission || material_emits(&m);
     if (m.coat_weight > 0.0f && !p.coat_smooth) needs->ggx = true;
     if (p.metal > 0.0f) {
         if (!p.specular_smooth) needs->ggx = true;
@@ -93,6 +94,7 @@ std::vector<std::pair<std::string, bool>> used_features(const std::vector<Materi
             {"BRDF_FEATURE_COAT", n.coat},
             {"BRDF_FEATURE_FUZZ", n.fuzz},
             {"BRDF_FEATURE_THIN_FILM", n.thin_film},
+            {"BRDF_FEATURE_EMISSION", n.emission},
             {"BRDF_FEATURE_ENERGY_COMPENSATION", n.energy_compensation},
             {"BRDF_FEATURE_GGX", n.ggx},
             {"BRDF_FEATURE_HYPER_CAUCHY", n.hyper_cauchy}};

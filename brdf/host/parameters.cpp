@@ -55,6 +55,9 @@ const std::vector<ScalarParameter>& openpbr_parameters() {
         scalar("thin film", "thin_film_thickness", &M::thin_film_thickness, 0.0f, BRDF_THIN_FILM_THICKNESS_MAX, 0.5f, "micrometres",
                "thickness of the film"),
         scalar("thin film", "thin_film_ior", &M::thin_film_ior, BRDF_IOR_MIN, BRDF_IOR_MAX, 1.4f, "", "index of refraction of the film"),
+        scalar("emission", "emission_luminance", &M::emission_luminance, 0.0f, BRDF_EMISSION_LUMINANCE_MAX, 0.0f, "nits",
+               "luminance of the light the surface emits on its outer side: radiance emission_luminance emission_color in the renderer's units (1 = 1 nit of white)"),
+        color("emission", "emission_color", &M::emission_color, 1.0f, "colour of the emitted light (multiplies emission_luminance)"),
     };
     return table;
 }

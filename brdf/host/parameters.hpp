@@ -65,7 +65,7 @@ inline const std::array<ScalarParameter, 15>& scalar_parameters() {
 
 // OpenPBR Surface 1.1's inputs that the lab evaluates (brdf/openpbr_model.h), in OpenPBR's groups and
 // order. Inputs it leaves out (transmission_depth and scatter, dispersion, subsurface_radius,
-// emission, geometry_*): docs/materials.md.
+// geometry_*): docs/materials.md.
 const std::vector<ScalarParameter>& openpbr_parameters();
 
 // The table a material of `model` takes its keys from: openpbr_parameters() or scalar_parameters().

@@ -42,9 +42,10 @@ float checked_number(const json& value, const std::string& source, const std::st
         throw InputError(source, key, std::string("expected a number, got ") + value.type_name());
     double v = value.get<double>();
     if (!std::isfinite(v)) throw InputError(source, key, "not a finite number");
-    // a little slack for values written with fewer digits than the bounds
-    double slack = 1e-6 * std::max(1.0, std::fabs(double(hi)));
-    if (v < lo - slack || v > hi + slack) {
+    // a little slack for values written with fewer digits than the bounds, relative to each bound
+    // (one of the upper bound's would let -1 nit below 0 with an upper bound of 1e6 nits)
+    auto slack = [](float bound) { return 1e-6 * std::max(1.0, std::fabs(double(bound))); };
+    if (v < lo - slack(lo) || v > hi + slack(hi)) {
         std::ostringstream msg;
         msg << "value " << v << " is out of range [" << lo << ", " << hi << "]";
         throw InputError(source, key, msg.str());

@@ -7,8 +7,8 @@
 
 namespace lab::kernels {
 
-// Plain floats and ints only (brdf/material.h): 45 floats and 4 ints, no padding on either side.
-static_assert(sizeof(brdf::Material) == 49 * 4, "brdf::Material changed: update kernels/material_layout.h");
+// Plain floats and ints only (brdf/material.h): 49 floats and 4 ints, no padding on either side.
+static_assert(sizeof(brdf::Material) == 53 * 4, "brdf::Material changed: update kernels/material_layout.h");
 
 void check_material_layout(const opencl::Runtime& runtime, const opencl::Program& program) {
     opencl::KernelHandle layout = program.kernel("brdf_material_layout");

@@ -331,6 +331,9 @@ cli_bad_input(NAME render.bdpt_no_light ABSENT ${PNG}
 cli_bad_input(NAME render.lt_no_light ABSENT ${PNG}
               EXPECT "${E}${D}/scene_no_sample\\.json: --integrator: lt starts its light subpaths on the lights, and the scene has none "
               ARGS render ${D}/scene_no_sample.json --integrator lt --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.lt_emissive_material ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_emissive\\.json: materials\\.lamp: emission_luminance: the light tracer cannot see a material's emission .*: use --integrator bdpt or pt$"
+              ARGS render ${D}/scene_emissive.json --integrator lt --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.lt_environment ABSENT ${PNG}
               EXPECT "${E}scenes/metaballs\\.json: --integrator: lt cannot render an environment light .*: use --integrator bdpt or pt$"
               ARGS ${RENDER} --integrator lt --env constant:1,1,1)
