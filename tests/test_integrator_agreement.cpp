@@ -65,7 +65,7 @@ struct Case {
     double power;       // the stated bound on the detectable difference
     lab::render::LightSampling sampling = lab::render::LightSampling::mis;  // the path tracer's (BDPT has its own)
     bool without_point_lights = false;  // the path tracer cannot sample a point light seen through smooth glass (below)
-    std::string sample_preset;          // not empty: the preview's input, the test model with this preset in its sample slot (`scene` unused)
+    std::string sample_preset = {};     // not empty: the preview's input, the test model with this preset in its sample slot (`scene` unused)
 };
 
 lab::render::RenderInput case_input(const Case& c) {
