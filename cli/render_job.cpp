@@ -296,7 +296,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     layers.insert(layers.end(), aovs.begin(), aovs.end());
     film::ImageRgb shown = raw;
     if (denoise) {
-        shown = render::denoised(raw, render::denoise_guide(*first_hits, renderer->variance()), *renderer);
+        shown = render::denoised(raw, render::denoise_guide(*first_hits, renderer->variance()), *renderer->display_filter(), {});
         const std::vector<film::ImageChannel> noisy = render::noisy_channels(raw);
         layers.insert(layers.end(), noisy.begin(), noisy.end());
     }

@@ -22,13 +22,6 @@ film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs, const film::ImageRgb&
     return guide;
 }
 
-film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const Renderer& renderer,
-                        const film::DenoiseOptions& options) {
-    film::AtrousBuffers buffers = film::demodulate(radiance, guide);
-    renderer.display_filter_passes(&buffers, options);
-    return film::remodulate(buffers, guide);
-}
-
 film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, DisplayFilter& filter,
                         const film::FilterCancelled& cancelled, const film::DenoiseOptions& options) {
     film::AtrousBuffers buffers = film::demodulate(radiance, guide);

@@ -1,6 +1,6 @@
 // `--denoise on` for `render`, `preview` and the viewer: the image shown denoised
 // (film/denoise.hpp), guided by the render's first-hit AOVs, its passes run where the render runs
-// (Renderer::display_filter_passes). `render` and `preview` keep the raw image beside it as the EXR
+// (Renderer::display_filter). `render` and `preview` keep the raw image beside it as the EXR
 // layer noisy.R/G/B, as Blender keeps its noisy pass, so nothing rendered is lost.
 #pragma once
 
@@ -20,12 +20,8 @@ namespace lab::render {
 // out, for film::demodulate to estimate from the image.
 film::DenoiseGuide denoise_guide(const FirstHitAovs& aovs, const film::ImageRgb& variance);
 
-// The denoised image, its passes on `renderer`'s device.
-film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, const Renderer& renderer,
-                        const film::DenoiseOptions& options = {});
-
-// The same by `filter` (on another thread than the renderer's); an empty image when `cancelled`
-// stopped it.
+// The denoised image, its passes by `filter` (Renderer::display_filter: on the render's device);
+// an empty image when `cancelled` stopped it.
 film::ImageRgb denoised(const film::ImageRgb& radiance, const film::DenoiseGuide& guide, DisplayFilter& filter,
                         const film::FilterCancelled& cancelled, const film::DenoiseOptions& options = {});
 

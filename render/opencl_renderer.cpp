@@ -178,11 +178,6 @@ std::optional<FirstHitAovs> OpenClRenderer::first_hit_aovs(const SampleRanges& r
     return first_hit_means(albedo, normal_depth, std::move(slots), ranges.count());
 }
 
-void OpenClRenderer::display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const {
-    if (!denoiser_) denoiser_.emplace(runtime_);
-    denoiser_->passes(buffers, options);
-}
-
 std::unique_ptr<DisplayFilter> OpenClRenderer::display_filter() const { return device_display_filter(runtime_.device().id()); }
 
 FilmReadback OpenClRenderer::read_film() const {

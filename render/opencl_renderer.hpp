@@ -3,7 +3,6 @@
 // the scene and the film in device buffers.
 #pragma once
 
-#include "kernels/host/denoise_device.hpp"
 #include "opencl/runtime.hpp"
 #include "render/renderer.hpp"
 #include "render/wavefront_driver.hpp"
@@ -36,7 +35,6 @@ public:
     // call after each build of the integrator's, so a render without AOVs never compiles it.
     using Renderer::first_hit_aovs;
     std::optional<FirstHitAovs> first_hit_aovs(const SampleRanges& ranges, const std::function<bool()>& cancelled) const override;
-    void display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const override;
     // On this renderer's device, in a context of its own.
     std::unique_ptr<DisplayFilter> display_filter() const override;
 
@@ -55,7 +53,6 @@ private:
     opencl::KernelHandle kernel_;
     mutable std::optional<opencl::Program> first_hit_program_;  // built by first_hit_aovs
     mutable opencl::KernelHandle first_hit_kernel_;
-    mutable std::optional<kernels::DeviceDenoiser> denoiser_;  // built by display_filter_passes
     // Arguments 0 .. 15, which every render kernel takes (kernels/path_tracer.cl); returns the next index.
     cl_uint bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& launch_settings) const;
     WavefrontDriver wavefront_driver_;  // used when wavefront()

@@ -322,10 +322,6 @@ void Renderer::set_background(float opacity, float blur_degrees) {
     reset();
 }
 
-void Renderer::display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const {
-    film::atrous_passes(buffers, options);
-}
-
 std::unique_ptr<DisplayFilter> Renderer::display_filter() const { return host_display_filter(); }
 
 PartialPass Renderer::partial_pass() const { return PartialPass{pass_pixels_, pass_pixels_ > 0 ? pass_samples_ : 0}; }

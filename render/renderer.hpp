@@ -160,11 +160,9 @@ public:
     // most one piece); empty: never asked, and the image is one launch.
     virtual std::optional<FirstHitAovs> first_hit_aovs(const SampleRanges& ranges, const std::function<bool()>& cancelled) const;
     static constexpr int kFirstHitPiece = 4096;
-    // The display denoiser's passes (film/denoise.hpp) where this renderer runs: on the host's
-    // thread here; OpenClRenderer runs them on its device (kernels/denoise.cl, built at the first call).
-    virtual void display_filter_passes(film::AtrousBuffers* buffers, const film::DenoiseOptions& options) const;
-    // The same passes on the same device, apart from this renderer (render/display_filter.hpp): for
-    // a thread that filters while this one renders.
+    // The display denoiser's passes (film/denoise.hpp) on the device this renderer runs on, apart
+    // from it (render/display_filter.hpp): on the host here; OpenClRenderer's in a context of its
+    // own, so a thread may filter while this one renders.
     virtual std::unique_ptr<DisplayFilter> display_filter() const;
     // What a launch of `count` samples from `first_sample` is given; public for host-side tools that
     // trace the same rays (the viewer's pixel inspector).
