@@ -6,17 +6,12 @@
 
 #include <catch2/catch.hpp>
 
-#include <algorithm>
-
-#include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <functional>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "tests/points_of_run.hpp"
 #include "validation/energy_tables.hpp"
 
 inline void check_energy_table_row(const std::function<double(float, float)>& albedo, int n_r, int n_mu, int i,
@@ -32,32 +27,9 @@ inline void check_energy_table_row(const std::function<double(float, float)>& al
 
 // Which rows of a table of `rows` rows a run regenerates: every row costs about a second of CPU
 // (the generator's resolution, and the estimates between nodes that make a row conservative), too
-// much for all of the tables' rows in every run, so each run draws `count` of them at random and
-// prints its seed once, so that a change of any row can be caught by some run and a failing run can
-// be repeated: DTOADQ_TABLE_ROWS_SEED=S draws what the run of seed S drew, DTOADQ_TABLE_ROWS=all
-// regenerates every row. `table` names the table, so each table draws its own rows.
-inline uint64_t energy_table_rows_seed() {
-    static const uint64_t seed = [] {
-        const char* given = std::getenv("DTOADQ_TABLE_ROWS_SEED");
-        uint64_t s = given != nullptr ? std::strtoull(given, nullptr, 10) : (uint64_t(std::random_device{}()) << 32) ^ std::random_device{}();
-        std::printf("energy table rows: seed %llu (DTOADQ_TABLE_ROWS_SEED=%llu draws these rows again)\n", (unsigned long long)s,
-                    (unsigned long long)s);
-        return s;
-    }();
-    return seed;
-}
-
+// much for all of the tables' rows in every run, so each run draws `count` of them
+// (tests/points_of_run.hpp): DTOADQ_TABLE_ROWS_SEED=S draws what the run of seed S drew,
+// DTOADQ_TABLE_ROWS=all regenerates every row. `table` names the table, so each table draws its own rows.
 inline std::vector<int> energy_table_rows_of_run(const std::string& table, int rows, int count) {
-    std::vector<int> all(static_cast<size_t>(rows));
-    for (int i = 0; i < rows; ++i) all[size_t(i)] = i;
-    const char* every = std::getenv("DTOADQ_TABLE_ROWS");
-    if ((every != nullptr && std::string(every) == "all") || count >= rows) return all;
-    std::seed_seq seq{uint32_t(energy_table_rows_seed()), uint32_t(energy_table_rows_seed() >> 32), uint32_t(std::hash<std::string>{}(table))};
-    std::mt19937 rng(seq);
-    std::shuffle(all.begin(), all.end(), rng);
-    all.resize(size_t(count));
-    std::string drawn;
-    for (int i : all) drawn += " " + std::to_string(i);
-    std::printf("energy table rows: %s:%s of %d\n", table.c_str(), drawn.c_str(), rows);
-    return all;
+    return points_of_run(RunDraw{"energy table rows", "DTOADQ_TABLE_ROWS_SEED", "DTOADQ_TABLE_ROWS"}, table, rows, count);
 }
