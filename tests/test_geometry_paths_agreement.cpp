@@ -25,6 +25,7 @@
 #include "render/scene_environment.hpp"
 #include "scene/geometry_paths.hpp"
 #include "scene/load_scene.hpp"
+#include "tests/points_of_run.hpp"
 #include "tests/sample_batches.hpp"
 #include "validation/region_t_test.hpp"
 
@@ -107,18 +108,26 @@ double check_agreement(const std::string& name, const std::vector<ImageRgb>& exa
 
 // Every bundled scene under its own lights, or under courtyard.exr where it has none (as the
 // commands light it). A scene whose objects are all marched either way would compare a render with
-// itself: each one must have an exact object.
+// itself: each one must have an exact object. Each run renders primitives (every exact primitive)
+// and half of the other scenes, drawn per run (tests/points_of_run.hpp); every scene must have its
+// case in every run.
 TEST_CASE("Geometry paths: auto and march agree region by region on every bundled scene", "[render][geometry][sweep]") {
     const lab::ibl::Environment courtyard = lab::ibl::load_environment("envmaps/courtyard.exr");
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator("scenes"))
         if (entry.path().extension() == ".json") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
-    for (const std::filesystem::path& file : files) {
+    std::vector<int> always;
+    for (size_t i = 0; i < files.size(); ++i)
+        if (files[i].stem() == "primitives") always.push_back(int(i));
+    const std::vector<int> drawn = sweep_points_of_run("geometry paths: scenes", int(files.size()), int(files.size()) / 2, always);
+    for (size_t i = 0; i < files.size(); ++i) {
+        const std::filesystem::path& file = files[i];
         const std::string name = file.stem().string();
         const auto c = std::find_if(kScenes.begin(), kScenes.end(), [&](const SceneCase& k) { return name == k.name; });
         INFO(name << ": a bundled scene needs its case here");
         REQUIRE(c != kScenes.end());
+        if (std::find(drawn.begin(), drawn.end(), int(i)) == drawn.end()) continue;
         lab::render::RenderInput input;
         input.scene = lab::scene::load_scene(file.string());
         input.environment = lab::scene::has_own_light(input.scene) ? lab::render::load_scene_environment(input.scene) : courtyard;
