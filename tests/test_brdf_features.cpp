@@ -14,6 +14,7 @@
 #include "kernels/host/embedded_sources.hpp"
 #include "opencl/kernel_source.hpp"
 #include "opencl/runtime.hpp"
+#include "tests/bundled_presets_of_run.hpp"
 #include "tests/lobe_material.hpp"
 #include "validation/uniform_random.hpp"
 
@@ -151,13 +152,13 @@ TEST_CASE("switched-off features never reach the kernel source", "[features]") {
     CHECK(full.text.find("#if BRDF_FEATURE_HYPER_CAUCHY") != std::string::npos);
 }
 
+// The presets of the run (tests/bundled_presets_of_run.hpp): each preset that alone needs a feature,
+// and half of the others, drawn per run; a reduced kernel each.
 TEST_CASE("a kernel built with a preset's features only agrees exactly with the full build", "[features][opencl]") {
     lab::opencl::Runtime runtime("");
     lab::kernels::BrdfBatch full(runtime);
-    std::vector<brdf::Preset> presets;
-    for (const auto& entry : fs::directory_iterator("presets"))
-        if (entry.path().extension() == ".json") presets.push_back(brdf::load_preset(entry.path().string()));
-    REQUIRE(presets.size() >= 8);
+    const std::vector<brdf::Preset> presets = bundled_presets_of_run("feature build presets");
+    REQUIRE(presets.size() >= 4);
 
     lab::validation::UniformRandom random(7);
     const int n = 2000;

@@ -13,6 +13,7 @@
 #include "film/image_stats.hpp"
 #include "opencl/runtime.hpp"
 #include "render/opencl_renderer.hpp"
+#include "tests/bundled_presets_of_run.hpp"
 #include "tests/render_inputs.hpp"
 
 namespace fs = std::filesystem;
@@ -100,15 +101,15 @@ TEST_CASE("A render is a pure function of its seed", "[preview][opencl]") {
     CHECK(a.rgb != c.rgb);
 }
 
+// The presets of the run (tests/bundled_presets_of_run.hpp): each preset that alone needs a feature,
+// and half of the others, drawn per run; a kernel build each.
 TEST_CASE("Every bundled preset renders without NaN or infinity", "[preview][opencl]") {
     lab::opencl::Runtime runtime("");
     std::string env = "envmaps/sunset.exr";  // a sun of 6520: a stress test
-    for (const auto& entry : fs::directory_iterator("presets")) {
-        if (entry.path().extension() != ".json") continue;
-        brdf::Material scene = brdf::load_preset(entry.path().string()).material;
+    for (const brdf::Preset& preset : bundled_presets_of_run("preview presets")) {
         lab::render::RenderStatistics stats;
-        lab::film::ImageRgb image = render(runtime, scene, env, IblSampling::mis, 24, 4, 1, &stats);
-        INFO(entry.path().string());
+        lab::film::ImageRgb image = render(runtime, preset.material, env, IblSampling::mis, 24, 4, 1, &stats);
+        INFO(preset.source);
         CHECK(stats.nonfinite_samples == 0);
         CHECK(lab::film::image_stats(image).non_finite_pixels == 0);
         CHECK(lab::film::image_stats(image).mean[0] > 0.0);
@@ -116,8 +117,9 @@ TEST_CASE("Every bundled preset renders without NaN or infinity", "[preview][ope
 }
 
 // The bundled scenes with a light of its own render with every integrator in the integrator
-// agreement matrix (tests/test_integrator_agreement.cpp), which checks that each of their samples
-// is finite; here the scenes without one, under the courtyard as the commands light them.
+// agreement matrix (tests/test_integrator_agreement.cpp; cornell_box and half of the others, drawn
+// per run), which checks that each of their samples is finite; here the scenes without one, under
+// the courtyard as the commands light them.
 TEST_CASE("Every bundled scene without a light renders under an environment without NaN or infinity", "[render][opencl]") {
     lab::opencl::Runtime runtime("");
     int rendered = 0;
