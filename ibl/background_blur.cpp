@@ -13,7 +13,6 @@ namespace lab::ibl {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The largest angle between a face's centre direction and any direction on it (its corners): acos(1/sqrt(3)).
 const double kFaceHalfAngle = std::acos(1.0 / std::sqrt(3.0));
 
@@ -67,7 +66,7 @@ std::vector<Texel> coarse_source(const std::vector<single_source::float4>& texel
 }  // namespace
 
 int blurred_face_size(int source_face_size, float sigma_degrees) {
-    const double sigma = double(sigma_degrees) * kPi / 180.0;
+    const double sigma = double(sigma_degrees) * M_PI / 180.0;
     const int wanted = int(std::ceil(8.0 / sigma));  // 2/N radians <= sigma / 4
     return std::max(1, std::min({source_face_size, kMaxBlurredFaceSize, std::max(4, wanted)}));
 }
@@ -79,9 +78,9 @@ BlurredCubemap blur_cubemap(const std::vector<single_source::float4>& texels, in
         throw std::invalid_argument("blur_cubemap: 6 N^2 texels");
     const int n = blurred_face_size(face_size, sigma_degrees);
     const std::vector<Texel> source = coarse_source(texels, face_size, n);
-    const double sigma = double(sigma_degrees) * kPi / 180.0;
+    const double sigma = double(sigma_degrees) * M_PI / 180.0;
     const double kappa = 1.0 / (sigma * sigma);
-    const double cutoff = std::min(kPi, 4.0 * sigma);
+    const double cutoff = std::min(M_PI, 4.0 * sigma);
     const double cos_cutoff = std::cos(cutoff);
     // the face centre directions, in face order: +x, -x, +y, -y, +z, -z
     const double centres[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};

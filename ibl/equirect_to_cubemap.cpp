@@ -12,7 +12,6 @@ namespace lab::ibl {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Whether a face's points have x and z that depend on a alone and y on b alone (+x, -x, +z, -z), as
 // ibl/cubemap.h's cubemap_face_point lays them out.
@@ -24,9 +23,9 @@ bool around_y_axis(int face) {
 
 }  // namespace
 
-double latlong_azimuth(double x, double z) { return std::atan2(-x, z) / (2.0 * kPi) + 0.5; }
+double latlong_azimuth(double x, double z) { return std::atan2(-x, z) / (2.0 * M_PI) + 0.5; }
 
-double latlong_elevation(double y, double horizontal) { return 0.5 - std::atan2(y, horizontal) / kPi; }
+double latlong_elevation(double y, double horizontal) { return 0.5 - std::atan2(y, horizontal) / M_PI; }
 
 void latlong_coordinates(single_source::float3 d, double* u, double* v) {
     const double x = d.x, y = d.y, z = d.z;
@@ -35,8 +34,8 @@ void latlong_coordinates(single_source::float3 d, double* u, double* v) {
 }
 
 single_source::float3 latlong_direction(double u, double v) {
-    const double phi = (u - 0.5) * 2.0 * kPi;     // atan2(-x, z)
-    const double elevation = (0.5 - v) * kPi;     // atan2(y, hypot(x, z))
+    const double phi = (u - 0.5) * 2.0 * M_PI;     // atan2(-x, z)
+    const double elevation = (0.5 - v) * M_PI;     // atan2(y, hypot(x, z))
     const double c = std::cos(elevation);
     return single_source::float3(float(-c * std::sin(phi)), float(std::sin(elevation)), float(c * std::cos(phi)));
 }

@@ -13,17 +13,6 @@ namespace lab::plots {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string number(double v) {
-    if (!std::isfinite(v)) return "nan";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.7g", v);
-    return text;
-}
-
-}  // namespace
-
 void write_fit_chart(const brdf::MeasuredTable& table, const brdf::Preset& fitted, const FitChartData& data, const std::string& png_path) {
     if (data.error_map.size() != std::size_t(MERL_THETA_H_BINS) * MERL_THETA_D_BINS)
         throw std::invalid_argument("fit chart: the error map has the wrong size");
@@ -40,23 +29,23 @@ void write_fit_chart(const brdf::MeasuredTable& table, const brdf::Preset& fitte
             const std::vector<analysis::PlaneSample> model = analysis::plane_slice(
                 [&m](brdf::float3 wi, brdf::float3 wo) { return brdf::bsdf_eval(&m, wi, wo); }, theta_in, 0.0f, data.plane_step_deg, false);
             for (size_t k = 0; k < measured.size(); ++k)
-                lobes << number(theta_in) << "," << number(measured[k].angle_deg) << "," << number(measured[k].value) << ","
-                      << number(model[k].value) << "\n";
+                lobes << csv_number(theta_in) << "," << csv_number(measured[k].angle_deg) << "," << csv_number(measured[k].value) << ","
+                      << csv_number(model[k].value) << "\n";
         }
         std::ofstream map = open_output((folder.path() / "error_map.csv").string(), "");
         map << "theta_h_deg,theta_d_deg,error\n";
         for (int ih = 0; ih < MERL_THETA_H_BINS; ++ih)
             for (int id = 0; id < MERL_THETA_D_BINS; ++id) {
                 const brdf::HalfDiffAngles a = brdf::merl_bin_center(ih, id, 0);
-                map << number(a.theta_h * 180.0 / M_PI) << "," << number(a.theta_d * 180.0 / M_PI) << ","
-                    << number(data.error_map[std::size_t(ih) * MERL_THETA_D_BINS + id]) << "\n";
+                map << csv_number(a.theta_h * 180.0 / M_PI) << "," << csv_number(a.theta_d * 180.0 / M_PI) << ","
+                    << csv_number(data.error_map[std::size_t(ih) * MERL_THETA_D_BINS + id]) << "\n";
             }
         if (!lobes.flush() || !map.flush()) throw std::runtime_error("cannot write plot data in " + folder.path().string());
     }
     const fs::path png = folder.path() / "fit.png";
     run_plot_script("fit_chart.py",
                     {"--data", folder.path().string(), "--out", png.string(), "--measured", table.source, "--fitted", fitted.name,
-                     "--error", number(data.error)},
+                     "--error", csv_number(data.error)},
                     folder.path());
     install_output(png, png_path, "--chart");
 }

@@ -25,12 +25,6 @@ void check_incidence(float theta_in_deg, float phi_in_deg) {
         throw std::invalid_argument("lobe plot: the incident direction must have theta in [0, 90) and a finite phi");
 }
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.7g", v);
-    return text;
-}
-
 void write_plot_data(const std::vector<analysis::LobeData>& lobes, const fs::path& folder) {
     std::ofstream materials = open_output((folder / "materials.csv").string(), "");
     std::ofstream plane = open_output((folder / "plane.csv").string(), "");
@@ -43,15 +37,15 @@ void write_plot_data(const std::vector<analysis::LobeData>& lobes, const fs::pat
     for (size_t i = 0; i < lobes.size(); ++i) {
         const analysis::LobeData& d = lobes[i];
         materials << i << "," << csv_field(d.material) << "," << int(d.transmits) << "\n";
-        for (const analysis::PlaneSample& s : d.plane) plane << i << "," << number(s.angle_deg) << "," << number(s.value) << "\n";
+        for (const analysis::PlaneSample& s : d.plane) plane << i << "," << csv_number(s.angle_deg) << "," << csv_number(s.value) << "\n";
         for (const analysis::LobeSample& s : d.grid) {
             double value = analysis::luminance(s.f) * std::fabs(std::cos(double(s.theta_deg) * M_PI / 180.0));
-            surface << i << "," << number(s.theta_deg) << "," << number(s.phi_deg) << "," << number(value) << "\n";
+            surface << i << "," << csv_number(s.theta_deg) << "," << csv_number(s.phi_deg) << "," << csv_number(value) << "\n";
         }
         for (const analysis::DeltaLobe& l : d.deltas)
-            deltas << i << "," << number(l.theta_deg) << "," << number(l.phi_deg) << "," << number(l.plane_angle_deg) << ","
-                   << int(l.in_plane) << "," << int(l.transmission) << "," << number(l.weight.x) << "," << number(l.weight.y) << ","
-                   << number(l.weight.z) << "\n";
+            deltas << i << "," << csv_number(l.theta_deg) << "," << csv_number(l.phi_deg) << "," << csv_number(l.plane_angle_deg) << ","
+                   << int(l.in_plane) << "," << int(l.transmission) << "," << csv_number(l.weight.x) << "," << csv_number(l.weight.y) << ","
+                   << csv_number(l.weight.z) << "\n";
     }
     for (std::ofstream* f : {&materials, &plane, &surface, &deltas})
         if (!f->flush()) throw std::runtime_error("cannot write plot data in " + folder.string());
@@ -68,8 +62,8 @@ void write_lobe_csv(const std::vector<brdf::Preset>& presets, float theta_in_deg
         analysis::LobeData d = analysis::compute_lobe(p, theta_in_deg, phi_in_deg, analysis::LobeResolution{theta_step_deg, kPlotResolution.plane_step_deg});
         std::string name = csv_field(d.material);
         for (const analysis::LobeSample& s : d.grid)
-            out << name << "," << number(s.theta_deg) << "," << number(s.phi_deg) << "," << number(s.f.x) << "," << number(s.f.y) << ","
-                << number(s.f.z) << "," << number(s.pdf) << "\n";
+            out << name << "," << csv_number(s.theta_deg) << "," << csv_number(s.phi_deg) << "," << csv_number(s.f.x) << "," << csv_number(s.f.y) << ","
+                << csv_number(s.f.z) << "," << csv_number(s.pdf) << "\n";
     }
     if (!out.flush()) throw InputError(csv_path, "", "write failed");
 }
@@ -86,8 +80,8 @@ void write_lobe_plot(const std::vector<brdf::Preset>& presets, float theta_in_de
     TempFolder folder("plot");
     write_plot_data(lobes, folder.path());
     fs::path png = folder.path() / "lobe.png";
-    std::vector<std::string> args = {"--data", folder.path().string(), "--out", png.string(), "--theta-in", number(theta_in_deg),
-                                     "--phi-in", number(phi_in_deg)};
+    std::vector<std::string> args = {"--data", folder.path().string(), "--out", png.string(), "--theta-in", csv_number(theta_in_deg),
+                                     "--phi-in", csv_number(phi_in_deg)};
     args.push_back("--scale");
     args.push_back(options.scale == RadialScale::log ? "log" : options.scale == RadialScale::linear ? "linear" : "auto");
     run_plot_script("lobe_plot.py", args, folder.path());

@@ -1,6 +1,8 @@
 #include "plots/output_file.hpp"
 
 #include <cerrno>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <system_error>
 
@@ -46,6 +48,13 @@ std::string csv_field(const std::string& text) {
         quoted += c;
     }
     return quoted + "\"";
+}
+
+std::string csv_number(double v) {
+    if (!std::isfinite(v)) return "nan";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.7g", v);
+    return text;
 }
 
 }  // namespace lab::plots

@@ -21,4 +21,7 @@ void install_output(const std::filesystem::path& from, const std::string& path, 
 // CSV text field, quoted when it holds a comma, a quote or a line break.
 std::string csv_field(const std::string& text);
 
+// A number as CSV text: 7 significant digits (a float's), "nan" for anything not finite.
+std::string csv_number(double v);
+
 }  // namespace lab::plots

@@ -195,8 +195,6 @@ const std::vector<double> kOmegas = {1.0, 1.2, 1.35, 1.5, 1.65, 1.8, 1.95};
 constexpr int kRaysWide = 64, kRaysHigh = 48;
 constexpr double kTolerableLoss = 0.01;  // the share of rays a setting may lose and still count as agreeing with the reference
 
-std::string percent(double fraction) { return number_text(100.0 * fraction, 2) + " %"; }
-
 const MarchCell& cell_at(const MarchSweep& sweep, double factor, double omega) {
     for (const MarchCell& c : sweep.cells)
         if (c.bound_factor == factor && c.over_relaxation == omega) return c;
@@ -233,9 +231,9 @@ AtlasEntry lost_rays_entry(const fs::path& folder, const std::vector<MarchSweep>
             const MarchCell* most = &cell_at(sweep, kBoundFactors.front(), omega);
             for (double f : kBoundFactors)
                 if (cell_at(sweep, f, omega).lost_fraction() > most->lost_fraction()) most = &cell_at(sweep, f, omega);
-            entry.table.rows.push_back({text_cell(scene_name(sweep)), number_cell(omega, 3), text_cell(percent(cell_at(sweep, 1.0, omega).lost_fraction())),
-                                        text_cell(percent(cell_at(sweep, 0.5, omega).lost_fraction())), text_cell(factor_text(safe_factor(sweep, omega))),
-                                        text_cell(percent(most->lost_fraction())), number_cell(most->bound_factor, 3),
+            entry.table.rows.push_back({text_cell(scene_name(sweep)), number_cell(omega, 3), text_cell(percent_text(cell_at(sweep, 1.0, omega).lost_fraction(), 2)),
+                                        text_cell(percent_text(cell_at(sweep, 0.5, omega).lost_fraction(), 2)), text_cell(factor_text(safe_factor(sweep, omega))),
+                                        text_cell(percent_text(most->lost_fraction(), 2)), number_cell(most->bound_factor, 3),
                                         number_cell(most->wrong_surface, 6), number_cell(most->missed, 6), number_cell(most->out_of_steps, 6)});
         }
         double worst_from_one = 0.0;  // over every setting with a bound at least the scene's
@@ -251,8 +249,8 @@ AtlasEntry lost_rays_entry(const fs::path& folder, const std::vector<MarchSweep>
                       "%s%s: with plain steps (ω 1) every factor from %s up loses at most 1 %% of the rays (%s at 0.5); at 0.4 %s are lost, "
                       "most %s, and %s with ω %.3g; from factor 1 up no setting loses more than %s",
                       finding.empty() ? "" : "; ", scene_name(sweep).c_str(), factor_text(safe_factor(sweep, 1.0)).c_str(),
-                      percent(cell_at(sweep, 0.5, 1.0).lost_fraction()).c_str(), percent(plain_small.lost_fraction()).c_str(), how_lost,
-                      percent(relaxed_small.lost_fraction()).c_str(), kOmegas.back(), percent(worst_from_one).c_str());
+                      percent_text(cell_at(sweep, 0.5, 1.0).lost_fraction(), 2).c_str(), percent_text(plain_small.lost_fraction(), 2).c_str(), how_lost,
+                      percent_text(relaxed_small.lost_fraction(), 2).c_str(), kOmegas.back(), percent_text(worst_from_one, 2).c_str());
         finding += line;
     }
     plots::write_heatmap_chart(panels, kBoundFactors, kOmegas, "bound factor (× the scene's Lipschitz bound)", "over-relaxation ω",
@@ -402,7 +400,7 @@ AtlasEntry precision_entry(const fs::path& folder) {
         const bool any_hit = f.lost < f.rays;
         entry.table.rows.push_back({number_cell(f.distance, 3), any_hit ? number_cell(f.largest, 3) : text_cell("-"),
                                     any_hit ? number_cell(f.median, 3) : text_cell("-"), any_hit ? number_cell(f.threshold, 3) : text_cell("-"),
-                                    number_cell(f.spacing, 3), text_cell(percent(double(f.lost) / f.rays)), number_cell(f.mean_steps, 3)});
+                                    number_cell(f.spacing, 3), text_cell(percent_text(double(f.lost) / f.rays, 2)), number_cell(f.mean_steps, 3)});
     }
     plots::write_curve_chart({largest, median, threshold, spacing, thousandth}, "distance of the sphere's centre from the origin",
                              "hit error / radius", "Float precision: the hit error of a unit sphere far from the origin",
@@ -418,7 +416,7 @@ AtlasEntry precision_entry(const fs::path& folder) {
                   "\"Far from the origin\").",
                   near.largest, near.median, near.threshold, first_coarse ? distance_text(first_coarse->distance).c_str() : "nowhere up to 1e5",
                   first_large ? distance_text(first_large->distance).c_str() : "nowhere up to 1e5",
-                  first_lost ? distance_text(first_lost->distance).c_str() : "nowhere up to 1e5", percent(double(far.lost) / far.rays).c_str(),
+                  first_lost ? distance_text(first_lost->distance).c_str() : "nowhere up to 1e5", percent_text(double(far.lost) / far.rays, 2).c_str(),
                   distance_text(far.distance).c_str(), near.mean_t, last_sound ? distance_text(last_sound->distance).c_str() : "1");
     entry.finding = finding;
     entry.how = "A sphere of radius 1 centred at each distance (1 to 1e5, four per decade) from the origin along (0.6, 0.48, 0.64), "

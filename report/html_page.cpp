@@ -135,4 +135,6 @@ std::string number_text(double value, int digits) {
     return text;
 }
 
+std::string percent_text(double fraction, int digits) { return number_text(100.0 * fraction, digits) + " %"; }
+
 }  // namespace lab::report

@@ -59,6 +59,8 @@ void write_csv(const Table& table, const std::string& path);
 
 // A number for a table: `digits` significant digits, without trailing noise ("0.941", "1.2e+07").
 std::string number_text(double value, int digits = 4);
+// A fraction as a percentage with `digits` significant digits: "12.5 %".
+std::string percent_text(double fraction, int digits);
 
 // Table cells: a number of `digits` significant digits (right-aligned), and text.
 Cell number_cell(double value, int digits = 4);

@@ -59,8 +59,6 @@ Table extremes_table(const std::vector<AtlasExtremes>& extremes) {
 
 constexpr int kStrata = 32;  // 1024 importance samples per estimate: a standard error of a few 1e-3
 
-std::string percent(double fraction) { return number_text(100.0 * fraction, 3) + " %"; }
-
 // A panel of the atlas: a white conductor of this model and distribution, compensated or not.
 struct Method {
     std::string name;
@@ -141,7 +139,7 @@ AtlasEntry energy_entry(const fs::path& folder) {
                   "Single scattering loses up to %s of the light (roughness %.2g, θ %.0f°); energy compensation keeps the albedo within "
                   "[%.3f, %.3f] (the greatest ± %.2g, at θ %.0f°); the 2017 model ranges from %.3f to %.3f, creating energy where it exceeds 1 "
                   "(up to %.2f× at roughness %.2g, θ %.0f°).",
-                  percent(1.0 - single.least).c_str(), single.least_roughness, single.least_theta, compensated.least, compensated.greatest,
+                  percent_text(1.0 - single.least, 3).c_str(), single.least_roughness, single.least_theta, compensated.least, compensated.greatest,
                   compensated.greatest_error, compensated.greatest_theta, old.least, old.greatest, old.greatest, old.greatest_roughness,
                   old.greatest_theta);
     entry.finding = finding;

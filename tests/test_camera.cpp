@@ -114,7 +114,7 @@ TEST_CASE("camera: camera rays and lens connections invert each other", "[camera
             REQUIRE(glm::length(s.wi + direction) < 1e-5f);
             REQUIRE(s.distance == Approx(glm::length(to_p)).epsilon(1e-5));
             // the importance of that ray and its raster
-            kernel::float2 raster;
+            kernel::float2 raster(0.0f);
             REQUIRE(kernel::camera_importance(&c, origin, direction, &raster) == Approx(s.importance).epsilon(1e-4));
             REQUIRE(std::fabs(raster.x - s.raster.x) < 2e-3f);
             REQUIRE(std::fabs(raster.y - s.raster.y) < 2e-3f);
@@ -153,7 +153,7 @@ TEST_CASE("camera: W_e and its pdf are normalised over the film's directions", "
             for (int k = 0; k < phis; ++k) {
                 const double phi = (k + 0.5) * 2.0 * kPi / phis;
                 const float3 w(f * std::cos(theta) + (r * std::cos(phi) + u * std::sin(phi)) * std::sin(theta));
-                kernel::float2 raster;
+                kernel::float2 raster(0.0f);
                 const float importance = kernel::camera_importance(&c, lens, w, &raster);
                 we += importance * std::cos(theta) * cell;
                 float pdf_pos, pdf_dir;

@@ -59,8 +59,7 @@ Material case_material(const RoundTripCase& c) {
 // The test's pairs and starts are fewer than the command's defaults (docs/fitting.md) to keep it
 // cheap; the data are noise-free and the model holds the truth, so the tolerances are the fit's
 // stated accuracy (docs/fitting.md): 5 % in roughness, 2 % in each albedo channel.
-// [sweep]: 7 s of CPU in the plain build; the sanitized run covers the same code through the short
-// search of the test below.
+// [sweep]: 7 s of CPU, a ctest test of its own (docs/testing.md).
 TEST_CASE("fit: MERL files made from known lab materials give their roughness and albedo back", "[fit][sweep]") {
     const RoundTripCase cases[] = {
         {"ggx_smooth", BRDF_DISTRIBUTION_GGX, {0.70f, 0.40f, 0.20f}, 0.30f, 0.6f, 0.04f, 2.0f},

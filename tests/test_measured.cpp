@@ -158,7 +158,7 @@ TEST_CASE("a measured material is reciprocal", "[measured][reciprocity]") {
     CHECK(r.max_relative_error <= 2e-4);
 }
 
-// [sweep]: the sanitized run covers the same sampler code with the efficiency test below.
+// [sweep]: a ctest test of its own (docs/testing.md).
 TEST_CASE("the measured sampler's pdf matches its samples (chi-square)", "[measured][chi_square][sweep]") {
     const Fixture& f = fixture();
     // normal incidence (where wo has no azimuth of its own), middle, grazing

@@ -60,7 +60,7 @@ TEST_CASE("Welch's t-test rejects equal means at its level and finds a real diff
 
 TEST_CASE("region t-test: regions tile the image, and a brighter region-channel is the one rejected", "[validation][welch]") {
     // the host code of the renderers' region comparison (validation/region_t_test.hpp) on noise images,
-    // cheap enough for the sanitized run (the Cornell box comparison runs it in the plain build only).
+    // cheap: noise images instead of renders.
     // 7 x 5 pixels in 3 x 2 regions: the regions' integer bounds do not divide the image evenly.
     lab::validation::UniformRandom rng(5);
     const int width = 7, height = 5, renders = 6;

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace lab::viewer {
+#include "common/angles.hpp"
 
-namespace {
-constexpr float kRadians = 3.14159265358979323846f / 180.0f;
-}
+namespace lab::viewer {
 
 void orbit(scene::Camera* c, float dx, float dy) {
     const scene::Vec3 up = glm::normalize(c->up);
@@ -18,9 +16,9 @@ void orbit(scene::Camera* c, float dx, float dy) {
     auto rotate = [](scene::Vec3 v, scene::Vec3 axis, float angle) {
         return v * std::cos(angle) + glm::cross(axis, v) * std::sin(angle) + axis * glm::dot(axis, v) * (1.0f - std::cos(angle));
     };
-    offset = rotate(offset, up, -dx * 0.4f * kRadians);
+    offset = rotate(offset, up, -dx * 0.4f * kRadiansPerDegree);
     const float elevation = std::asin(std::clamp(glm::dot(offset / distance, up), -1.0f, 1.0f));
-    const float pitch = std::clamp(elevation + dy * 0.4f * kRadians, -85.0f * kRadians, 85.0f * kRadians) - elevation;
+    const float pitch = std::clamp(elevation + dy * 0.4f * kRadiansPerDegree, -85.0f * kRadiansPerDegree, 85.0f * kRadiansPerDegree) - elevation;
     const scene::Vec3 right = glm::normalize(glm::cross(up, offset));
     offset = rotate(offset, right, -pitch);
     c->position = c->look_at + offset;
@@ -32,7 +30,7 @@ void pan(scene::Camera* c, float dx, float dy, int image_width) {
     if (!(distance > 0.0f) || image_width < 1) return;
     const scene::Vec3 right = glm::normalize(glm::cross(forward, c->up));
     const scene::Vec3 up = glm::normalize(glm::cross(right, forward));
-    const float per_pixel = 2.0f * distance * std::tan(0.5f * c->fov_degrees * kRadians) / float(image_width);
+    const float per_pixel = 2.0f * distance * std::tan(0.5f * c->fov_degrees * kRadiansPerDegree) / float(image_width);
     const scene::Vec3 move = (-right * dx + up * dy) * per_pixel;
     c->position += move;
     c->look_at += move;

@@ -7,13 +7,12 @@
 #include <imgui.h>
 
 #include "analysis/luminance.hpp"
+#include "common/angles.hpp"
 
 namespace lab::viewer {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979323846f;
-constexpr float kRadians = kPi / 180.0f;
 const ImU32 kColour[2] = {IM_COL32(255, 170, 60, 255), IM_COL32(90, 200, 255, 255)};  // A orange, B blue
 
 // Fewer points than the command's plots: the panel redraws while the user drags.
@@ -111,16 +110,16 @@ void LobePanel::draw_polar(const Result& r) {
             std::vector<ImVec2> points;
             for (const analysis::PlaneSample& s : r.lobe[k].plane) {
                 float rr = std::isfinite(s.value) ? s.value / peak * radius : 0.0f;
-                points.emplace_back(centre.x + std::sin(s.angle_deg * kRadians) * rr, centre.y - std::cos(s.angle_deg * kRadians) * rr);
+                points.emplace_back(centre.x + std::sin(s.angle_deg * kRadiansPerDegree) * rr, centre.y - std::cos(s.angle_deg * kRadiansPerDegree) * rr);
             }
             dl->AddPolyline(points.data(), int(points.size()), kColour[k], 0, 1.5f);
             for (const analysis::DeltaLobe& d : r.lobe[k].deltas)
                 if (d.in_plane)
-                    dl->AddLine(centre, ImVec2(centre.x + std::sin(d.plane_angle_deg * kRadians) * radius,
-                                               centre.y - std::cos(d.plane_angle_deg * kRadians) * radius), kColour[k], 2.5f);
+                    dl->AddLine(centre, ImVec2(centre.x + std::sin(d.plane_angle_deg * kRadiansPerDegree) * radius,
+                                               centre.y - std::cos(d.plane_angle_deg * kRadiansPerDegree) * radius), kColour[k], 2.5f);
         }
     }
-    const float t = theta_in_ * kRadians;
+    const float t = theta_in_ * kRadiansPerDegree;
     dl->AddLine(centre, ImVec2(centre.x - std::sin(t) * radius, centre.y - std::cos(t) * radius), IM_COL32(255, 255, 255, 255), 2.0f);
     char caption[160];
     std::snprintf(caption, sizeof caption, "plane of incidence (drag: theta in)\nf cos, one scale for A and B: rim %.3g /sr%s", peak,
@@ -128,7 +127,7 @@ void LobePanel::draw_polar(const Result& r) {
     dl->AddText(ImVec2(o.x + 4, o.y + 2), IM_COL32(200, 200, 200, 255), caption);
     if (dragging) {
         float dx = mouse.x - centre.x, dy = centre.y - mouse.y;
-        float theta = std::atan2(std::fabs(dx), std::max(dy, 0.0f)) / kRadians;
+        float theta = std::atan2(std::fabs(dx), std::max(dy, 0.0f)) / kRadiansPerDegree;
         theta_in_ = std::min(std::max(theta, 0.0f), 89.0f);
         recompute();
     }
@@ -151,16 +150,16 @@ void LobePanel::draw_3d(const Result& r) {
     float peak = 0.0f;
     for (const analysis::LobeData& l : r.lobe)
         for (const analysis::LobeSample& s : l.grid) {
-            float v = analysis::luminance(s.f) * std::fabs(std::cos(s.theta_deg * kRadians));
+            float v = analysis::luminance(s.f) * std::fabs(std::cos(s.theta_deg * kRadiansPerDegree));
             if (std::isfinite(v)) peak = std::max(peak, v);
         }
-    const float cy = std::cos(yaw_ * kRadians), sy = std::sin(yaw_ * kRadians);
-    const float cp = std::cos(pitch_ * kRadians), sp = std::sin(pitch_ * kRadians);
+    const float cy = std::cos(yaw_ * kRadiansPerDegree), sy = std::sin(yaw_ * kRadiansPerDegree);
+    const float cp = std::cos(pitch_ * kRadiansPerDegree), sp = std::sin(pitch_ * kRadiansPerDegree);
     auto project = [&](const analysis::LobeSample& s) {
-        float v = analysis::luminance(s.f) * std::fabs(std::cos(s.theta_deg * kRadians));
+        float v = analysis::luminance(s.f) * std::fabs(std::cos(s.theta_deg * kRadiansPerDegree));
         float rr = (peak > 0.0f && std::isfinite(v)) ? v / peak : 0.0f;
-        float st = std::sin(s.theta_deg * kRadians), ct = std::cos(s.theta_deg * kRadians);
-        float x = rr * st * std::cos(s.phi_deg * kRadians), y = rr * st * std::sin(s.phi_deg * kRadians), z = rr * ct;
+        float st = std::sin(s.theta_deg * kRadiansPerDegree), ct = std::cos(s.theta_deg * kRadiansPerDegree);
+        float x = rr * st * std::cos(s.phi_deg * kRadiansPerDegree), y = rr * st * std::sin(s.phi_deg * kRadiansPerDegree), z = rr * ct;
         float x1 = cy * x - sy * y, y1 = sy * x + cy * y;  // yaw about the normal
         float up = cp * z - sp * y1;                         // pitch towards the viewer
         return ImVec2(centre.x + x1 * scale, centre.y - up * scale);
