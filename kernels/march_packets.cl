@@ -141,11 +141,14 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
  * the rays, granules .. 2 granules - 1 the shadow rays (granules: `pixels` in granules of
  * MARCH_RAYS_PER_ITEM), and the host launches only the half that has rays when the other has none.
  * A launch costs some fifty microseconds on a CPU, a tenth of a step of a simple scene. Work-item g
- * of its half marches rays MARCH_RAYS_PER_ITEM g ... up to `pixels` (march_granule). */
+ * of its half marches rays MARCH_RAYS_PER_ITEM g ... up to `pixels` (march_granule). A launch's
+ * first work-item is `first_item`, not a global offset: PoCL compiles a kernel once more for
+ * launches at an offset (its work-group functions are specialised for offset 0), and the shadow
+ * half alone starts at `granules`. */
 __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, __global const float* path_rays, __global RayMarch* path_marches,
-                         __global const float* shadow_rays, __global RayMarch* shadow_marches) {
+                         __global const float* shadow_rays, __global RayMarch* shadow_marches, int first_item) {
     const int granules = (pixels + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
-    const int item = (int)get_global_id(0);
+    const int item = first_item + (int)get_global_id(0);
     const bool shadow = item >= granules;
     const int first = (shadow ? item - granules : item) * MARCH_RAYS_PER_ITEM;
     march_granule(render_march_settings(&settings), first, min(first + MARCH_RAYS_PER_ITEM, pixels), stride, shadow ? shadow_rays : path_rays,

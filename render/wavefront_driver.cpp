@@ -112,9 +112,11 @@ cl_uint WavefrontDriver::bind_step(const WavefrontTarget& target, const opencl::
     return a;
 }
 
-// march_rays' work-items: the rays' granules, then the shadow rays'.
-void WavefrontDriver::launch_packets(PixelRange packets, size_t total) const {
-    launch_range(runtime_, march_rays_, packets, kPacketLocal, total);
+// march_rays' work-items: the rays' granules, then the shadow rays'; the first one as an argument
+// (kernels/march_packets.cl says why), after the seven set_kernel_args gives.
+void WavefrontDriver::launch_packets(PixelRange packets) const {
+    opencl::set_kernel_arg(march_rays_, 7, cl_int(packets.first));
+    runtime_.launch_1d(march_rays_, size_t(packets.count), kPacketLocal);
 }
 
 void WavefrontDriver::ended(WavefrontLaunch kind, Clock::time_point start, bool wait) {
@@ -134,7 +136,7 @@ void WavefrontDriver::launch_camera_rays(const WavefrontTarget& target, const ke
         ended(WavefrontLaunch::camera_step, camera_start);
         const Clock::time_point march_start = Clock::now();
         opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
-        launch_packets(r.packets, 2 * size_t(r.granules));
+        launch_packets(r.packets);
         ended(WavefrontLaunch::camera_march, march_start);
     } else {
         opencl::set_kernel_args(march_camera_rays_, settings, *target.camera, r.path_count, stride_, path_rays_, camera_rngs_, ray_marches_);
@@ -146,7 +148,6 @@ void WavefrontDriver::launch_camera_rays(const WavefrontTarget& target, const ke
 // Per step the host waits once, for the step's two flags (a ray left, a shadow ray left), and
 // launches one march of what is left.
 void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r) {
-    const size_t packet_total = 2 * size_t(r.granules);
     for (int iteration = 1;; ++iteration) {
         const Clock::time_point step_start = Clock::now();
         // max_depth scattering events, and the last shadow ray one step later
@@ -163,10 +164,10 @@ void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::
         const Clock::time_point march_start = Clock::now();
         opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
         if (unfinished[0] != 0 && unfinished[1] != 0 && r.packets.count == r.granules)
-            launch_packets(PixelRange{0, 2 * r.granules}, packet_total);  // both, in one launch
+            launch_packets(PixelRange{0, 2 * r.granules});  // both, in one launch
         else {
-            if (unfinished[0] != 0) launch_packets(r.packets, packet_total);
-            if (unfinished[1] != 0) launch_packets(r.shadow_packets, packet_total);
+            if (unfinished[0] != 0) launch_packets(r.packets);
+            if (unfinished[1] != 0) launch_packets(r.shadow_packets);
         }
         ended(WavefrontLaunch::march, march_start);
     }
