@@ -48,7 +48,7 @@ SS_FN bool energy_is_anisotropic(Microfacet mf) { return mf.kind == BRDF_DISTRIB
 /* The fractional ratio and roughness node coordinates of mf (alpha_x >= alpha_y after the swap). */
 SS_FN float2 energy_anisotropic_coordinates(float ax, float ay) {
     float q = ay / ax, r = sqrt(sqrt(0.5f * (ax * ax + ay * ay)));
-    return make_float2(clamp(q, 0.0f, 1.0f) * (float)(ANISO_GRID_RATIO - 1),
+    return make_float2(anisotropic_grid_ratio_coordinate(q),
                        energy_grid_node_coordinate(r, 0.0f, ANISO_GRID_ROUGHNESS_MAX, ANISO_GRID_ROUGHNESS));
 }
 
