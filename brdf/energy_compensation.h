@@ -48,7 +48,7 @@ SS_FN bool energy_is_anisotropic(Microfacet mf) { return mf.kind == BRDF_DISTRIB
 /* The fractional ratio and roughness node coordinates of mf (alpha_x >= alpha_y after the swap). */
 SS_FN float2 energy_anisotropic_coordinates(float ax, float ay) {
     float q = ay / ax, r = sqrt(sqrt(0.5f * (ax * ax + ay * ay)));
-    return make_float2(clamp(q, 0.0f, 1.0f) * (float)(ANISO_GRID_RATIO - 1),
+    return make_float2(anisotropic_grid_ratio_coordinate(q),
                        energy_grid_node_coordinate(r, 0.0f, ANISO_GRID_ROUGHNESS_MAX, ANISO_GRID_ROUGHNESS));
 }
 
@@ -62,7 +62,10 @@ SS_FN float energy_azimuth(float x, float y) {
     return y > x ? 0.5f * SS_PI - a : a;
 }
 
-/* E(w) of an anisotropic GGX distribution: the table interpolated in ratio, azimuth, roughness and mu. */
+/* E(w) of an anisotropic GGX distribution: the table interpolated in ratio, azimuth, roughness and mu.
+ * It interpolates 1 - E, what compensation gives back: near grazing on smooth lobes E is within 1e-4 of
+ * 1, where the interpolation's last bits, which the OpenCL build rounds otherwise (contracted
+ * multiply-adds), would be a relative error of 1e-3 in 1 - E; 1 - E of a node is exact. */
 SS_FN float energy_anisotropic_albedo(Microfacet mf, float3 w) {
     float ax = mf.ax, ay = mf.ay, wx = fabs(w.x), wy = fabs(w.y);
     if (ay > ax) {
@@ -73,15 +76,17 @@ SS_FN float energy_anisotropic_albedo(Microfacet mf, float3 w) {
     p = clamp(p, 0.0f, (float)(ANISO_GRID_PHI - 1));
     float m = energy_grid_mu_coordinate_of(w.z, ANISO_GRID_MU);
     int k = min((int)c.x, ANISO_GRID_RATIO - 2), l = min((int)p, ANISO_GRID_PHI - 2), i = min((int)c.y, ANISO_GRID_ROUGHNESS - 2);
-    float tk = c.x - (float)k, tl = p - (float)l, ti = c.y - (float)i, e = 0.0f;
+    int j = min((int)m, ANISO_GRID_MU - 2);
+    float tk = c.x - (float)k, tl = p - (float)l, ti = c.y - (float)i, tj = m - (float)j, lost = 0.0f;
     for (int dk = 0; dk < 2; ++dk)
         for (int dl = 0; dl < 2; ++dl)
             for (int di = 0; di < 2; ++di) {
                 float weight = (dk ? tk : 1.0f - tk) * (dl ? tl : 1.0f - tl) * (di ? ti : 1.0f - ti);
-                int row = (((k + dk) * ANISO_GRID_PHI + l + dl) * ANISO_GRID_ROUGHNESS + i + di) * ANISO_GRID_MU;
-                e += weight * energy_grid_lerp_albedo(energy_ggx_anisotropic_albedo + row, ANISO_GRID_MU, m);
+                CONSTANT_MEM const ushort* at =
+                    energy_ggx_anisotropic_albedo + (((k + dk) * ANISO_GRID_PHI + l + dl) * ANISO_GRID_ROUGHNESS + i + di) * ANISO_GRID_MU + j;
+                lost += weight * mix(1.0f - energy_grid_albedo_value(at, 0), 1.0f - energy_grid_albedo_value(at, 1), tj);
             }
-    return e;
+    return 1.0f - lost;
 }
 
 /* E_avg of an anisotropic GGX distribution, interpolated in ratio and roughness like E above, so that

@@ -29,16 +29,31 @@ SS_FN float energy_grid_shape(int k) {
 
 /* The anisotropic GGX table (brdf/energy_table_ggx_anisotropic.h): E(w) over [ratio][phi][roughness][mu]
  * and E_avg over [ratio][roughness], for alpha_x >= alpha_y (the lookup swaps the axes otherwise).
- * ratio q = alpha_y / alpha_x at nodes k / 4; the azimuth phi of w from the longer axis at nodes even
+ * ratio q = alpha_y / alpha_x at nodes 0, 0.1, 0.25, 0.5, 0.75, 1: near grazing E dips between q = 0
+ * and 0.25, which nodes even in q cut across; the azimuth phi of w from the longer axis at nodes even
  * over [0, pi / 2] (E is even about both axes); roughness sqrt(alpha_rms), alpha_rms^2 = (alpha_x^2 +
  * alpha_y^2) / 2, at nodes even over [0, 1.5], which covers the lab model's Disney mapping (up to 1.499)
- * and OpenPBR's (alpha_rms = roughness^2, so at most 1); mu even in sqrt(mu) like the others. 15 KB in
- * all, which keeps every table a kernel can hold under the 64 KB of __constant memory. */
-#define ANISO_GRID_RATIO 5
+ * and OpenPBR's (alpha_rms = roughness^2, so at most 1); mu even in sqrt(mu) like the others. 18.4 KB in
+ * all, which keeps every table a kernel can hold under the 64 KB of __constant memory (docs/materials.md). */
+#define ANISO_GRID_RATIO 6
 #define ANISO_GRID_PHI 6
 #define ANISO_GRID_ROUGHNESS 16
 #define ANISO_GRID_MU 16
 #define ANISO_GRID_ROUGHNESS_MAX 1.5f
+
+/* The ratio q at fractional ratio node coordinate x, and the coordinate of q, piecewise linear through
+ * the nodes 0, 0.1, 0.25, 0.5, 0.75, 1. */
+SS_FN float anisotropic_grid_ratio(float x) {
+    if (x < 1.0f) return 0.1f * x;
+    if (x < 2.0f) return 0.1f + 0.15f * (x - 1.0f);
+    return 0.25f * (x - 1.0f);
+}
+SS_FN float anisotropic_grid_ratio_coordinate(float q) {
+    q = clamp(q, 0.0f, 1.0f);
+    if (q < 0.1f) return 10.0f * q;
+    if (q < 0.25f) return 1.0f + (q - 0.1f) * (1.0f / 0.15f);
+    return 1.0f + 4.0f * q;
+}
 
 /* alpha_x and alpha_y of ratio node coordinate q (alpha_y / alpha_x) and rms roughness r. */
 SS_FN float anisotropic_grid_alpha_x(float q, float r) { return r * r * sqrt(2.0f / (1.0f + q * q)); }

@@ -144,6 +144,25 @@ TEST_CASE("energy tables: the committed tables are what the generator writes", "
         }, DIELECTRIC_GRID_ROUGHNESS, DIELECTRIC_GRID_MU, i,
                   brdf::energy_dielectric_albedo + (side * DIELECTRIC_GRID_IOR + k) * DIELECTRIC_GRID_ROUGHNESS * DIELECTRIC_GRID_MU);
     }
+    // the anisotropic GGX table's: a row needs the estimates at the half nodes around it in ratio and azimuth too
+    const int aniso_per_node = ANISO_GRID_ROUGHNESS * ANISO_GRID_MU;
+    for (int row : energy_table_rows_of_run("ggx anisotropic [ratio][phi][roughness]", ANISO_GRID_RATIO * ANISO_GRID_PHI * ANISO_GRID_ROUGHNESS, 1)) {
+        const int k = row / (ANISO_GRID_PHI * ANISO_GRID_ROUGHNESS), l = row / ANISO_GRID_ROUGHNESS % ANISO_GRID_PHI, i = row % ANISO_GRID_ROUGHNESS;
+        const std::vector<float> regenerated = anisotropic_table_row(k, l, i, kEnergyTableStrata, 2);
+        const unsigned short* committed = brdf::energy_ggx_anisotropic_albedo + (k * ANISO_GRID_PHI + l) * aniso_per_node + i * ANISO_GRID_MU;
+        const std::string where = "ratio node " + std::to_string(k) + ", azimuth node " + std::to_string(l) + ", roughness node " + std::to_string(i);
+        check_energy_table_entries(regenerated, committed, where);
+        // the check fails on the row with one entry two steps lower
+        std::vector<unsigned short> broken(committed, committed + ANISO_GRID_MU);
+        const int j = int(std::min_element(broken.begin(), broken.end()) - broken.begin());
+        broken[size_t(j)] = static_cast<unsigned short>(broken[size_t(j)] - 2);
+        CHECK(energy_table_entries_off(regenerated, broken.data(), where + " (broken)") == 1);
+    }
+    std::vector<float> aniso(size_t(ANISO_GRID_RATIO * ANISO_GRID_PHI * aniso_per_node));
+    for (size_t e = 0; e < aniso.size(); ++e) aniso[e] = brdf::energy_grid_albedo_value(brdf::energy_ggx_anisotropic_albedo, int(e));
+    for (int k = 0; k < ANISO_GRID_RATIO; ++k)
+        for (int i = 0; i < ANISO_GRID_ROUGHNESS; ++i)
+            CHECK(brdf::energy_ggx_anisotropic_average[k * ANISO_GRID_ROUGHNESS + i] == Approx(anisotropic_table_average(aniso, k, i)).margin(2e-7));
 }
 
 TEST_CASE("energy tables: dielectric entries agree with quadrature, which no sampler enters", "[energy_compensation][sweep]") {

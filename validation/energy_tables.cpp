@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <functional>
 #include <initializer_list>
+#include <map>
 #include <utility>
 #include <sstream>
 
@@ -273,60 +274,83 @@ EnergyTables compute_energy_tables(int strata, int threads) {
     return t;
 }
 
-AnisotropicTables compute_anisotropic_tables(int strata, int threads) {
-    const int nq = ANISO_GRID_RATIO, np = ANISO_GRID_PHI, per = ANISO_GRID_ROUGHNESS * ANISO_GRID_MU;
-    // slices at every half node in ratio and azimuth: (2 nq - 1) x (2 np - 1), each lifted in roughness and mu
-    std::vector<std::vector<float>> half(size_t((2 * nq - 1) * (2 * np - 1)));
-    for (int hq = 0; hq < 2 * nq - 1; ++hq)
-        for (int hp = 0; hp < 2 * np - 1; ++hp) {
-            float ratio = 0.5f * float(hq) / float(nq - 1), phi = 0.25f * float(M_PI) * float(hp) / float(np - 1);
-            half[size_t(hq * (2 * np - 1) + hp)] = energy_slice([&](float r, float mu) {
-                return anisotropic_albedo(ratio, phi, r * ANISO_GRID_ROUGHNESS_MAX, mu, strata);
-            }, ANISO_GRID_ROUGHNESS, ANISO_GRID_MU, threads, 0, ANISO_GRID_ROUGHNESS - 1);
-        }
-    auto at = [&](int hq, int hp) -> const std::vector<float>& { return half[size_t(hq * (2 * np - 1) + hp)]; };
-    // raise the nodes around each midpoint (in azimuth, in ratio, and the cell's centre) by how far it lies above their interpolant
-    std::vector<float> lift(size_t(nq * np * per), 0.0f);
-    auto raise = [&](std::initializer_list<std::pair<int, int>> nodes, const std::vector<float>& mid) {
-        for (int e = 0; e < per; ++e) {
+namespace {
+
+// E at the half nodes (hq / 2, hp / 2) in ratio and azimuth: rows first to last of energy_slice() over roughness and mu
+std::vector<float> anisotropic_half_slice(int hq, int hp, int first, int last, int strata, int threads) {
+    float ratio = brdf::anisotropic_grid_ratio(0.5f * float(hq)), phi = 0.25f * float(M_PI) * float(hp) / float(ANISO_GRID_PHI - 1);
+    return energy_slice([&](float r, float mu) { return anisotropic_albedo(ratio, phi, r * ANISO_GRID_ROUGHNESS_MAX, mu, strata); },
+                        ANISO_GRID_ROUGHNESS, ANISO_GRID_MU, threads, first, last);
+}
+
+}  // namespace
+
+std::vector<float> anisotropic_node_entries(int k, int l, const std::function<const std::vector<float>&(int hq, int hp)>& at) {
+    const std::vector<float>& own = at(2 * k, 2 * l);
+    std::vector<float> lift(own.size(), 0.0f);
+    // the group of nodes k0 .. k0 + dk, l0 .. l0 + dl (a pair in azimuth or in ratio, or a cell) and its midpoint
+    auto raise = [&](int k0, int l0, int dk, int dl) {
+        if (k0 < 0 || l0 < 0 || k0 + dk >= ANISO_GRID_RATIO || l0 + dl >= ANISO_GRID_PHI) return;
+        const std::vector<float>& mid = at(2 * k0 + dk, 2 * l0 + dl);
+        for (size_t e = 0; e < own.size(); ++e) {
             double mean = 0.0;
-            for (auto [k, l] : nodes) mean += at(2 * k, 2 * l)[size_t(e)];
-            double deficit = std::fmin(double(mid[size_t(e)]), 1.0) - mean / double(nodes.size());
-            for (auto [k, l] : nodes) {
-                float& v = lift[size_t((k * np + l) * per + e)];
-                v = std::fmax(v, float(deficit));
-            }
+            for (int a = 0; a <= dk; ++a)
+                for (int b = 0; b <= dl; ++b) mean += at(2 * (k0 + a), 2 * (l0 + b))[e];
+            lift[e] = std::fmax(lift[e], float(std::fmin(double(mid[e]), 1.0) - mean / double((dk + 1) * (dl + 1))));
         }
     };
-    for (int k = 0; k < nq; ++k)
-        for (int l = 0; l < np; ++l) {
-            if (l + 1 < np) raise({{k, l}, {k, l + 1}}, at(2 * k, 2 * l + 1));
-            if (k + 1 < nq) raise({{k, l}, {k + 1, l}}, at(2 * k + 1, 2 * l));
-            if (k + 1 < nq && l + 1 < np) raise({{k, l}, {k, l + 1}, {k + 1, l}, {k + 1, l + 1}}, at(2 * k + 1, 2 * l + 1));
-        }
-    AnisotropicTables t;
-    for (int k = 0; k < nq; ++k)
-        for (int l = 0; l < np; ++l)
-            for (int e = 0; e < per; ++e)
-                t.albedo.push_back(std::fmin(at(2 * k, 2 * l)[size_t(e)] + lift[size_t((k * np + l) * per + e)], 1.0f));
-    round_up(t.albedo);
+    for (int dk = 0; dk <= 1; ++dk)
+        for (int dl = 0; dl <= 1; ++dl)
+            if (dk + dl > 0)
+                for (int a = 0; a <= dk; ++a)
+                    for (int b = 0; b <= dl; ++b) raise(k - a, l - b, dk, dl);
+    std::vector<float> out(own.size());
+    for (size_t e = 0; e < own.size(); ++e) out[e] = std::fmin(own[e] + lift[e], 1.0f);
+    return out;
+}
+
+std::vector<float> anisotropic_table_row(int k, int l, int i, int strata, int threads) {
+    std::map<std::pair<int, int>, std::vector<float>> slices;
+    return anisotropic_node_entries(k, l, [&](int hq, int hp) -> const std::vector<float>& {
+        auto found = slices.find({hq, hp});
+        if (found == slices.end()) found = slices.emplace(std::make_pair(hq, hp), anisotropic_half_slice(hq, hp, i, i, strata, threads)).first;
+        return found->second;
+    });
+}
+
+float anisotropic_table_average(const std::vector<float>& albedo, int k, int i) {
     // the mean over phi of the interpolant, linear in phi between the nodes: node l's weight is the mean of its hat function
+    const int np = ANISO_GRID_PHI, n_phi = 1 << 14;
     std::vector<double> weight(size_t(np), 0.0);
-    const int n_phi = 1 << 14;
     for (int j = 0; j < n_phi; ++j) {
         double u = (j + 0.5) / n_phi * (np - 1);
         int l = std::min(int(u), np - 2);
         weight[size_t(l)] += (l + 1 - u) / n_phi;
         weight[size_t(l) + 1] += (u - l) / n_phi;
     }
+    double sum = 0.0;
+    for (int l = 0; l < np; ++l)
+        sum += weight[size_t(l)] * average_albedo(albedo.data() + size_t(((k * np + l) * ANISO_GRID_ROUGHNESS + i) * ANISO_GRID_MU), ANISO_GRID_MU);
+    return float(sum);
+}
+
+AnisotropicTables compute_anisotropic_tables(int strata, int threads) {
+    const int nq = ANISO_GRID_RATIO, np = ANISO_GRID_PHI;
+    // slices at every half node in ratio and azimuth: (2 nq - 1) x (2 np - 1), each lifted in roughness and mu
+    std::vector<std::vector<float>> half(size_t((2 * nq - 1) * (2 * np - 1)));
+    for (int hq = 0; hq < 2 * nq - 1; ++hq)
+        for (int hp = 0; hp < 2 * np - 1; ++hp)
+            half[size_t(hq * (2 * np - 1) + hp)] = anisotropic_half_slice(hq, hp, 0, ANISO_GRID_ROUGHNESS - 1, strata, threads);
+    auto at = [&](int hq, int hp) -> const std::vector<float>& { return half[size_t(hq * (2 * np - 1) + hp)]; };
+    AnisotropicTables t;
     for (int k = 0; k < nq; ++k)
-        for (int i = 0; i < ANISO_GRID_ROUGHNESS; ++i) {
-            double sum = 0.0;
-            for (int l = 0; l < np; ++l)
-                sum += weight[size_t(l)] *
-                       average_albedo(t.albedo.data() + size_t(((k * np + l) * ANISO_GRID_ROUGHNESS + i) * ANISO_GRID_MU), ANISO_GRID_MU);
-            t.average.push_back(float(sum));
+        for (int l = 0; l < np; ++l) {
+            std::vector<float> node = anisotropic_node_entries(k, l, at);
+            t.albedo.insert(t.albedo.end(), node.begin(), node.end());
         }
+    round_up(t.albedo);
+    for (int k = 0; k < nq; ++k)
+        for (int i = 0; i < ANISO_GRID_ROUGHNESS; ++i) t.average.push_back(anisotropic_table_average(t.albedo, k, i));
     return t;
 }
 

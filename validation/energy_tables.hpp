@@ -75,6 +75,14 @@ struct AnisotropicTables {
 // The slices over roughness and mu come from energy_slice(); the azimuth and the ratio are made
 // conservative the same way, by E at the midpoints between their nodes (and the cells' centres).
 AnisotropicTables compute_anisotropic_tables(int strata, int threads);
+// Node (k, l)'s entries (ratio, azimuth): at(hq, hp) is the slice at half node (hq / 2, hp / 2), and the
+// node's own slice is raised by the largest deficit of the midpoints beside it (before rounding up).
+std::vector<float> anisotropic_node_entries(int k, int l, const std::function<const std::vector<float>&(int hq, int hp)>& at);
+// The entries of the table's row [k][l][i][*] (ANISO_GRID_MU of them, before rounding up), from the
+// estimates that row needs alone: what the generator writes there.
+std::vector<float> anisotropic_table_row(int k, int l, int i, int strata, int threads);
+// E_avg [k][i] of an albedo table [ratio][phi][roughness][mu]: the hemispherical average of its interpolant.
+float anisotropic_table_average(const std::vector<float>& albedo, int k, int i);
 std::string anisotropic_table_header(const AnisotropicTables& tables, int strata);
 
 struct OpenPbrTables {
