@@ -28,6 +28,8 @@
 #include "tests/render_inputs.hpp"
 
 
+// A named namespace keeps the using-directive to this file in its unity group (tests/CMakeLists.txt).
+namespace bdpt_mis_test {
 namespace {
 
 using namespace lab::render::host_kernels;
@@ -271,3 +273,5 @@ TEST_CASE("BDPT: the MIS weights of all strategies that can make a walked path s
     CHECK(totals.environment_unreached > 20);
     CHECK(totals.delta > 50);
 }
+
+}  // namespace bdpt_mis_test

@@ -13,6 +13,8 @@
 #include "validation/albedo.hpp"
 #include "validation/energy_tables.hpp"
 
+// A named namespace keeps the using-directive to this file in its unity group (tests/CMakeLists.txt).
+namespace energy_anisotropic_test {
 using namespace lab::validation;
 
 namespace {
@@ -136,3 +138,5 @@ TEST_CASE("anisotropic energy table: E_avg is the hemispherical average of the i
         }
     std::printf("anisotropic energy table: largest |E_avg - average of E(w)| %.2g\n", worst);
 }
+
+}  // namespace energy_anisotropic_test

@@ -16,6 +16,8 @@
 #include "common/input_error.hpp"
 
 namespace fs = std::filesystem;
+// A named namespace keeps the using-directive to this file in its unity group (tests/CMakeLists.txt).
+namespace merl_file_test {
 using namespace brdf;  // the single-source names (float3, HalfDiffAngles, merl_*) live in namespace brdf
 
 namespace {
@@ -205,3 +207,5 @@ TEST_CASE("entries MERL marks unmeasured (-1 in every channel) are masked and fi
     }
     fs::remove(path);
 }
+
+}  // namespace merl_file_test

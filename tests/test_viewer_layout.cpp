@@ -7,6 +7,8 @@
 
 #include "viewer/window_layout.hpp"
 
+// A named namespace keeps the using-directive to this file in its unity group (tests/CMakeLists.txt).
+namespace viewer_layout_test {
 using namespace lab::viewer;
 
 namespace {
@@ -113,3 +115,5 @@ TEST_CASE("Viewer layout: open sections share a column's height", "[viewer][layo
     CHECK(share_heights({300, 300}, 100, 90) == std::vector<float>{90, 90});
     CHECK(share_heights({}, 100, 90).empty());
 }
+
+}  // namespace viewer_layout_test
