@@ -62,10 +62,8 @@ SS_FN float energy_azimuth(float x, float y) {
     return y > x ? 0.5f * SS_PI - a : a;
 }
 
-/* E(w) of an anisotropic GGX distribution: the table interpolated in ratio, azimuth, roughness and mu.
- * It interpolates 1 - E, what compensation gives back: near grazing on smooth lobes E is within 1e-4 of
- * 1, where the interpolation's last bits, which the OpenCL build rounds otherwise (contracted
- * multiply-adds), would be a relative error of 1e-3 in 1 - E; 1 - E of a node is exact. */
+/* E(w) of an anisotropic GGX distribution: the table interpolated in ratio, azimuth, roughness and mu,
+ * as 1 - E (energy_grid_lerp_lost says why). */
 SS_FN float energy_anisotropic_albedo(Microfacet mf, float3 w) {
     float ax = mf.ax, ay = mf.ay, wx = fabs(w.x), wy = fabs(w.y);
     if (ay > ax) {
@@ -76,15 +74,13 @@ SS_FN float energy_anisotropic_albedo(Microfacet mf, float3 w) {
     p = clamp(p, 0.0f, (float)(ANISO_GRID_PHI - 1));
     float m = energy_grid_mu_coordinate_of(w.z, ANISO_GRID_MU);
     int k = min((int)c.x, ANISO_GRID_RATIO - 2), l = min((int)p, ANISO_GRID_PHI - 2), i = min((int)c.y, ANISO_GRID_ROUGHNESS - 2);
-    int j = min((int)m, ANISO_GRID_MU - 2);
-    float tk = c.x - (float)k, tl = p - (float)l, ti = c.y - (float)i, tj = m - (float)j, lost = 0.0f;
+    float tk = c.x - (float)k, tl = p - (float)l, ti = c.y - (float)i, lost = 0.0f;
     for (int dk = 0; dk < 2; ++dk)
         for (int dl = 0; dl < 2; ++dl)
             for (int di = 0; di < 2; ++di) {
                 float weight = (dk ? tk : 1.0f - tk) * (dl ? tl : 1.0f - tl) * (di ? ti : 1.0f - ti);
-                CONSTANT_MEM const ushort* at =
-                    energy_ggx_anisotropic_albedo + (((k + dk) * ANISO_GRID_PHI + l + dl) * ANISO_GRID_ROUGHNESS + i + di) * ANISO_GRID_MU + j;
-                lost += weight * mix(1.0f - energy_grid_albedo_value(at, 0), 1.0f - energy_grid_albedo_value(at, 1), tj);
+                int row = (((k + dk) * ANISO_GRID_PHI + l + dl) * ANISO_GRID_ROUGHNESS + i + di) * ANISO_GRID_MU;
+                lost += weight * energy_grid_lerp_lost(energy_ggx_anisotropic_albedo + row, ANISO_GRID_MU, m);
             }
     return 1.0f - lost;
 }

@@ -112,6 +112,16 @@ SS_FN float energy_grid_lerp_albedo(CONSTANT_MEM const ushort* row, int n, float
     return mix(energy_grid_albedo_value(row, i), energy_grid_albedo_value(row, i + 1), t);
 }
 
+/* 1 - E interpolated in a stored albedo row like energy_grid_lerp_albedo(): where E is within 1e-4 of
+ * 1 (smooth lobes near grazing), interpolating 1 - E keeps what compensation gives back exact at the
+ * nodes and to float precision between them, where E's last bits, which the OpenCL build rounds
+ * otherwise (contracted multiply-adds), would be a relative error of 1e-3 in 1 - E. */
+SS_FN float energy_grid_lerp_lost(CONSTANT_MEM const ushort* row, int n, float x) {
+    int i = min((int)x, n - 2);
+    float t = x - (float)i;
+    return mix(1.0f - energy_grid_albedo_value(row, i), 1.0f - energy_grid_albedo_value(row, i + 1), t);
+}
+
 /* E(mu) of a (roughness, mu) table of ENERGY_GRID_ROUGHNESS rows, interpolated in both. */
 SS_FN float energy_table_albedo(CONSTANT_MEM const ushort* table, float r, float mu) {
     float x = energy_grid_roughness_coordinate(r);
