@@ -112,10 +112,11 @@ cl_uint WavefrontDriver::bind_step(const WavefrontTarget& target, const opencl::
     return a;
 }
 
-// march_rays' work-items: the rays' granules, then the shadow rays'; the first one as an argument
-// (kernels/march_packets.cl says why), after the seven set_kernel_args gives.
-void WavefrontDriver::launch_packets(PixelRange packets) const {
-    opencl::set_kernel_arg(march_rays_, 7, cl_int(packets.first));
+// march_rays' work-items `packets` of the rays' granules, then the shadow rays': the first one an
+// argument, the launch at offset 0 (kernels/march_packets.cl says why).
+void WavefrontDriver::launch_packets(const kernel::RenderKernelSettings& settings, const Ranges& r, PixelRange packets) const {
+    opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_,
+                            cl_int(packets.first));
     runtime_.launch_1d(march_rays_, size_t(packets.count), kPacketLocal);
 }
 
@@ -135,8 +136,7 @@ void WavefrontDriver::launch_camera_rays(const WavefrontTarget& target, const ke
         launch_range(runtime_, camera_kernel_, r.paths, target.local_size, size_t(r.path_count));
         ended(WavefrontLaunch::camera_step, camera_start);
         const Clock::time_point march_start = Clock::now();
-        opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
-        launch_packets(r.packets);
+        launch_packets(settings, r, r.packets);
         ended(WavefrontLaunch::camera_march, march_start);
     } else {
         opencl::set_kernel_args(march_camera_rays_, settings, *target.camera, r.path_count, stride_, path_rays_, camera_rngs_, ray_marches_);
@@ -162,12 +162,11 @@ void WavefrontDriver::launch_steps(const WavefrontTarget& target, const kernel::
         ended(last ? WavefrontLaunch::last_step : WavefrontLaunch::scatter_step, step_start, false);
         if (last) break;
         const Clock::time_point march_start = Clock::now();
-        opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
         if (unfinished[0] != 0 && unfinished[1] != 0 && r.packets.count == r.granules)
-            launch_packets(PixelRange{0, 2 * r.granules});  // both, in one launch
+            launch_packets(settings, r, PixelRange{0, 2 * r.granules});  // both, in one launch
         else {
-            if (unfinished[0] != 0) launch_packets(r.packets);
-            if (unfinished[1] != 0) launch_packets(r.shadow_packets);
+            if (unfinished[0] != 0) launch_packets(settings, r, r.packets);
+            if (unfinished[1] != 0) launch_packets(settings, r, r.shadow_packets);
         }
         ended(WavefrontLaunch::march, march_start);
     }

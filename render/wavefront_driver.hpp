@@ -83,7 +83,7 @@ private:
     void launch_camera_rays(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r);
     void launch_steps(const WavefrontTarget& target, const kernel::RenderKernelSettings& settings, const Ranges& r);
     void launch_resolve(const WavefrontTarget& target, int slots);
-    void launch_packets(PixelRange packets) const;
+    void launch_packets(const kernel::RenderKernelSettings& settings, const Ranges& r, PixelRange packets) const;
     // With an observer: waits for the launches so far (unless the host has), and tells it.
     using Clock = std::chrono::steady_clock;
     void ended(WavefrontLaunch kind, Clock::time_point start, bool wait = true);
