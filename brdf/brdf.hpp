@@ -13,4 +13,6 @@ using namespace single_source;
 #include "eon_diffuse.h"
 #include "sheen.h"
 #include "thin_film.h"
+// the anisotropic energy table's arrays, which kernels read from the tables buffer (bsdf_tables.h)
+#include "energy_table_ggx_anisotropic.h"
 }  // namespace brdf

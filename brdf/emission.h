@@ -20,7 +20,7 @@
 SS_FN float3 material_emission_clamped(const Material* m, float3 wo) {
 #if BRDF_FEATURE_EMISSION && BRDF_FEATURE_OPENPBR
     if (wo.z > 0.0f && material_emits(m)) {
-        OpenPbr p = openpbr_setup(m, wo);
+        OpenPbr p = openpbr_setup(m, 0, wo); /* through the top layers: no lookup in the global tables */
         float3 below = make_float3(0.0f, 0.0f, -1.0f); /* the light leaves the layers once */
         return float3_from_array(m->emission_color) * (m->emission_luminance * openpbr_through_top(m, &p, wo, below));
     }

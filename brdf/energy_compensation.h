@@ -9,8 +9,10 @@
  * tables (brdf/energy_grid.h) over roughness and shape. An anisotropic GGX distribution's E depends
  * on the azimuth of w too, and no isotropic roughness matches it (docs/materials.md gives the figures):
  * its E(w) comes from a table over the ratio alpha_y / alpha_x, that azimuth, roughness and mu, and
- * E_avg from the same table's hemispherical average. An anisotropic Hyper-Cauchy one uses the isotropic
- * table of the same alpha_x alpha_y. */
+ * E_avg from the same table's hemispherical average. That table is too large for __constant memory:
+ * it is read from the BSDF's tables in global memory (`tables`, brdf/bsdf_tables.h), which kernels
+ * receive as a buffer argument. An anisotropic Hyper-Cauchy one uses the isotropic table of the same
+ * alpha_x alpha_y. */
 #ifndef BRDF_ENERGY_COMPENSATION_H
 #define BRDF_ENERGY_COMPENSATION_H
 #include "single_source/vocabulary.h"
@@ -19,8 +21,8 @@
 #include "microfacet.h"
 #if BRDF_FEATURE_GGX
 #include "energy_table_ggx.h"
-#include "energy_table_ggx_anisotropic.h"
 #endif
+#include "bsdf_tables.h"
 #if BRDF_FEATURE_HYPER_CAUCHY
 #include "energy_table_hyper_cauchy.h"
 #endif
@@ -64,14 +66,13 @@ SS_FN float energy_azimuth(float x, float y) {
 
 /* E(w) of an anisotropic GGX distribution: the table interpolated in ratio, azimuth, roughness and mu,
  * as 1 - E (energy_grid_lerp_lost says why). */
-SS_FN float energy_anisotropic_albedo(Microfacet mf, float3 w) {
+SS_FN float energy_anisotropic_albedo(Microfacet mf, GLOBAL_MEM const float* tables, float3 w) {
     float ax = mf.ax, ay = mf.ay, wx = fabs(w.x), wy = fabs(w.y);
     if (ay > ax) {
         ax = mf.ay, ay = mf.ax, wx = fabs(w.y), wy = fabs(w.x);
     }
     float2 c = energy_anisotropic_coordinates(ax, ay);
-    float p = energy_azimuth(wx, wy) * (2.0f * SS_INV_PI) * (float)(ANISO_GRID_PHI - 1);
-    p = clamp(p, 0.0f, (float)(ANISO_GRID_PHI - 1));
+    float p = anisotropic_grid_phi_coordinate(energy_azimuth(wx, wy));
     float m = energy_grid_mu_coordinate_of(w.z, ANISO_GRID_MU);
     int k = min((int)c.x, ANISO_GRID_RATIO - 2), l = min((int)p, ANISO_GRID_PHI - 2), i = min((int)c.y, ANISO_GRID_ROUGHNESS - 2);
     float tk = c.x - (float)k, tl = p - (float)l, ti = c.y - (float)i, lost = 0.0f;
@@ -80,7 +81,7 @@ SS_FN float energy_anisotropic_albedo(Microfacet mf, float3 w) {
             for (int di = 0; di < 2; ++di) {
                 float weight = (dk ? tk : 1.0f - tk) * (dl ? tl : 1.0f - tl) * (di ? ti : 1.0f - ti);
                 int row = (((k + dk) * ANISO_GRID_PHI + l + dl) * ANISO_GRID_ROUGHNESS + i + di) * ANISO_GRID_MU;
-                lost += weight * energy_grid_lerp_lost(energy_ggx_anisotropic_albedo + row, ANISO_GRID_MU, m);
+                lost += weight * energy_grid_lerp_lost(bsdf_tables_anisotropic_albedo(tables) + row, ANISO_GRID_MU, m);
             }
     return 1.0f - lost;
 }
@@ -88,20 +89,20 @@ SS_FN float energy_anisotropic_albedo(Microfacet mf, float3 w) {
 /* E_avg of an anisotropic GGX distribution, interpolated in ratio and roughness like E above, so that
  * it is the hemispherical average of the interpolated E(w) (the generator averages over the azimuth
  * the interpolant, linear in phi between its nodes). */
-SS_FN float energy_anisotropic_average(Microfacet mf) {
+SS_FN float energy_anisotropic_average(Microfacet mf, GLOBAL_MEM const float* tables) {
     float2 c = energy_anisotropic_coordinates(fmax(mf.ax, mf.ay), fmin(mf.ax, mf.ay));
-    int k = min((int)c.x, ANISO_GRID_RATIO - 2);
-    CONSTANT_MEM const float* row = energy_ggx_anisotropic_average + k * ANISO_GRID_ROUGHNESS;
-    return mix(energy_grid_lerp(row, ANISO_GRID_ROUGHNESS, c.y), energy_grid_lerp(row + ANISO_GRID_ROUGHNESS, ANISO_GRID_ROUGHNESS, c.y),
-               c.x - (float)k);
+    int k = min((int)c.x, ANISO_GRID_RATIO - 2), i = min((int)c.y, ANISO_GRID_ROUGHNESS - 2);
+    GLOBAL_MEM const float* row = tables + BSDF_TABLES_ANISOTROPIC_AVERAGE + k * ANISO_GRID_ROUGHNESS + i;
+    float t = c.y - (float)i;
+    return mix(mix(row[0], row[1], t), mix(row[ANISO_GRID_ROUGHNESS], row[ANISO_GRID_ROUGHNESS + 1], t), c.x - (float)k);
 }
 #endif
 
 /* E at w (upper side) of the distribution of normals mf, and its average. */
-SS_FN float microfacet_energy_albedo(Microfacet mf, float3 w) {
+SS_FN float microfacet_energy_albedo(Microfacet mf, GLOBAL_MEM const float* tables, float3 w) {
     float mu = w.z;
 #if BRDF_FEATURE_GGX
-    if (energy_is_anisotropic(mf)) return energy_anisotropic_albedo(mf, w);
+    if (energy_is_anisotropic(mf)) return energy_anisotropic_albedo(mf, tables, w);
 #endif
     float r = energy_roughness(mf);
 #if BRDF_FEATURE_HYPER_CAUCHY
@@ -118,9 +119,9 @@ SS_FN float microfacet_energy_albedo(Microfacet mf, float3 w) {
 #endif
 }
 
-SS_FN float microfacet_energy_average(Microfacet mf) {
+SS_FN float microfacet_energy_average(Microfacet mf, GLOBAL_MEM const float* tables) {
 #if BRDF_FEATURE_GGX
-    if (energy_is_anisotropic(mf)) return energy_anisotropic_average(mf);
+    if (energy_is_anisotropic(mf)) return energy_anisotropic_average(mf, tables);
 #endif
     float x = energy_grid_roughness_coordinate(energy_roughness(mf));
 #if BRDF_FEATURE_HYPER_CAUCHY
@@ -144,19 +145,25 @@ SS_FN float3 multiple_scattering_fresnel(float3 f0, float e_avg) {
 }
 
 /* f_ms(wo, wi) without its colour, for wo and wi on the upper side. */
-SS_FN float multiple_scattering_eval(Microfacet mf, float3 wo, float3 wi) {
+SS_FN float multiple_scattering_eval(Microfacet mf, GLOBAL_MEM const float* tables, float3 wo, float3 wi) {
     if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return 0.0f;
-    float e_avg = microfacet_energy_average(mf);
+    float e_avg = microfacet_energy_average(mf, tables);
     if (!(e_avg < 1.0f - 1e-6f)) return 0.0f;
-    float lost_o = fmax(1.0f - microfacet_energy_albedo(mf, wo), 0.0f);
-    float lost_i = fmax(1.0f - microfacet_energy_albedo(mf, wi), 0.0f);
+    float lost_o = fmax(1.0f - microfacet_energy_albedo(mf, tables, wo), 0.0f);
+    float lost_i = fmax(1.0f - microfacet_energy_albedo(mf, tables, wi), 0.0f);
     return lost_o * lost_i * SS_INV_PI / (1.0f - e_avg);
 }
 
 /* Directional albedo of f_ms (without its colour): 1 - E(wo), where E_avg < 1. */
-SS_FN float multiple_scattering_albedo(Microfacet mf, float3 wo) {
-    if (!(wo.z > 0.0f) || !(microfacet_energy_average(mf) < 1.0f - 1e-6f)) return 0.0f;
-    return fmax(1.0f - microfacet_energy_albedo(mf, wo), 0.0f);
+SS_FN float multiple_scattering_albedo(Microfacet mf, GLOBAL_MEM const float* tables, float3 wo) {
+    if (!(wo.z > 0.0f) || !(microfacet_energy_average(mf, tables) < 1.0f - 1e-6f)) return 0.0f;
+    return fmax(1.0f - microfacet_energy_albedo(mf, tables, wo), 0.0f);
 }
+
+#ifndef __OPENCL_C_VERSION__
+/* On the host, E and E_avg through the process's tables (brdf/host/bsdf_table_registry.cpp). */
+inline float microfacet_energy_albedo(Microfacet mf, float3 w) { return microfacet_energy_albedo(mf, bsdf_tables(), w); }
+inline float microfacet_energy_average(Microfacet mf) { return microfacet_energy_average(mf, bsdf_tables()); }
+#endif
 
 #endif

@@ -29,30 +29,44 @@ SS_FN float energy_grid_shape(int k) {
 
 /* The anisotropic GGX table (brdf/energy_table_ggx_anisotropic.h): E(w) over [ratio][phi][roughness][mu]
  * and E_avg over [ratio][roughness], for alpha_x >= alpha_y (the lookup swaps the axes otherwise).
- * ratio q = alpha_y / alpha_x at nodes 0, 0.1, 0.25, 0.5, 0.75, 1: near grazing E dips between q = 0
- * and 0.25, which nodes even in q cut across; the azimuth phi of w from the longer axis at nodes even
- * over [0, pi / 2] (E is even about both axes); roughness sqrt(alpha_rms), alpha_rms^2 = (alpha_x^2 +
- * alpha_y^2) / 2, at nodes even over [0, 1.5], which covers the lab model's Disney mapping (up to 1.499)
- * and OpenPBR's (alpha_rms = roughness^2, so at most 1); mu even in sqrt(mu) like the others. 18.4 KB in
- * all, which keeps every table a kernel can hold under the 64 KB of __constant memory (docs/materials.md). */
-#define ANISO_GRID_RATIO 6
-#define ANISO_GRID_PHI 6
-#define ANISO_GRID_ROUGHNESS 16
+ * ratio q = alpha_y / alpha_x and the azimuth phi of w from the longer axis at the nodes below (E is
+ * even about both axes); roughness sqrt(alpha_rms), alpha_rms^2 = (alpha_x^2 + alpha_y^2) / 2, at
+ * nodes even over [0, 1.5], which covers the lab model's Disney mapping (up to 1.499) and OpenPBR's
+ * (alpha_rms = roughness^2, so at most 1); mu even in sqrt(mu) like the others. 66 KB: kernels read
+ * it from global memory (brdf/bsdf_tables.h), docs/materials.md says what its resolution buys. */
+#define ANISO_GRID_RATIO 8
+#define ANISO_GRID_PHI 11
+#define ANISO_GRID_ROUGHNESS 24
 #define ANISO_GRID_MU 16
 #define ANISO_GRID_ROUGHNESS_MAX 1.5f
 
-/* The ratio q at fractional ratio node coordinate x, and the coordinate of q, piecewise linear through
- * the nodes 0, 0.1, 0.25, 0.5, 0.75, 1. */
-SS_FN float anisotropic_grid_ratio(float x) {
-    if (x < 1.0f) return 0.1f * x;
-    if (x < 2.0f) return 0.1f + 0.15f * (x - 1.0f);
-    return 0.25f * (x - 1.0f);
+/* The value at fractional node coordinate x of n increasing nodes (piecewise linear through them),
+ * and the coordinate of v, clamped to the nodes. */
+SS_FN float energy_grid_nodes_value(CONSTANT_MEM const float* nodes, int n, float x) {
+    int k = clamp((int)x, 0, n - 2);
+    return mix(nodes[k], nodes[k + 1], x - (float)k);
 }
+SS_FN float energy_grid_nodes_coordinate(CONSTANT_MEM const float* nodes, int n, float v) {
+    v = clamp(v, nodes[0], nodes[n - 1]);
+    int k = 0;
+    while (k < n - 2 && v >= nodes[k + 1]) ++k;
+    return (float)k + (v - nodes[k]) / (nodes[k + 1] - nodes[k]);
+}
+
+/* The ratio nodes, dense below 0.5, where E near grazing turns fastest with q; the azimuth nodes
+ * (degrees), dense towards the shorter axis at 90, where the projected roughness of a strongly
+ * anisotropic lobe falls within a few degrees (nodes even in phi leave 1.5 % there at q = 0.1). */
+CONSTANT_MEM const float anisotropic_grid_ratio_nodes[ANISO_GRID_RATIO] = {0.0f, 0.1f, 0.175f, 0.25f, 0.375f, 0.5f, 0.75f, 1.0f};
+CONSTANT_MEM const float anisotropic_grid_phi_nodes[ANISO_GRID_PHI] = {0.0f, 20.0f, 35.0f, 47.0f, 57.0f, 65.0f, 72.0f, 78.0f, 83.0f, 87.0f, 90.0f};
+
+SS_FN float anisotropic_grid_ratio(float x) { return energy_grid_nodes_value(anisotropic_grid_ratio_nodes, ANISO_GRID_RATIO, x); }
 SS_FN float anisotropic_grid_ratio_coordinate(float q) {
-    q = clamp(q, 0.0f, 1.0f);
-    if (q < 0.1f) return 10.0f * q;
-    if (q < 0.25f) return 1.0f + (q - 0.1f) * (1.0f / 0.15f);
-    return 1.0f + 4.0f * q;
+    return energy_grid_nodes_coordinate(anisotropic_grid_ratio_nodes, ANISO_GRID_RATIO, q);
+}
+/* phi in radians */
+SS_FN float anisotropic_grid_phi(float x) { return energy_grid_nodes_value(anisotropic_grid_phi_nodes, ANISO_GRID_PHI, x) * (SS_PI / 180.0f); }
+SS_FN float anisotropic_grid_phi_coordinate(float phi) {
+    return energy_grid_nodes_coordinate(anisotropic_grid_phi_nodes, ANISO_GRID_PHI, phi * (180.0f / SS_PI));
 }
 
 /* alpha_x and alpha_y of ratio node coordinate q (alpha_y / alpha_x) and rms roughness r. */
@@ -103,7 +117,8 @@ SS_FN float energy_grid_lerp(CONSTANT_MEM const float* row, int n, float x) {
  * conservative; a step of 1.5e-5 is far below the estimate's own error. Half the size of floats keeps
  * every table a kernel can hold under the 64 KB of __constant memory OpenCL guarantees (docs/materials.md). */
 #define ENERGY_TABLE_ONE 65535.0f
-SS_FN float energy_grid_albedo_value(CONSTANT_MEM const ushort* table, int index) { return (float)table[index] * (1.0f / ENERGY_TABLE_ONE); }
+SS_FN float energy_code_albedo(ushort code) { return (float)code * (1.0f / ENERGY_TABLE_ONE); }
+SS_FN float energy_grid_albedo_value(CONSTANT_MEM const ushort* table, int index) { return energy_code_albedo(table[index]); }
 
 /* energy_grid_lerp() of a stored albedo row. */
 SS_FN float energy_grid_lerp_albedo(CONSTANT_MEM const ushort* row, int n, float x) {
@@ -116,10 +131,10 @@ SS_FN float energy_grid_lerp_albedo(CONSTANT_MEM const ushort* row, int n, float
  * 1 (smooth lobes near grazing), interpolating 1 - E keeps what compensation gives back exact at the
  * nodes and to float precision between them, where E's last bits, which the OpenCL build rounds
  * otherwise (contracted multiply-adds), would be a relative error of 1e-3 in 1 - E. */
-SS_FN float energy_grid_lerp_lost(CONSTANT_MEM const ushort* row, int n, float x) {
+SS_FN float energy_grid_lerp_lost(GLOBAL_MEM const ushort* row, int n, float x) {
     int i = min((int)x, n - 2);
     float t = x - (float)i;
-    return mix(1.0f - energy_grid_albedo_value(row, i), 1.0f - energy_grid_albedo_value(row, i + 1), t);
+    return mix(1.0f - energy_code_albedo(row[i]), 1.0f - energy_code_albedo(row[i + 1]), t);
 }
 
 /* E(mu) of a (roughness, mu) table of ENERGY_GRID_ROUGHNESS rows, interpolated in both. */

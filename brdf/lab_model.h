@@ -98,9 +98,9 @@ SS_FN bool lab_dielectric_compensated(const Material* m, Microfacet mf) {
 
 #if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GLOSSY
 /* F_ms f_ms of the glossy lobe, without its weight. */
-SS_FN float3 lab_multiple_scattering_eval(const Material* m, Microfacet mf, float3 wo, float3 wi) {
-    float3 f_ms = multiple_scattering_fresnel(lab_specular_f0(m), microfacet_energy_average(mf));
-    return f_ms * multiple_scattering_eval(mf, wo, wi);
+SS_FN float3 lab_multiple_scattering_eval(const Material* m, Microfacet mf, GLOBAL_MEM const float* tables, float3 wo, float3 wi) {
+    float3 f_ms = multiple_scattering_fresnel(lab_specular_f0(m), microfacet_energy_average(mf, tables));
+    return f_ms * multiple_scattering_eval(mf, tables, wo, wi);
 }
 #endif
 
@@ -129,7 +129,7 @@ typedef struct LobeChoice {
 
 #define BRDF_LOBE_CHOICE_FLOOR 1e-3f
 
-SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf, float3 wo) {
+SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf, GLOBAL_MEM const float* tables, float3 wo) {
     LobeChoice c;
     float albedo = mean3(material_albedo(m)) + BRDF_LOBE_CHOICE_FLOOR;
     bool up = wo.z > 0.0f;
@@ -151,8 +151,8 @@ SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf
     c.glossy = w.glossy * reflectance;
 #if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GLOSSY
     if (up && lab_glossy_compensated(m, mf))
-        c.cosine += w.glossy * mean3(multiple_scattering_fresnel(lab_specular_f0(m), microfacet_energy_average(mf))) *
-                    multiple_scattering_albedo(mf, wo);
+        c.cosine += w.glossy * mean3(multiple_scattering_fresnel(lab_specular_f0(m), microfacet_energy_average(mf, tables))) *
+                    multiple_scattering_albedo(mf, tables, wo);
 #endif
     c.specular = w.specular * reflectance;
     c.transmission = w.transmission * albedo;
@@ -184,7 +184,7 @@ SS_FN LobeChoice lab_lobe_choice(const Material* m, LobeWeights w, Microfacet mf
  * already: a sample (lab_sample) evaluates its mixture with the ones it drew from, instead of
  * computing them twice more (the Hyper-Cauchy microfacet takes four lgamma, the lobe choice a glossy
  * evaluation of its own). The same operations, so the same bits as lab_eval and lab_pdf. */
-SS_FN float3 lab_eval_lobes(const Material* m, LobeWeights w, Microfacet mf, float3 wo, float3 wi) {
+SS_FN float3 lab_eval_lobes(const Material* m, LobeWeights w, Microfacet mf, GLOBAL_MEM const float* tables, float3 wo, float3 wi) {
     bool smooth = microfacet_is_smooth(mf);
     float3 f = float3_splat(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
@@ -195,7 +195,7 @@ SS_FN float3 lab_eval_lobes(const Material* m, LobeWeights w, Microfacet mf, flo
         if (w.glossy > 0.0f && !smooth) f += w.glossy * microfacet_reflection_eval(mf, lab_specular_f0(m), wo, wi);
 #endif
 #if BRDF_FEATURE_ENERGY_COMPENSATION && BRDF_FEATURE_GLOSSY
-        if (w.glossy > 0.0f && lab_glossy_compensated(m, mf)) f += w.glossy * lab_multiple_scattering_eval(m, mf, wo, wi);
+        if (w.glossy > 0.0f && lab_glossy_compensated(m, mf)) f += w.glossy * lab_multiple_scattering_eval(m, mf, tables, wo, wi);
 #endif
     }
 #if BRDF_FEATURE_TRANSMISSION
@@ -224,14 +224,14 @@ SS_FN float lab_pdf_lobes(const Material* m, Microfacet mf, LobeChoice c, float3
     return pdf;
 }
 
-SS_FN float3 lab_eval(const Material* m, float3 wo, float3 wi) {
-    return lab_eval_lobes(m, lab_lobe_weights(m), microfacet_from_material(m), wo, wi);
+SS_FN float3 lab_eval(const Material* m, GLOBAL_MEM const float* tables, float3 wo, float3 wi) {
+    return lab_eval_lobes(m, lab_lobe_weights(m), microfacet_from_material(m), tables, wo, wi);
 }
 
-SS_FN float lab_pdf(const Material* m, float3 wo, float3 wi) {
+SS_FN float lab_pdf(const Material* m, GLOBAL_MEM const float* tables, float3 wo, float3 wi) {
     LobeWeights w = lab_lobe_weights(m);
     Microfacet mf = microfacet_from_material(m);
-    return lab_pdf_lobes(m, mf, lab_lobe_choice(m, w, mf, wo), wo, wi);
+    return lab_pdf_lobes(m, mf, lab_lobe_choice(m, w, mf, tables, wo), wo, wi);
 }
 
 /* Mirror reflection with Schlick's Fresnel, as a delta sample of a lobe of weight `weight` picked with
@@ -246,10 +246,10 @@ SS_FN BsdfSample lab_mirror_sample(const Material* m, float weight, float probab
     return s;
 }
 
-SS_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
+SS_FN BsdfSample lab_sample(const Material* m, GLOBAL_MEM const float* tables, float3 wo, float3 u) {
     LobeWeights w = lab_lobe_weights(m);
     Microfacet mf = microfacet_from_material(m);
-    LobeChoice c = lab_lobe_choice(m, w, mf, wo);
+    LobeChoice c = lab_lobe_choice(m, w, mf, tables, wo);
     bool smooth = microfacet_is_smooth(mf);
     BsdfSample s = bsdf_sample_failed();
     float3 wi;
@@ -294,7 +294,7 @@ SS_FN BsdfSample lab_sample(const Material* m, float3 wo, float3 u) {
     s.pdf = lab_pdf_lobes(m, mf, c, wo, wi);
     if (!(s.pdf > 0.0f)) return bsdf_sample_failed();
     s.wi = wi;
-    s.f = lab_eval_lobes(m, w, mf, wo, wi);
+    s.f = lab_eval_lobes(m, w, mf, tables, wo, wi);
     s.flags = same_hemisphere(wo, wi) ? BSDF_REFLECTION : BSDF_TRANSMISSION;
     return s;
 }

@@ -82,6 +82,7 @@ typedef struct OpenPbr {
     float coat_albedo;         /* E_coat(mu_o) */
     float3 specular_albedo;    /* what the dielectric specular reflects at mu_o, film and tint included (0 without an opaque dielectric) */
     float3 darkening;          /* D, mixed in by coat_darkening */
+    GLOBAL_MEM const float* tables; /* the BSDF's tables (brdf/bsdf_tables.h): the metal's anisotropic energy */
 } OpenPbr;
 
 /* The dielectric specular's Fresnel reflectance at cos, with the thin film mixed in. */
@@ -139,8 +140,9 @@ SS_FN float openpbr_specular_roughness(const Material* m) {
     return m->roughness;
 }
 
-SS_FN OpenPbr openpbr_setup(const Material* m, float3 wo) {
+SS_FN OpenPbr openpbr_setup(const Material* m, GLOBAL_MEM const float* tables, float3 wo) {
     OpenPbr p;
+    p.tables = tables;
     p.specular = openpbr_microfacet(openpbr_specular_roughness(m), m->anisotropic);
     p.coat = openpbr_microfacet(m->coat_roughness, m->coat_roughness_anisotropy);
     p.eta = dielectric_weighted_ior(m->ior, m->specular_weight);
@@ -229,8 +231,8 @@ SS_FN float3 openpbr_base_reflection(const Material* m, const OpenPbr* p, float3
         if (!p->specular_smooth) f += openpbr_metal_fresnel(m, p->base, wo_h) * (p->metal * shape);
 #if BRDF_FEATURE_ENERGY_COMPENSATION
         if (p->metal_compensated)
-            f += multiple_scattering_fresnel(p->base, microfacet_energy_average(p->specular)) *
-                 (p->metal * m->specular_weight * multiple_scattering_eval(p->specular, wo, wi));
+            f += multiple_scattering_fresnel(p->base, microfacet_energy_average(p->specular, p->tables)) *
+                 (p->metal * m->specular_weight * multiple_scattering_eval(p->specular, p->tables, wo, wi));
 #endif
     }
     if (p->opaque > 0.0f) {
@@ -311,8 +313,8 @@ SS_FN OpenPbrChoice openpbr_choice(const Material* m, const OpenPbr* p, float3 w
         c.metal = under * p->metal * (mean3(openpbr_metal_fresnel(m, p->base, wo.z)) + OPENPBR_CHOICE_FLOOR);
 #if BRDF_FEATURE_ENERGY_COMPENSATION
         if (p->metal_compensated)
-            c.cosine += under * p->metal * m->specular_weight * mean3(multiple_scattering_fresnel(p->base, microfacet_energy_average(p->specular))) *
-                        multiple_scattering_albedo(p->specular, wo);
+            c.cosine += under * p->metal * m->specular_weight * mean3(multiple_scattering_fresnel(p->base, microfacet_energy_average(p->specular, p->tables))) *
+                        multiple_scattering_albedo(p->specular, p->tables, wo);
 #endif
     }
     if (p->opaque > 0.0f) c.specular = under * p->opaque * (mean3(p->specular_albedo) + OPENPBR_CHOICE_FLOOR);
@@ -346,13 +348,13 @@ SS_FN float openpbr_pdf_setup(const Material* m, const OpenPbr* p, OpenPbrChoice
     return pdf;
 }
 
-SS_FN float3 openpbr_eval(const Material* m, float3 wo, float3 wi) {
-    OpenPbr p = openpbr_setup(m, wo);
+SS_FN float3 openpbr_eval(const Material* m, GLOBAL_MEM const float* tables, float3 wo, float3 wi) {
+    OpenPbr p = openpbr_setup(m, tables, wo);
     return openpbr_eval_setup(m, &p, wo, wi);
 }
 
-SS_FN float openpbr_pdf(const Material* m, float3 wo, float3 wi) {
-    OpenPbr p = openpbr_setup(m, wo);
+SS_FN float openpbr_pdf(const Material* m, GLOBAL_MEM const float* tables, float3 wo, float3 wi) {
+    OpenPbr p = openpbr_setup(m, tables, wo);
     return openpbr_pdf_setup(m, &p, openpbr_choice(m, &p, wo), wo, wi);
 }
 
@@ -367,8 +369,8 @@ SS_FN BsdfSample openpbr_delta_sample(float3 wi, float3 weight, float probabilit
     return s;
 }
 
-SS_FN BsdfSample openpbr_sample(const Material* m, float3 wo, float3 u) {
-    OpenPbr p = openpbr_setup(m, wo);
+SS_FN BsdfSample openpbr_sample(const Material* m, GLOBAL_MEM const float* tables, float3 wo, float3 u) {
+    OpenPbr p = openpbr_setup(m, tables, wo);
     OpenPbrChoice c = openpbr_choice(m, &p, wo);
     BsdfSample s = bsdf_sample_failed();
     float3 mirror = make_float3(-wo.x, -wo.y, wo.z);

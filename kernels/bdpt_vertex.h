@@ -151,7 +151,7 @@ SS_FN float vertex_pdf(const RenderKernelSettings* settings, const Camera* camer
     Material m = scene->materials[v->index];
     float3 wp = frame_to_local(v->frame, vertex_direction(v, prev));
     float3 wn = frame_to_local(v->frame, vertex_direction(v, next));
-    return vertex_convert_density(bsdf_pdf_clamped(&m, scene->measured, wp, wn), v, next);
+    return vertex_convert_density(bsdf_pdf_clamped(&m, scene->tables, wp, wn), v, next);
 }
 
 /* f at surface vertex v between its previous vertex and unit world direction w, in the subpath's
@@ -160,7 +160,7 @@ SS_FN float vertex_pdf(const RenderKernelSettings* settings, const Camera* camer
 SS_FN float3 vertex_f(const RenderScene* scene, const PathVertex* v, float3 w, int mode) {
     if (!vertex_scatters(scene, v)) return float3_splat(0.0f);
     Material m = scene->materials[v->index];
-    return bsdf_eval_mode(&m, scene->measured, v->wo, frame_to_local(v->frame, w), mode);
+    return bsdf_eval_mode(&m, scene->tables, v->wo, frame_to_local(v->frame, w), mode);
 }
 
 /* Radiance emitted by light or emitter vertex v towards `to`: a sphere's Le from both sides, a

@@ -53,9 +53,9 @@ SS_FN int bdpt_random_walk(const RenderKernelSettings* settings, MarchSettings m
 
         Material m = scene->materials[hit.slot];
         float4 u = rng_next4(rng);
-        BsdfSample b = bsdf_sample_mode(&m, scene->measured, hit.wo, make_float3(u.x, u.y, u.z), mode);
+        BsdfSample b = bsdf_sample_mode(&m, scene->tables, hit.wo, make_float3(u.x, u.y, u.z), mode);
         if (b.flags == 0 || !(b.pdf > 0.0f)) break;
-        float pdf_rev_dir = bsdf_pdf_clamped(&m, scene->measured, b.wi, hit.wo);
+        float pdf_rev_dir = bsdf_pdf_clamped(&m, scene->tables, b.wi, hit.wo);
         if ((b.flags & BSDF_DELTA) != 0) { /* no other strategy samples a delta lobe: densities 0, remapped by the weights */
             path[count - 1].delta = 1;
             pdf_rev_dir = 0.0f;

@@ -11,7 +11,7 @@
 #include "kernels/first_hit.h"
 
 __kernel void render_first_hits(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
-                                __global const AliasEntry* env_alias, __global const Material* materials, __global const float* measured,
+                                __global const AliasEntry* env_alias, __global const Material* materials, __global const float* tables,
                                 __global const float4* emission, __global const Light* lights, __global const float* light_cdf,
                                 __global const int* light_of_slot, __global float4* accumulation, __global float4* squares, __global uint* splat,
                                 __global uint* ray_counts, __global uint* lost_ray_counts, __global float4* albedo_sums,
@@ -19,7 +19,7 @@ __kernel void render_first_hits(RenderKernelSettings settings, Camera camera, En
     int pixel = (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
     (void)accumulation, (void)squares, (void)splat, (void)ray_counts, (void)lost_ray_counts;
-    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
+    RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     float4 albedo = albedo_sums[pixel], normal_depth = normal_depth_sums[pixel];
     for (int i = 0; i < settings.sample_count; ++i) {
         FirstHit h = first_hit_sample(&settings, &camera, &scene, pixel, settings.first_sample + i);

@@ -58,7 +58,7 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     Material m = scene->materials[hit.slot];
     for (int i = 0; i < FIRST_HIT_ALBEDO_SAMPLES; ++i) {
         float4 u = rng_next4(&rng);
-        BsdfSample b = bsdf_sample_clamped(&m, scene->measured, hit.wo, make_float3(u.x, u.y, u.z));
+        BsdfSample b = bsdf_sample_clamped(&m, scene->tables, hit.wo, make_float3(u.x, u.y, u.z));
         if (b.flags != 0) h.albedo += b.f * (fabs(b.wi.z) / b.pdf);
     }
     h.albedo *= 1.0f / (float)FIRST_HIT_ALBEDO_SAMPLES;

@@ -12,12 +12,12 @@
 
 __kernel void render_pt(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
                         __global const AliasEntry* env_alias,
-                        __global const Material* materials, __global const float* measured, __global const float4* emission, __global const Light* lights,
+                        __global const Material* materials, __global const float* tables, __global const float4* emission, __global const Light* lights,
                         __global const float* light_cdf, __global const int* light_of_slot, __global float4* accumulation, __global float4* squares,
                         __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts) {
     int pixel = (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
-    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
+    RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     (void)splat; /* the path tracer adds to its own pixel only */
     path_tracer_pixel(&settings, &camera, &scene, pixel, accumulation, squares, ray_counts, lost_ray_counts);
 }
@@ -27,7 +27,7 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
  * (the step adds its `first` flag); work-item p steps path p. */
 #define WAVEFRONT_KERNEL_ARGUMENTS                                                                                                        \
     RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4 *env_texels,                                \
-        __global const AliasEntry *env_alias, __global const Material *materials, __global const float *measured,                       \
+        __global const AliasEntry *env_alias, __global const Material *materials, __global const float *tables,                       \
         __global const float4 *emission, __global const Light *lights, __global const float *light_cdf, __global const int *light_of_slot, \
         __global float4 *accumulation, __global float4 *squares, __global uint *splat, __global uint *ray_counts,                        \
         __global uint *lost_ray_counts, int stride,                                                                                        \
@@ -41,7 +41,7 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
 __kernel void render_pt_step(WAVEFRONT_KERNEL_ARGUMENTS, int first) {
     int path = (int)get_global_id(0);
     if (path >= slots * camera.width * camera.height) return;
-    RenderScene scene = render_scene_make(materials, measured, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
+    RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     WavefrontFilm film = {slots, accumulation, squares, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};
     (void)splat;
     path_tracer_step(&settings, &camera, &scene, path, states, stride, rays, shadow_rays, ray_marches, shadow_marches, camera_rngs, film,
@@ -52,7 +52,7 @@ __kernel void render_pt_step(WAVEFRONT_KERNEL_ARGUMENTS, int first) {
 __kernel void render_pt_camera(WAVEFRONT_KERNEL_ARGUMENTS) {
     int path = (int)get_global_id(0);
     if (path >= slots * camera.width * camera.height) return;
-    (void)env, (void)env_texels, (void)env_alias, (void)materials, (void)measured, (void)emission, (void)lights, (void)light_cdf;
+    (void)env, (void)env_texels, (void)env_alias, (void)materials, (void)tables, (void)emission, (void)lights, (void)light_cdf;
     (void)light_of_slot, (void)accumulation, (void)squares, (void)splat, (void)ray_counts, (void)lost_ray_counts, (void)states, (void)shadow_rays;
     (void)ray_marches, (void)shadow_marches, (void)unfinished, (void)path_radiance, (void)path_rays, (void)path_lost_rays;
     path_tracer_camera_step(&settings, &camera, path, stride, rays, camera_rngs);

@@ -62,11 +62,11 @@ SS_FN ShadowRay direct_light_sample(const RenderKernelSettings* settings, const 
     LightSample ls = sample_light(&light, &scene->env, scene->env_buffers, hit->p, make_float2(u.x, u.y));
     if (!(ls.pdf > 0.0f) || !(max_component(ls.radiance) > 0.0f)) return shadow;
     float3 wl = frame_to_local(hit->frame, ls.wi);
-    float3 f = bsdf_eval_clamped(m, scene->measured, hit->wo, wl);
+    float3 f = bsdf_eval_clamped(m, scene->tables, hit->wo, wl);
     if (!(max_component(f) > 0.0f)) return shadow;
     float light_density = pmf * ls.pdf;
     float weight = (ls.delta || settings->light_sampling != LIGHT_SAMPLING_MIS) ? 1.0f
-                                                                         : mis_power_heuristic(light_density, bsdf_pdf_clamped(m, scene->measured, hit->wo, wl));
+                                                                         : mis_power_heuristic(light_density, bsdf_pdf_clamped(m, scene->tables, hit->wo, wl));
     float3_to_array(offset_origin(hit->p, hit->frame.n, hit->epsilon, wl.z), shadow.origin);
     float3_to_array(ls.wi, shadow.direction);
     shadow.distance = ls.distance;
@@ -207,7 +207,7 @@ SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings marc
     if (settings->light_sampling != LIGHT_SAMPLING_BSDF && settings->light_count > 0)
         p->shadow = direct_light_sample(settings, scene, &m, &hit, make_float3(u_light.x, u_light.y, u_light.w), throughput, catcher);
 
-    BsdfSample b = bsdf_sample_clamped(&m, scene->measured, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
+    BsdfSample b = bsdf_sample_clamped(&m, scene->tables, hit.wo, make_float3(u_bsdf.x, u_bsdf.y, u_bsdf.z));
     if (b.flags == 0) return;
     throughput *= b.f * (fabs(b.wi.z) / b.pdf);
     float3_to_array(hit.p, p->previous_p);

@@ -26,7 +26,7 @@
 
 typedef struct RenderScene {
     GLOBAL_MEM const Material* materials; /* per material slot */
-    GLOBAL_MEM const float* measured;     /* the measured tables (brdf/measured.h) measured materials name */
+    GLOBAL_MEM const float* tables;       /* the BSDF's tables (brdf/bsdf_tables.h): energy, and the blocks measured materials name */
     GLOBAL_MEM const float4* emission;    /* per slot: xyz radiance, w one of EMISSION_* */
     GLOBAL_MEM const Light* lights;       /* the environment first when there is one */
     GLOBAL_MEM const float* light_cdf;    /* the selection distribution over the lights */
@@ -37,12 +37,12 @@ typedef struct RenderScene {
 
 /* The scene from its buffers, as every integrator's kernel entry (kernels/<integrator>.cl) binds them and the
  * host renderer holds them. */
-SS_FN RenderScene render_scene_make(GLOBAL_MEM const Material* materials, GLOBAL_MEM const float* measured, GLOBAL_MEM const float4* emission, GLOBAL_MEM const Light* lights,
+SS_FN RenderScene render_scene_make(GLOBAL_MEM const Material* materials, GLOBAL_MEM const float* tables, GLOBAL_MEM const float4* emission, GLOBAL_MEM const Light* lights,
                                     GLOBAL_MEM const float* light_cdf, GLOBAL_MEM const int* light_of_slot, EnvironmentMap env,
                                     GLOBAL_MEM const float4* env_texels, GLOBAL_MEM const AliasEntry* env_alias) {
     RenderScene scene;
     scene.materials = materials;
-    scene.measured = measured;
+    scene.tables = tables;
     scene.emission = emission;
     scene.lights = lights;
     scene.light_cdf = light_cdf;

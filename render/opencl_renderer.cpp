@@ -84,13 +84,18 @@ void OpenClRenderer::upload_scene() {
         uploaded_texels_version_ = texels_version();
     }
     materials_ = upload(runtime_, compiled_.materials);
-    // the measured tables only for a scene that has a measured material, and only when they changed
-    bool measured = false;
-    for (const brdf::Material& m : compiled_.materials) measured = measured || m.model == BRDF_MODEL_MEASURED;
-    size_t measured_floats = measured ? brdf::measured_table_data().size() : 0;
-    if (!measured_ || measured_floats != measured_floats_) {
-        measured_ = upload(runtime_, measured ? brdf::measured_table_data() : std::vector<float>());
-        measured_floats_ = measured_floats;
+    // the BSDF's tables (brdf/bsdf_tables.h) only as far as the scene reads them, and only when that
+    // changed: all of them with a measured material, the energy tables with an anisotropic one (the
+    // viewer's sliders change anisotropy without a new kernel), else one float
+    bool measured = false, anisotropic = false;
+    for (const brdf::Material& m : compiled_.materials) {
+        measured = measured || m.model == BRDF_MODEL_MEASURED;
+        anisotropic = anisotropic || m.anisotropic != 0.0f;
+    }
+    size_t table_floats = measured ? brdf::bsdf_table_data().size() : anisotropic ? size_t(BSDF_TABLES_MEASURED) : 0;
+    if (!tables_ || table_floats != table_floats_) {
+        tables_ = upload(runtime_, measured ? brdf::bsdf_table_data() : anisotropic ? brdf::bsdf_energy_table_data() : std::vector<float>());
+        table_floats_ = table_floats;
     }
     emission_buffer_ = upload(runtime_, emission_);
     lights_buffer_ = upload(runtime_, lights_.lights);
@@ -122,7 +127,7 @@ cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel
     opencl::set_kernel_arg(kernel, a++, launch_settings);
     opencl::set_kernel_arg(kernel, a++, camera_);
     opencl::set_kernel_arg(kernel, a++, bound_environment().map());
-    for (const opencl::BufferHandle* b : {&texels_, &alias_, &materials_, &measured_, &emission_buffer_, &lights_buffer_,
+    for (const opencl::BufferHandle* b : {&texels_, &alias_, &materials_, &tables_, &emission_buffer_, &lights_buffer_,
                                           &light_cdf_, &light_of_slot_, &accumulation_, &squares_, &splat_, &rays_, &lost_})
         opencl::set_kernel_arg(kernel, a++, *b);
     return a;

@@ -58,8 +58,8 @@ private:
     WavefrontDriver wavefront_driver_;  // used when wavefront()
     size_t local_size_ = 64;
     opencl::BufferHandle texels_, alias_, materials_, emission_buffer_, lights_buffer_, light_cdf_, light_of_slot_;
-    opencl::BufferHandle measured_;  // brdf::measured_table_data(), or one float for a scene without measured materials
-    size_t measured_floats_ = 0;
+    opencl::BufferHandle tables_;  // brdf::bsdf_table_data(), its energy tables alone, or one float (upload_scene)
+    size_t table_floats_ = 0;
     opencl::BufferHandle accumulation_, squares_, splat_, rays_, lost_;
     size_t film_pixels_ = 0;  // the size the film buffers were made for
     const brdf::float4* uploaded_texels_ = nullptr;  // the environment texels texels_ holds

@@ -167,7 +167,7 @@ const ibl::Environment& Renderer::bound_environment() const {
 
 kernel::RenderScene Renderer::host_render_scene() const {
     const ibl::Environment& env = bound_environment();
-    return kernel::render_scene_make(compiled_.materials.data(), brdf::measured_tables(), emission_.data(), lights_.lights.data(),
+    return kernel::render_scene_make(compiled_.materials.data(), brdf::bsdf_tables(), emission_.data(), lights_.lights.data(),
                                      lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(), bound_texels().data(),
                                      env.alias().data());
 }

@@ -74,7 +74,7 @@ struct Fixture {
         lights = lab::render::build_light_set(compiled, &*input.environment, lab::render::LightSelection::uniform);
         emission = lab::render::emission_table(compiled);
         const lab::ibl::Environment& env = *input.environment;
-        scene = render_scene_make(compiled.materials.data(), brdf::measured_tables(), emission.data(), lights.lights.data(),
+        scene = render_scene_make(compiled.materials.data(), brdf::bsdf_tables(), emission.data(), lights.lights.data(),
                                   lights.selection_cdf.data(), lights.light_of_slot.data(), env.map(), env.texels().data(), env.alias().data());
         camera = lab::render::make_camera(compiled.camera, 32, 32, "test");
         march = render_march_settings(&settings);

@@ -98,7 +98,7 @@ TEST_CASE("a measured preset reads its table once and evaluates it", "[measured]
     // a second preset naming the same file shares its block
     fs::path again = write_text(f.dir / "again.json", R"({"measured": "table.binary"})");
     CHECK(brdf::load_preset(again.string()).material.measured_offset == f.measured.measured_offset);
-    const float* block = brdf::measured_table_data().data() + f.measured.measured_offset;
+    const float* block = brdf::bsdf_table_data().data() + f.measured.measured_offset;
     // at a bin centre the table holds the lab material's value
     brdf::HalfDiffAngles a = brdf::merl_bin_center(40, 30, 50);
     float3 wo, wi;

@@ -59,7 +59,7 @@ TEST_CASE("sampling efficiency: delta lobes are excluded and reported", "[sampli
     coated.weight_specular = 1.0f;  // half the weight is the mirror, picked by its Fresnel reflectance at wo
     e = lab::validation::sampling_efficiency(coated, kWo, 20000);
     CHECK(e.has_delta_lobe);
-    brdf::LobeChoice choice = brdf::lab_lobe_choice(&coated, brdf::lab_lobe_weights(&coated), brdf::microfacet_from_material(&coated), kWo);
+    brdf::LobeChoice choice = brdf::lab_lobe_choice(&coated, brdf::lab_lobe_weights(&coated), brdf::microfacet_from_material(&coated), brdf::bsdf_tables(), kWo);
     CHECK(e.delta_fraction == Approx(choice.specular).margin(4.0 * std::sqrt(choice.specular * (1.0 - choice.specular) / 20000.0)));
     CHECK(e.mean_cosine == Approx(0.4).epsilon(1e-4));  // the diffuse half of albedo 0.8
     CHECK(e.mean_bsdf == Approx(0.4).epsilon(0.03));
@@ -76,7 +76,7 @@ TEST_CASE("sampling efficiency: a faint or broad lobe beside a diffuse one is sa
         for (float theta : {0.0f, 45.0f}) {
             brdf::Material m = brdf::load_preset(path).material;
             brdf::float3 wo = brdf::direction_from_degrees(theta, 0.0f);
-            brdf::LobeChoice c = brdf::lab_lobe_choice(&m, brdf::lab_lobe_weights(&m), brdf::microfacet_from_material(&m), wo);
+            brdf::LobeChoice c = brdf::lab_lobe_choice(&m, brdf::lab_lobe_weights(&m), brdf::microfacet_from_material(&m), brdf::bsdf_tables(), wo);
             INFO(path << " at " << theta << " deg: glossy " << c.glossy << ", subsurface " << c.subsurface);
             CHECK(c.cosine > 0.999f);
         }

@@ -18,7 +18,7 @@ void add_distribution(const Microfacet& mf, Needs* needs) {
 // Mirrors the branches of openpbr_eval / openpbr_pdf / openpbr_sample (brdf/openpbr_model.h).
 void add_openpbr(const Material& m, Needs* needs) {
     needs->openpbr = true;
-    OpenPbr p = openpbr_setup(&m, float3(0.0f, 0.0f, 1.0f));
+    OpenPbr p = openpbr_setup(&m, bsdf_tables(), float3(0.0f, 0.0f, 1.0f));
     needs->fuzz = needs->fuzz || m.fuzz_weight > 0.0f;
     needs->coat = needs->coat || m.coat_weight > 0.0f;
     needs->emission = needs->emission || material_emits(&m);

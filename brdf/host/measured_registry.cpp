@@ -8,6 +8,9 @@
 #include <memory>
 #include <mutex>
 
+#include <cstring>
+
+#include "brdf/brdf.hpp"
 #include "common/input_error.hpp"
 
 namespace brdf {
@@ -19,9 +22,9 @@ namespace {
 using Array = std::shared_ptr<const std::vector<float>>;
 struct Registry {
     std::mutex mutex;  // serialises registrations
-    Array current = std::make_shared<const std::vector<float>>();
+    Array current = std::make_shared<const std::vector<float>>(bsdf_energy_table_data());
     std::vector<Array> retired;
-    std::atomic<const float*> data{nullptr};  // current->data(), read on every host evaluation
+    std::atomic<const float*> data{current->data()};  // current->data(), read on every host evaluation
     std::map<std::string, int> offsets;  // by file (canonical path) or table source
 };
 
@@ -75,9 +78,20 @@ std::vector<float> block_of(const MeasuredTable& table) {
 
 }  // namespace
 
-const float* measured_tables() { return registry().data.load(std::memory_order_acquire); }
+const float* bsdf_tables() { return registry().data.load(std::memory_order_acquire); }
 
-const std::vector<float>& measured_table_data() { return *std::atomic_load(&registry().current); }
+const std::vector<float>& bsdf_table_data() { return *std::atomic_load(&registry().current); }
+
+std::vector<float> bsdf_energy_table_data() {
+    static_assert(sizeof(energy_ggx_anisotropic_albedo) <= (BSDF_TABLES_ANISOTROPIC_AVERAGE - BSDF_TABLES_ANISOTROPIC_ALBEDO) * sizeof(float),
+                  "the anisotropic codes fit their floats");
+    static_assert(sizeof(energy_ggx_anisotropic_average) == (BSDF_TABLES_MEASURED - BSDF_TABLES_ANISOTROPIC_AVERAGE) * sizeof(float),
+                  "the anisotropic averages fill theirs");
+    std::vector<float> data(BSDF_TABLES_MEASURED, 0.0f);
+    std::memcpy(data.data() + BSDF_TABLES_ANISOTROPIC_ALBEDO, energy_ggx_anisotropic_albedo, sizeof(energy_ggx_anisotropic_albedo));
+    std::memcpy(data.data() + BSDF_TABLES_ANISOTROPIC_AVERAGE, energy_ggx_anisotropic_average, sizeof(energy_ggx_anisotropic_average));
+    return data;
+}
 
 void append_measured_sampler(std::vector<float>* block) {
     const float* table = block->data();

@@ -1,7 +1,8 @@
-// The measured tables of this process: every measured material's block (brdf/measured.h: its MERL
-// table and its sampler) in one float array, so that a material names its table by an offset that
-// means the same on the host and in a kernel's buffer (the renderers upload this array as it is).
-// A file is read and its sampler built once, however many presets name it.
+// The BSDF's tables of this process (brdf/bsdf_tables.h): the anisotropic energy table, then every
+// measured material's block (brdf/measured.h: its MERL table and its sampler) in one float array, so
+// that a material names its table by an offset that means the same on the host and in a kernel's
+// buffer (the renderers upload this array as it is). A file is read and its sampler built once,
+// however many presets name it.
 //
 // Registration publishes a grown copy of the array and keeps the earlier ones alive, so presets may
 // be loaded (the viewer) while other threads evaluate: a pointer read before stays valid, and an
@@ -21,9 +22,12 @@ int register_measured_file(const std::string& path);
 // The same for a table in memory; `table.source` names it and is the key that shares it.
 int register_measured_table(const MeasuredTable& table);
 
-// The whole array as of now: bsdf_eval's tables on the host, and what a kernel's buffer argument
-// receives. The reference stays valid for the life of the process.
-const std::vector<float>& measured_table_data();
+// The whole array as of now: bsdf_eval's tables on the host (bsdf_tables()), and what a kernel's
+// buffer argument receives. The reference stays valid for the life of the process.
+const std::vector<float>& bsdf_table_data();
+// Its first BSDF_TABLES_MEASURED floats, the energy tables alone: what a kernel needs for a scene
+// with anisotropic GGX materials and no measured ones.
+std::vector<float> bsdf_energy_table_data();
 
 // The sampler of one table, appended to `block` after the table (brdf/measured.h's layout): per bin of
 // theta_o, CDFs of the mean over RGB of f cos_i times solid angle, averaged over 2 x 2 points per cell,

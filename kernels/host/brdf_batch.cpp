@@ -63,12 +63,11 @@ void BrdfBatch::set_materials(const std::vector<brdf::Material>& materials) {
     materials_ = runtime_.buffer(materials.size() * sizeof(brdf::Material), CL_MEM_READ_ONLY);
     runtime_.write(materials_, materials.data(), materials.size() * sizeof(brdf::Material));
     material_count_ = materials.size();
-    // the measured tables as the host has them now, so measured materials keep their offsets; one
-    // float when there are none (a buffer cannot be empty)
-    const std::vector<float>& tables = brdf::measured_table_data();
-    size_t floats = std::max<size_t>(tables.size(), 1);
-    measured_ = runtime_.buffer(floats * sizeof(float), CL_MEM_READ_ONLY);
-    if (!tables.empty()) runtime_.write(measured_, tables.data(), tables.size() * sizeof(float));
+    // the BSDF's tables as the host has them now (brdf/bsdf_tables.h), so measured materials keep
+    // their offsets and anisotropic ones find the energy table
+    const std::vector<float>& tables = brdf::bsdf_table_data();
+    tables_ = runtime_.buffer(tables.size() * sizeof(float), CL_MEM_READ_ONLY);
+    runtime_.write(tables_, tables.data(), tables.size() * sizeof(float));
 }
 
 void BrdfBatch::check_inputs(const std::vector<int>& material, size_t wo_count, size_t third_count) const {
@@ -111,7 +110,7 @@ std::vector<brdf::float3> BrdfBatch::eval(const std::vector<int>& material, cons
     upload_inputs(material, wo, wi, &index, &wo_buffer, &wi_buffer);
     size_t n = material.size();
     BufferHandle f = runtime_.buffer(n * sizeof(brdf::float3), CL_MEM_WRITE_ONLY);
-    opencl::set_kernel_args(eval_, int(n), materials_, measured_, index, wo_buffer, wi_buffer, f);
+    opencl::set_kernel_args(eval_, int(n), materials_, tables_, index, wo_buffer, wi_buffer, f);
     run(eval_, n);
     Clock::time_point start = Clock::now();
     std::vector<brdf::float3> out(n);
@@ -126,7 +125,7 @@ std::vector<float> BrdfBatch::pdf(const std::vector<int>& material, const std::v
     upload_inputs(material, wo, wi, &index, &wo_buffer, &wi_buffer);
     size_t n = material.size();
     BufferHandle pdf = runtime_.buffer(n * sizeof(float), CL_MEM_WRITE_ONLY);
-    opencl::set_kernel_args(pdf_, int(n), materials_, measured_, index, wo_buffer, wi_buffer, pdf);
+    opencl::set_kernel_args(pdf_, int(n), materials_, tables_, index, wo_buffer, wi_buffer, pdf);
     run(pdf_, n);
     Clock::time_point start = Clock::now();
     std::vector<float> out(n);
@@ -144,7 +143,7 @@ std::vector<brdf::BsdfSample> BrdfBatch::sample(const std::vector<int>& material
     BufferHandle f = runtime_.buffer(n * sizeof(brdf::float3), CL_MEM_WRITE_ONLY);
     BufferHandle pdf = runtime_.buffer(n * sizeof(float), CL_MEM_WRITE_ONLY);
     BufferHandle flags = runtime_.buffer(n * sizeof(int), CL_MEM_WRITE_ONLY);
-    opencl::set_kernel_args(sample_, int(n), materials_, measured_, index, wo_buffer, u_buffer, wi, f, pdf, flags);
+    opencl::set_kernel_args(sample_, int(n), materials_, tables_, index, wo_buffer, u_buffer, wi, f, pdf, flags);
     run(sample_, n);
     Clock::time_point start = Clock::now();
     std::vector<brdf::float3> wi_out(n), f_out(n);

@@ -54,7 +54,7 @@ private:
     opencl::KernelHandle eval_, pdf_, sample_;
     size_t local_size_ = 64;
     opencl::BufferHandle materials_;
-    opencl::BufferHandle measured_;  // brdf::measured_table_data() when set_materials ran
+    opencl::BufferHandle tables_;  // brdf::bsdf_table_data() when set_materials ran
     size_t material_count_ = 0;
     BatchTiming timing_;
 };
