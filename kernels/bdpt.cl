@@ -13,8 +13,8 @@ __kernel void render_bdpt(RenderKernelSettings settings, Camera camera, Environm
                           __global const AliasEntry* env_alias,
                           __global const Material* materials, __global const float* tables, __global const float4* emission, __global const Light* lights,
                           __global const float* light_cdf, __global const int* light_of_slot, __global float4* accumulation,
-                          __global float4* squares, __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts) {
-    int pixel = (int)get_global_id(0);
+                          __global float4* squares, __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts, int first_pixel) {
+    int pixel = first_pixel + (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
     RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     bdpt_pixel(&settings, &camera, &scene, pixel, accumulation, squares, splat, ray_counts, lost_ray_counts);

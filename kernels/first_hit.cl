@@ -15,8 +15,8 @@ __kernel void render_first_hits(RenderKernelSettings settings, Camera camera, En
                                 __global const float4* emission, __global const Light* lights, __global const float* light_cdf,
                                 __global const int* light_of_slot, __global float4* accumulation, __global float4* squares, __global uint* splat,
                                 __global uint* ray_counts, __global uint* lost_ray_counts, __global float4* albedo_sums,
-                                __global float4* normal_depth_sums, int slot_sample, __global int* slots) {
-    int pixel = (int)get_global_id(0);
+                                __global float4* normal_depth_sums, int slot_sample, __global int* slots, int first_pixel) {
+    int pixel = first_pixel + (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
     (void)accumulation, (void)squares, (void)splat, (void)ray_counts, (void)lost_ray_counts;
     RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);

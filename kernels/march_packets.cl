@@ -142,9 +142,8 @@ SS_FN SS_INLINE_ALWAYS void march_granule(MarchSettings march_settings, int firs
  * MARCH_RAYS_PER_ITEM), and the host launches only the half that has rays when the other has none.
  * A launch costs some fifty microseconds on a CPU, a tenth of a step of a simple scene. Work-item g
  * of its half marches rays MARCH_RAYS_PER_ITEM g ... up to `pixels` (march_granule). A launch's
- * first work-item is `first_item`, not a global offset: PoCL compiles a kernel once more for
- * launches at an offset (its work-group functions are specialised for offset 0), and the shadow
- * half alone starts at `granules`. */
+ * first work-item is `first_item`, not a global offset (render/opencl_launch.hpp says why): the
+ * shadow half alone starts at `granules`. */
 __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, __global const float* path_rays, __global RayMarch* path_marches,
                          __global const float* shadow_rays, __global RayMarch* shadow_marches, int first_item) {
     const int granules = (pixels + MARCH_RAYS_PER_ITEM - 1) / MARCH_RAYS_PER_ITEM;
@@ -156,15 +155,16 @@ __kernel void march_rays(RenderKernelSettings settings, int pixels, int stride, 
 }
 
 /* The wavefront's camera rays of a pinhole camera (kernels/path_tracer_wavefront.h), begun on the
- * lanes and marched: work-item g takes the `paths` granule g holds, eight at a time, and leaves
+ * lanes and marched: work-item g (from `first_item`, render/opencl_launch.hpp) takes the `paths`
+ * granule g holds, eight at a time, and leaves
  * each path's camera ray in `rays` and its generator after the ray's four numbers in `camera_rngs`
  * (four arrays of `stride` words), as path_tracer_camera_step computes them one path at a time, to
  * the bit; then it marches them (march_granule). One launch instead of a camera step and a march,
  * and the camera's Philox, divisions and square root eight paths to an instruction: a camera
  * step of one path per work-item costs a seventh of the sphere's time. */
 __kernel void march_camera_rays(RenderKernelSettings settings, Camera camera, int paths, int stride, __global float* rays,
-                                __global uint* camera_rngs, __global RayMarch* marches) {
-    const int first = (int)get_global_id(0) * MARCH_RAYS_PER_ITEM;
+                                __global uint* camera_rngs, __global RayMarch* marches, int first_item) {
+    const int first = (first_item + (int)get_global_id(0)) * MARCH_RAYS_PER_ITEM;
     if (first >= paths) return;
     const int end = min(first + MARCH_RAYS_PER_ITEM, paths);
     const int pixels = camera.width * camera.height;

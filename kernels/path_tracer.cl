@@ -1,7 +1,9 @@
 /* The path tracer on OpenCL (kernels/path_tracer.h): render_pt, one work-item per pixel, each launch
  * adding `sample_count` samples to every pixel of the film (kernels/film.h); or render_pt_step, the
  * wavefront's step (kernels/path_tracer_wavefront.h), whose marches run in packet kernels. Every integrator kernel takes
- * the same arguments, so the host (render/opencl_renderer) binds them the same way. */
+ * the same arguments, so the host (render/opencl_renderer) binds them the same way; a kernel launched
+ * over a range of pixels or paths takes the range's first as its last argument, not as a global
+ * offset (render/opencl_launch.hpp). */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "scene/materials.h" /* the feature switches, before any brdf/ header */
@@ -14,8 +16,8 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
                         __global const AliasEntry* env_alias,
                         __global const Material* materials, __global const float* tables, __global const float4* emission, __global const Light* lights,
                         __global const float* light_cdf, __global const int* light_of_slot, __global float4* accumulation, __global float4* squares,
-                        __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts) {
-    int pixel = (int)get_global_id(0);
+                        __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts, int first_pixel) {
+    int pixel = first_pixel + (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
     RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     (void)splat; /* the path tracer adds to its own pixel only */
@@ -38,8 +40,8 @@ __kernel void render_pt(RenderKernelSettings settings, Camera camera, Environmen
 /* A step of every path, path_tracer_step; `first` (iteration 1) begins the paths. One kernel for
  * both, the step's flag an argument: the scatter is most of the program's code, and a kernel of its
  * own for the first step would have PoCL compile it twice for every scene and material. */
-__kernel void render_pt_step(WAVEFRONT_KERNEL_ARGUMENTS, int first) {
-    int path = (int)get_global_id(0);
+__kernel void render_pt_step(WAVEFRONT_KERNEL_ARGUMENTS, int first, int first_path) {
+    int path = first_path + (int)get_global_id(0);
     if (path >= slots * camera.width * camera.height) return;
     RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
     WavefrontFilm film = {slots, accumulation, squares, ray_counts, lost_ray_counts, path_radiance, path_rays, path_lost_rays};
@@ -49,8 +51,8 @@ __kernel void render_pt_step(WAVEFRONT_KERNEL_ARGUMENTS, int first) {
 }
 
 /* The camera rays of a camera that the packets do not begin themselves (a thin lens). */
-__kernel void render_pt_camera(WAVEFRONT_KERNEL_ARGUMENTS) {
-    int path = (int)get_global_id(0);
+__kernel void render_pt_camera(WAVEFRONT_KERNEL_ARGUMENTS, int first_path) {
+    int path = first_path + (int)get_global_id(0);
     if (path >= slots * camera.width * camera.height) return;
     (void)env, (void)env_texels, (void)env_alias, (void)materials, (void)tables, (void)emission, (void)lights, (void)light_cdf;
     (void)light_of_slot, (void)accumulation, (void)squares, (void)splat, (void)ray_counts, (void)lost_ray_counts, (void)states, (void)shadow_rays;

@@ -72,10 +72,10 @@ void Runtime::zero(const BufferHandle& buffer, size_t bytes) const {
     check_cl(clEnqueueFillBuffer(queue_.get(), buffer.get(), &pattern, sizeof(pattern), 0, bytes, 0, nullptr, nullptr), "clEnqueueFillBuffer");
 }
 
-void Runtime::launch_1d(const KernelHandle& kernel, size_t count, size_t local, size_t offset) const {
+void Runtime::launch_1d(const KernelHandle& kernel, size_t count, size_t local) const {
     if (count == 0) return;
     size_t global = (count + local - 1) / local * local;
-    check_cl(clEnqueueNDRangeKernel(queue_.get(), kernel.get(), 1, offset ? &offset : nullptr, &global, &local, 0, nullptr, nullptr),
+    check_cl(clEnqueueNDRangeKernel(queue_.get(), kernel.get(), 1, nullptr, &global, &local, 0, nullptr, nullptr),
              "clEnqueueNDRangeKernel");
 }
 

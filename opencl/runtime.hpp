@@ -47,10 +47,10 @@ public:
 
     // Enqueues `count` work-items in groups of `local` (the global size is rounded up, so kernels
     // check their index against the count). A fixed local size keeps PoCL from compiling a new
-    // work-group function for every batch size.
-    // Work-items offset .. offset + count - 1 (get_global_id includes the offset), in work-groups of
-    // `local`: the last group runs past the count, so kernels check their id against their size.
-    void launch_1d(const KernelHandle& kernel, size_t count, size_t local, size_t offset = 0) const;
+    // work-group function for every batch size, and so does the global offset, always 0: PoCL
+    // specialises its work-group functions for offset 0 and compiles a kernel again for any other
+    // (a kernel that starts elsewhere takes its first work-item as an argument, render/opencl_launch.hpp).
+    void launch_1d(const KernelHandle& kernel, size_t count, size_t local) const;
     void finish() const;
 
 private:

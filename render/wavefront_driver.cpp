@@ -112,12 +112,10 @@ cl_uint WavefrontDriver::bind_step(const WavefrontTarget& target, const opencl::
     return a;
 }
 
-// march_rays' work-items `packets` of the rays' granules, then the shadow rays': the first one an
-// argument, the launch at offset 0 (kernels/march_packets.cl says why).
+// march_rays' work-items `packets` of the rays' granules, then the shadow rays'.
 void WavefrontDriver::launch_packets(const kernel::RenderKernelSettings& settings, const Ranges& r, PixelRange packets) const {
-    opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_,
-                            cl_int(packets.first));
-    runtime_.launch_1d(march_rays_, size_t(packets.count), kPacketLocal);
+    opencl::set_kernel_args(march_rays_, settings, r.path_count, stride_, path_rays_, ray_marches_, shadow_rays_, shadow_marches_);
+    launch_range(runtime_, march_rays_, packets, kPacketLocal, 2 * size_t(r.granules));
 }
 
 void WavefrontDriver::ended(WavefrontLaunch kind, Clock::time_point start, bool wait) {
@@ -177,7 +175,7 @@ void WavefrontDriver::launch_resolve(const WavefrontTarget& target, int slots) {
     const int image = target.image_pixels;
     opencl::set_kernel_args(resolve_kernel_, image, slots, *target.accumulation, *target.squares, *target.rays, *target.lost, path_radiance_, path_ray_counts_,
                             path_lost_counts_);
-    launch_range(runtime_, resolve_kernel_, PixelRange{0, image}, target.local_size, size_t(image));
+    runtime_.launch_1d(resolve_kernel_, size_t(image), target.local_size);
     ended(WavefrontLaunch::resolve, resolve_start);
 }
 
