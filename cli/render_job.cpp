@@ -168,7 +168,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
 
 std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const std::string& device, std::optional<opencl::Runtime>* runtime) {
     if (device == "host") return std::make_unique<render::HostRenderer>(job.input);
-    runtime->emplace(device);
+    if (!*runtime) runtime->emplace(device);
     return std::make_unique<render::OpenClRenderer>(**runtime, job.input);
 }
 

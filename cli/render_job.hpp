@@ -73,7 +73,9 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& options, 
 RenderJob prepare_render_job(const RenderJobOptions& options);
 
 // The renderer the job runs on: the C++ build for `--device host`, else the OpenCL device the
-// selector names (the runtime is made here and kept in `runtime`).
+// selector names (the runtime is made here on the first call and kept in `runtime`; later calls
+// with the same `runtime` render on it, so that a program built for one renderer serves the next,
+// opencl::Runtime::build).
 std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const std::string& device,
                                                 std::optional<opencl::Runtime>* runtime);
 

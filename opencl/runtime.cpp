@@ -1,5 +1,8 @@
 #include "opencl/runtime.hpp"
 
+#include <algorithm>
+#include <list>
+#include <mutex>
 #include <vector>
 
 namespace lab::opencl {
@@ -11,7 +14,16 @@ KernelHandle Program::kernel(const char* name) const {
     return KernelHandle(k);
 }
 
-Runtime::Runtime(const std::string& selector) : device_(select_device(selector)) {
+struct Runtime::BuiltPrograms {
+    struct Entry {
+        std::string options, text;
+        ProgramHandle program;
+    };
+    std::mutex mutex;
+    std::list<Entry> entries;
+};
+
+Runtime::Runtime(const std::string& selector) : device_(select_device(selector)), built_(std::make_unique<BuiltPrograms>()) {
     cl_int err = CL_SUCCESS;
     cl_context_properties properties[] = {CL_CONTEXT_PLATFORM, cl_context_properties(device_.platform), 0};
     context_ = ContextHandle(clCreateContext(properties, 1, &device_.device, nullptr, nullptr, &err));
@@ -20,7 +32,28 @@ Runtime::Runtime(const std::string& selector) : device_(select_device(selector))
     check_cl(err, "clCreateCommandQueue");
 }
 
+Runtime::~Runtime() = default;
+Runtime::Runtime(Runtime&&) noexcept = default;
+Runtime& Runtime::operator=(Runtime&&) noexcept = default;
+
 Program Runtime::build(const AssembledSource& source, const std::string& options) const {
+    std::lock_guard<std::mutex> lock(built_->mutex);
+    std::list<BuiltPrograms::Entry>& entries = built_->entries;
+    auto found = std::find_if(entries.begin(), entries.end(),
+                              [&](const BuiltPrograms::Entry& e) { return e.options == options && e.text == source.text; });
+    if (found == entries.end()) {
+        Program program = build_new(source, options);
+        check_cl(clRetainProgram(program.get()), "clRetainProgram");
+        entries.push_front(BuiltPrograms::Entry{options, source.text, ProgramHandle(program.get())});
+        if (entries.size() > kBuiltPrograms) entries.pop_back();
+        return program;
+    }
+    entries.splice(entries.begin(), entries, found);
+    check_cl(clRetainProgram(found->program.get()), "clRetainProgram");
+    return Program(ProgramHandle(found->program.get()), source);
+}
+
+Program Runtime::build_new(const AssembledSource& source, const std::string& options) const {
     cl_int err = CL_SUCCESS;
     const char* text = source.text.c_str();
     size_t length = source.text.size();

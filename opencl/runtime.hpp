@@ -2,6 +2,7 @@
 // building an assembled kernel source with mapped error messages, buffers, 1D launches.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include <CL/cl.h>
@@ -29,15 +30,23 @@ class Runtime {
 public:
     // Selector as in select_device(); throws DeviceNotFound or OpenClError.
     explicit Runtime(const std::string& selector = "");
+    ~Runtime();
+    Runtime(Runtime&&) noexcept;
+    Runtime& operator=(Runtime&&) noexcept;
 
     const DeviceInfo& device() const { return device_; }
     cl_context context() const { return context_.get(); }
     cl_command_queue queue() const { return queue_.get(); }
 
     // Compiles with clBuildProgram. PoCL keeps its kernel cache (POCL_CACHE_DIR, by default
-    // ~/.cache/pocl/kcache), so an unchanged source and option string build warm.
+    // ~/.cache/pocl/kcache), so an unchanged source and option string build warm; and this runtime
+    // keeps its kBuiltPrograms most recent programs, so that the same source and options built again
+    // (a renderer per seed, per light selection or per preset of the same features) are that program,
+    // with no build at all: a warm build still reads and parses the program's bitcode, a tenth of a
+    // second of CPU for a path tracer.
     // Throws KernelBuildError: first line the first error at its original file:line, then the log.
     Program build(const AssembledSource& source, const std::string& options) const;
+    static constexpr size_t kBuiltPrograms = 8;
 
     BufferHandle buffer(size_t bytes, cl_mem_flags flags) const;
     void write(const BufferHandle& buffer, const void* data, size_t bytes) const;
@@ -54,9 +63,13 @@ public:
     void finish() const;
 
 private:
+    struct BuiltPrograms;  // the programs build() keeps, most recent first
+    Program build_new(const AssembledSource& source, const std::string& options) const;
+
     DeviceInfo device_;
     ContextHandle context_;
     QueueHandle queue_;
+    std::unique_ptr<BuiltPrograms> built_;
 };
 
 template <typename T>

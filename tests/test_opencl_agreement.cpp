@@ -1,3 +1,35 @@
+TEST_CASE("OpenCL: a runtime gives its recent programs again for the same source and options, and builds the rest", "[opencl]") {
+    auto source = [](int value) {
+        const std::string text = "__kernel void k(__global int* x) { x[0] = " + std::to_string(value) + "; }\n";
+        return lab::opencl::assemble_source("kernels/k.cl", [&](const std::string&) -> std::string_view { return text; });
+    };
+    auto run = [](const lab::opencl::Runtime& runtime, const lab::opencl::Program& program) {
+        lab::opencl::BufferHandle out = runtime.buffer(sizeof(cl_int), CL_MEM_READ_WRITE);
+        lab::opencl::KernelHandle kernel = program.kernel("k");
+        lab::opencl::set_kernel_args(kernel, out);
+        runtime.launch_1d(kernel, 1, 1);
+        cl_int value = 0;
+        runtime.read(out, &value, sizeof(value));
+        return value;
+    };
+    lab::opencl::Runtime runtime;
+    const lab::opencl::Program first = runtime.build(source(1), "-cl-std=CL1.2");
+    CHECK(runtime.build(source(1), "-cl-std=CL1.2").get() == first.get());
+    // another source or other options: a program of its own, which runs its own code
+    const lab::opencl::Program other = runtime.build(source(2), "-cl-std=CL1.2");
+    CHECK(other.get() != first.get());
+    CHECK(runtime.build(source(1), "-cl-std=CL1.2 -DUNUSED").get() != first.get());
+    CHECK(run(runtime, runtime.build(source(2), "-cl-std=CL1.2")) == 2);
+    CHECK(run(runtime, runtime.build(source(1), "-cl-std=CL1.2")) == 1);
+    // the most recent kBuiltPrograms are kept: one used again stays, the least recent is built anew
+    for (int i = 0; i < int(lab::opencl::Runtime::kBuiltPrograms) - 1; ++i) runtime.build(source(100 + i), "-cl-std=CL1.2");
+    CHECK(runtime.build(source(1), "-cl-std=CL1.2").get() == first.get());
+    runtime.build(source(99), "-cl-std=CL1.2");
+    CHECK(runtime.build(source(2), "-cl-std=CL1.2").get() != other.get());
+    // a program outlives the runtime's keeping it
+    CHECK(run(runtime, other) == 2);
+}
+
 // The OpenCL build of the BRDF module (kernels/brdf_batch.cl on PoCL) against its C++ build: the
 // same materials (every preset, 990 random ones), directions (grazing ones included) and random
 // numbers give bsdf_eval, bsdf_pdf and bsdf_sample results equal to 1e-5 relative. Where an item is
