@@ -161,7 +161,7 @@ SS_FN float multiple_scattering_albedo(Microfacet mf, GLOBAL_MEM const float* ta
 }
 
 #ifndef __OPENCL_C_VERSION__
-/* On the host, E and E_avg through the process's tables (brdf/host/bsdf_table_registry.cpp). */
+/* On the host, E and E_avg through the process's tables (brdf/host/measured_registry.cpp). */
 inline float microfacet_energy_albedo(Microfacet mf, float3 w) { return microfacet_energy_albedo(mf, bsdf_tables(), w); }
 inline float microfacet_energy_average(Microfacet mf) { return microfacet_energy_average(mf, bsdf_tables()); }
 #endif

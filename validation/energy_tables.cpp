@@ -24,8 +24,8 @@ namespace {
 // (0.2 % at alpha 0.04), lies in a sliver of u1 near 1 that an even grid misses or catches by turns
 // (64 strata: E 0.6 % low at alpha 0.09, 0.2 % high at alpha 0.04, against 2048). So GGX's grid is even
 // in s, u1 = 1 - (1 - s)^2, even in the height sqrt(1 - u1) of the disk at normal incidence, which
-// puts a cell in every 1/64 of that height: within 5e-4 of 2048 strata at 64 (validation/README.md's
-// table check compares the entries with an independent estimate). Hyper-Cauchy's sampler has no such rim.
+// puts a cell in every 1/64 of that height: within 5e-4 of 2048 strata at 64 (tests/test_energy_compensation.cpp
+// compares it with the lab's own sampler). Hyper-Cauchy's sampler has no such rim.
 double visible_normal_albedo(brdf::Microfacet mf, brdf::float3 wo, int strata, const std::function<float(brdf::float3)>& f) {
     const bool rim = mf.kind == BRDF_DISTRIBUTION_GGX;
     double sum = 0.0;
