@@ -55,7 +55,7 @@ SS_FN float energy_grid_nodes_coordinate(CONSTANT_MEM const float* nodes, int n,
 
 /* The ratio nodes, dense below 0.5, where E near grazing turns fastest with q; the azimuth nodes
  * (degrees), dense towards the shorter axis at 90, where the projected roughness of a strongly
- * anisotropic lobe falls within a few degrees (nodes even in phi leave 1.5 % there at q = 0.1). */
+ * anisotropic lobe falls within a few degrees (docs/materials.md, "Anisotropic compensation"). */
 CONSTANT_MEM const float anisotropic_grid_ratio_nodes[ANISO_GRID_RATIO] = {0.0f, 0.1f, 0.175f, 0.25f, 0.375f, 0.5f, 0.75f, 1.0f};
 CONSTANT_MEM const float anisotropic_grid_phi_nodes[ANISO_GRID_PHI] = {0.0f, 20.0f, 35.0f, 47.0f, 57.0f, 65.0f, 72.0f, 78.0f, 83.0f, 87.0f, 90.0f};
 

@@ -1,6 +1,5 @@
 #include "kernels/host/brdf_batch.hpp"
 
-#include <algorithm>
 #include <chrono>
 
 #include "brdf/host/measured_registry.hpp"
