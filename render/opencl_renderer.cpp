@@ -17,11 +17,16 @@ namespace {
 // Without -cl-fast-relaxed-math: the kernel shares its BRDF with the host, and NaN guards matter.
 constexpr const char* kBuildOptions = "-cl-std=CL1.2 -cl-fp32-correctly-rounded-divide-sqrt";
 
+// The first `count` elements of `data` (one element's bytes when there are none: a buffer cannot be empty).
+template <typename T>
+opencl::BufferHandle upload(const opencl::Runtime& runtime, const T* data, size_t count) {
+    opencl::BufferHandle buffer = runtime.buffer(std::max<size_t>(count, 1) * sizeof(T), CL_MEM_READ_ONLY);
+    if (count > 0) runtime.write(buffer, data, count * sizeof(T));
+    return buffer;
+}
 template <typename T>
 opencl::BufferHandle upload(const opencl::Runtime& runtime, const std::vector<T>& data) {
-    opencl::BufferHandle buffer = runtime.buffer(std::max<size_t>(data.size(), 1) * sizeof(T), CL_MEM_READ_ONLY);
-    if (!data.empty()) runtime.write(buffer, data.data(), data.size() * sizeof(T));
-    return buffer;
+    return upload(runtime, data.data(), data.size());
 }
 
 }  // namespace
@@ -85,8 +90,8 @@ void OpenClRenderer::upload_scene() {
     }
     materials_ = upload(runtime_, compiled_.materials);
     // the BSDF's tables (brdf/bsdf_tables.h) only as far as the scene reads them, and only when that
-    // changed: all of them with a measured material, the energy tables with an anisotropic one (the
-    // viewer's sliders change anisotropy without a new kernel), else one float
+    // changed: all of them with a measured material, their first part, the energy tables, with an
+    // anisotropic one (the viewer's sliders change anisotropy without a new kernel), else one float
     bool measured = false, anisotropic = false;
     for (const brdf::Material& m : compiled_.materials) {
         measured = measured || m.model == BRDF_MODEL_MEASURED;
@@ -94,7 +99,7 @@ void OpenClRenderer::upload_scene() {
     }
     size_t table_floats = measured ? brdf::bsdf_table_data().size() : anisotropic ? size_t(BSDF_TABLES_MEASURED) : 0;
     if (!tables_ || table_floats != table_floats_) {
-        tables_ = upload(runtime_, measured ? brdf::bsdf_table_data() : anisotropic ? brdf::bsdf_energy_table_data() : std::vector<float>());
+        tables_ = upload(runtime_, brdf::bsdf_table_data().data(), table_floats);
         table_floats_ = table_floats;
     }
     emission_buffer_ = upload(runtime_, emission_);

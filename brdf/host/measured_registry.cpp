@@ -16,6 +16,18 @@
 namespace brdf {
 namespace {
 
+// The energy part of the array (brdf/bsdf_tables.h), which every registry begins with.
+std::vector<float> bsdf_energy_table_data() {
+    static_assert(sizeof(energy_ggx_anisotropic_albedo) <= (BSDF_TABLES_ANISOTROPIC_AVERAGE - BSDF_TABLES_ANISOTROPIC_ALBEDO) * sizeof(float),
+                  "the anisotropic codes fit their floats");
+    static_assert(sizeof(energy_ggx_anisotropic_average) == (BSDF_TABLES_MEASURED - BSDF_TABLES_ANISOTROPIC_AVERAGE) * sizeof(float),
+                  "the anisotropic averages fill theirs");
+    std::vector<float> data(BSDF_TABLES_MEASURED, 0.0f);
+    std::memcpy(data.data() + BSDF_TABLES_ANISOTROPIC_ALBEDO, energy_ggx_anisotropic_albedo, sizeof(energy_ggx_anisotropic_albedo));
+    std::memcpy(data.data() + BSDF_TABLES_ANISOTROPIC_AVERAGE, energy_ggx_anisotropic_average, sizeof(energy_ggx_anisotropic_average));
+    return data;
+}
+
 // Registration copies the array and publishes the copy; earlier arrays stay alive (retired), so a
 // thread evaluating through a pointer it read before a registration never reads freed memory. A few
 // tables per process make the copies cheap next to reading a file.
@@ -82,16 +94,6 @@ const float* bsdf_tables() { return registry().data.load(std::memory_order_acqui
 
 const std::vector<float>& bsdf_table_data() { return *std::atomic_load(&registry().current); }
 
-std::vector<float> bsdf_energy_table_data() {
-    static_assert(sizeof(energy_ggx_anisotropic_albedo) <= (BSDF_TABLES_ANISOTROPIC_AVERAGE - BSDF_TABLES_ANISOTROPIC_ALBEDO) * sizeof(float),
-                  "the anisotropic codes fit their floats");
-    static_assert(sizeof(energy_ggx_anisotropic_average) == (BSDF_TABLES_MEASURED - BSDF_TABLES_ANISOTROPIC_AVERAGE) * sizeof(float),
-                  "the anisotropic averages fill theirs");
-    std::vector<float> data(BSDF_TABLES_MEASURED, 0.0f);
-    std::memcpy(data.data() + BSDF_TABLES_ANISOTROPIC_ALBEDO, energy_ggx_anisotropic_albedo, sizeof(energy_ggx_anisotropic_albedo));
-    std::memcpy(data.data() + BSDF_TABLES_ANISOTROPIC_AVERAGE, energy_ggx_anisotropic_average, sizeof(energy_ggx_anisotropic_average));
-    return data;
-}
 
 void append_measured_sampler(std::vector<float>* block) {
     const float* table = block->data();

@@ -25,9 +25,6 @@ int register_measured_table(const MeasuredTable& table);
 // The whole array as of now: bsdf_eval's tables on the host (bsdf_tables()), and what a kernel's
 // buffer argument receives. The reference stays valid for the life of the process.
 const std::vector<float>& bsdf_table_data();
-// Its first BSDF_TABLES_MEASURED floats, the energy tables alone: what a kernel needs for a scene
-// with anisotropic GGX materials and no measured ones.
-std::vector<float> bsdf_energy_table_data();
 
 // The sampler of one table, appended to `block` after the table (brdf/measured.h's layout): per bin of
 // theta_o, CDFs of the mean over RGB of f cos_i times solid angle, averaged over 2 x 2 points per cell,
