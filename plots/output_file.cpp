@@ -51,7 +51,8 @@ std::string csv_field(const std::string& text) {
 }
 
 std::string csv_number(double v) {
-    if (!std::isfinite(v)) return "nan";
+    if (std::isnan(v)) return "nan";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     char text[32];
     std::snprintf(text, sizeof text, "%.7g", v);
     return text;

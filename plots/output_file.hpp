@@ -21,7 +21,8 @@ void install_output(const std::filesystem::path& from, const std::string& path, 
 // CSV text field, quoted when it holds a comma, a quote or a line break.
 std::string csv_field(const std::string& text);
 
-// A number as CSV text: 7 significant digits (a float's), "nan" for anything not finite.
+// A number as CSV text: 7 significant digits (a float's); "nan", "inf" and "-inf" as numpy's
+// and Python's float() read them, so an infinite value is not mistaken for a missing one.
 std::string csv_number(double v);
 
 }  // namespace lab::plots

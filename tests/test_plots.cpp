@@ -16,6 +16,7 @@
 #include "common/input_error.hpp"
 #include "plots/albedo_chart.hpp"
 #include "plots/lobe_plot.hpp"
+#include "plots/output_file.hpp"
 #include "plots/python_runner.hpp"
 
 namespace fs = std::filesystem;
@@ -206,6 +207,14 @@ TEST_CASE("the lobe CSV has one row per material and grid direction", "[plots]")
     CHECK(f_r == Approx(0.8 / kPi).epsilon(1e-6));
     CHECK(pdf == Approx(1.0 / kPi).epsilon(1e-6));
     CHECK(lines.back().rfind("glass,180,354,0,0,0,0", 0) == 0);
+}
+
+TEST_CASE("CSV numbers: a float's 7 digits, and non-finite values as Python reads them", "[plots]") {
+    CHECK(lab::plots::csv_number(0.1f) == "0.1");
+    CHECK(lab::plots::csv_number(1.0 / 3.0) == "0.3333333");
+    CHECK(lab::plots::csv_number(std::nan("")) == "nan");
+    CHECK(lab::plots::csv_number(INFINITY) == "inf");
+    CHECK(lab::plots::csv_number(-INFINITY) == "-inf");
 }
 
 TEST_CASE("a bad lobe resolution or output path is refused before any work", "[plots]") {
