@@ -4,6 +4,7 @@
 //   ./build/tools/generate_energy_tables brdf [--strata N] [--threads N] [--tables all|openpbr|anisotropic]
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -13,10 +14,16 @@
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: %s OUTPUT_DIR [--strata N] [--threads N]\n", argv[0]);
+        std::fprintf(stderr, "usage: %s OUTPUT_DIR [--strata N] [--threads N] [--tables all|openpbr|anisotropic]\n", argv[0]);
         return 2;
     }
     std::string dir = argv[1];
+    /* checked before minutes of quadrature, not after */
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) {
+        std::fprintf(stderr, "%s: error: %s: OUTPUT_DIR is not a folder\n", argv[0], dir.c_str());
+        return 2;
+    }
     int strata = lab::validation::kEnergyTableStrata, threads = 2;
     std::string tables = "all";
     for (int k = 2; k + 1 < argc; k += 2) {

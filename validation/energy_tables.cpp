@@ -214,9 +214,17 @@ void fill_slice(int distribution, float shape, int strata, int threads, float* a
     for (int i = 0; i < ENERGY_GRID_ROUGHNESS; ++i) average[i] = average_albedo(albedo + i * ENERGY_GRID_MU);
 }
 
-std::string array_text(const char* name, const char* size, const std::vector<float>& values, int per_line) {
+// Where a table's arrays live in a kernel: `__constant` (CONSTANT_MEM), or nowhere, for a table
+// the kernels read from the BSDF tables buffer in global memory (brdf/bsdf_tables.h), whose
+// header the host alone includes.
+enum class TableStorage { constant, host };
+
+const char* storage_text(TableStorage storage) { return storage == TableStorage::constant ? "CONSTANT_MEM const" : "const"; }
+
+std::string array_text(const char* name, const char* size, const std::vector<float>& values, int per_line,
+                       TableStorage storage = TableStorage::constant) {
     std::ostringstream out;
-    out << "CONSTANT_MEM const float " << name << "[" << size << "] = {\n";
+    out << storage_text(storage) << " float " << name << "[" << size << "] = {\n";
     for (size_t k = 0; k < values.size(); ++k) {
         char number[32];
         std::snprintf(number, sizeof number, "%.7ff", double(values[k]));
@@ -228,10 +236,11 @@ std::string array_text(const char* name, const char* size, const std::vector<flo
 }
 
 // an albedo table, already rounded up, as its 16-bit codes
-std::string albedo_array_text(const char* name, const char* size, const std::vector<float>& values) {
+std::string albedo_array_text(const char* name, const char* size, const std::vector<float>& values,
+                              TableStorage storage = TableStorage::constant) {
     const int per_line = 12;
     std::ostringstream out;
-    out << "CONSTANT_MEM const ushort " << name << "[" << size << "] = {\n";
+    out << storage_text(storage) << " ushort " << name << "[" << size << "] = {\n";
     for (size_t k = 0; k < values.size(); ++k) {
         long code = std::lround(double(values[k]) * double(ENERGY_TABLE_ONE));  // values are codes / 65535 already
         out << (k % size_t(per_line) == 0 ? "    " : " ") << code << (k + 1 < values.size() ? "," : "");
@@ -365,10 +374,12 @@ AnisotropicTables compute_anisotropic_tables(int strata, int threads) {
 
 std::string anisotropic_table_header(const AnisotropicTables& t, int strata) {
     return header("BRDF_ENERGY_TABLE_GGX_ANISOTROPIC_H",
-                  "Anisotropic GGX: E(w) [ratio][phi][roughness][mu] (16-bit, rounded up) and E_avg [ratio][roughness].", strata,
+                  "Anisotropic GGX: E(w) [ratio][phi][roughness][mu] (16-bit, rounded up) and E_avg [ratio][roughness].\n"
+                  " * The host's copy: kernels read these numbers from the BSDF tables buffer (brdf/bsdf_tables.h).",
+                  strata,
                   albedo_array_text("energy_ggx_anisotropic_albedo", "ANISO_GRID_RATIO * ANISO_GRID_PHI * ANISO_GRID_ROUGHNESS * ANISO_GRID_MU",
-                                    t.albedo) +
-                      "\n" + array_text("energy_ggx_anisotropic_average", "ANISO_GRID_RATIO * ANISO_GRID_ROUGHNESS", t.average, 8));
+                                    t.albedo, TableStorage::host) +
+                      "\n" + array_text("energy_ggx_anisotropic_average", "ANISO_GRID_RATIO * ANISO_GRID_ROUGHNESS", t.average, 8, TableStorage::host));
 }
 
 OpenPbrTables compute_openpbr_tables(int strata, int threads) {
