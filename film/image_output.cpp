@@ -13,6 +13,7 @@
 
 #include "common/input_error.hpp"
 #include "film/atomic_file.hpp"
+#include "common/image_claim.hpp"
 #include "common/image_codec.hpp"
 
 namespace lab::film {
@@ -116,9 +117,13 @@ int channel_index(const codec::Header& header, const std::string& name) {
     return -1;
 }
 
-// All of the file's channels, as floats.
-std::vector<float> read_all_channels(const std::string& path, codec::ImageFile& in) {
+// All of the file's channels, as floats; the caller keeps `kept_per_pixel` floats a pixel of its own
+// from them, which the claim check (common/image_claim.hpp) counts before anything is allocated.
+std::vector<float> read_all_channels(const std::string& path, codec::ImageFile& in, size_t kept_per_pixel) {
     const codec::Header& h = in.header();
+    std::error_code ec;
+    const uintmax_t file_bytes = fs::file_size(path, ec);
+    codec::check_image_claim(path, h, ec ? 0 : uint64_t(file_bytes), h.channels + int(kept_per_pixel), codec::physical_memory_bytes());
     std::vector<float> all(size_t(h.width) * size_t(h.height) * size_t(h.channels));
     std::string error;
     if (!in.read(h.channels, all.data(), &error)) throw InputError(path, "", "cannot read: " + error);
@@ -208,7 +213,7 @@ ImageRgb read_image(const std::string& path, ImageMetadata* metadata) {
     }
     if (h.width <= 0 || h.height <= 0) throw InputError(path, "", "is empty");
 
-    const std::vector<float> all = read_all_channels(path, *in);
+    const std::vector<float> all = read_all_channels(path, *in, 3);
     ImageRgb image(h.width, h.height);
     const bool srgb = h.format == "png";
     for (size_t p = 0; p < image.pixel_count(); ++p)
@@ -246,7 +251,7 @@ std::vector<ImageChannel> read_exr_channels(const std::string& path, const std::
     }
     if (h.width <= 0 || h.height <= 0) throw InputError(path, "", "is empty");
     const size_t pixels = size_t(h.width) * size_t(h.height), channels = size_t(h.channels);
-    const std::vector<float> all = read_all_channels(path, *in);
+    const std::vector<float> all = read_all_channels(path, *in, names.size());
     std::vector<ImageChannel> out;
     for (size_t c = 0; c < names.size(); ++c) {
         ImageChannel channel{names[c], std::vector<float>(pixels)};

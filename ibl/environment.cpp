@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "common/image_claim.hpp"
 #include "common/image_codec.hpp"
 #include "common/input_error.hpp"
 #include "ibl/distribution.hpp"
@@ -183,10 +184,14 @@ LatLongImage read_latlong_image(const std::string& path) {
                          std::to_string(channels) + " (expected 1 for grey, or 3 or more with R, G, B first)");
 
     const int used = channels == 1 ? 1 : 3;
+    // what is read, and for grey the RGB image made from it besides, before a pixel is allocated
+    std::error_code size_error;
+    const uintmax_t file_bytes = fs::file_size(path, size_error);
+    codec::check_image_claim(path, header, size_error ? 0 : uint64_t(file_bytes), used == 1 ? 4 : 3, codec::physical_memory_bytes());
     std::vector<float> pixels(size_t(width) * height * used);
     if (!input->read(used, pixels.data(), &error)) throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
     std::vector<std::string> names(header.channel_names.begin(), header.channel_names.begin() + used);
-    return latlong_from_pixels(path, width, height, pixels, names);
+    return latlong_from_pixels(path, width, height, std::move(pixels), names);
 }
 
 void check_latlong_size(const std::string& path, int width, int height) {
@@ -198,7 +203,7 @@ void check_latlong_size(const std::string& path, int width, int height) {
         throw InputError(path, "size", std::to_string(width) + " x " + std::to_string(height) + " exceeds 32768 x 16384");
 }
 
-LatLongImage latlong_from_pixels(const std::string& path, int width, int height, const std::vector<float>& pixels,
+LatLongImage latlong_from_pixels(const std::string& path, int width, int height, std::vector<float> pixels,
                                  const std::vector<std::string>& channel_names) {
     check_latlong_size(path, width, height);
     const int used = int(channel_names.size());
@@ -207,13 +212,15 @@ LatLongImage latlong_from_pixels(const std::string& path, int width, int height,
     LatLongImage image;
     image.width = width;
     image.height = height;
-    image.rgb.resize(size_t(width) * height * 3);
+    // RGB pixels become the image in place: a map of gigabytes is held once, not twice
+    if (used == 3) image.rgb = std::move(pixels);
+    else image.rgb.resize(size_t(width) * height * 3);
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const size_t p = size_t(y) * width + x;
             for (int c = 0; c < 3; ++c) {
                 const int source_channel = used == 1 ? 0 : c;
-                const float v = pixels[p * used + source_channel];
+                const float v = used == 1 ? pixels[p] : image.rgb[p * 3 + c];
                 if (!std::isfinite(v)) {
                     std::string name = channel_names[source_channel];
                     if (name.empty()) name = "channel " + std::to_string(source_channel);

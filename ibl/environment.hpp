@@ -72,17 +72,18 @@ private:
 // Reads an equirectangular OpenEXR (.exr) or Radiance HDR (.hdr) file: 2:1, one channel (grey) or
 // three and more (the first three as R, G, B). Negative values (lossy DWAB compression) become 0.
 // Throws lab::InputError naming the file for a missing, unreadable or corrupt file, another format,
-// a size that is not 2:1, and a NaN or infinite pixel.
+// a size that is not 2:1, a size the file cannot hold or half the machine's memory cannot
+// (common/image_claim.hpp: checked before the pixels are allocated), and a NaN or infinite pixel.
 LatLongImage read_latlong_image(const std::string& path);
 
-// The largest lat-long image read: 32768 x 16384 (6 GiB of float RGB).
+// The largest lat-long image read: 32768 x 16384 (6.4 GB of float RGB, held once).
 constexpr int kMaxLatLongHeight = 16384;
 
 // What read_latlong_image checks of the size (2:1, at most kMaxLatLongHeight rows), and of the
 // pixels it read (width x height x 1 or 3 floats, channel_names.size() channels): each an
 // InputError naming `path` and the field. Separate so that any float data can be tested and fuzzed.
 void check_latlong_size(const std::string& path, int width, int height);
-LatLongImage latlong_from_pixels(const std::string& path, int width, int height, const std::vector<float>& pixels,
+LatLongImage latlong_from_pixels(const std::string& path, int width, int height, std::vector<float> pixels,
                                  const std::vector<std::string>& channel_names);
 
 // "constant:R,G,B" (three finite non-negative numbers) or the path of a lat-long image.

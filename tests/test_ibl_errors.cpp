@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -10,8 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "common/image_claim.hpp"
 #include "common/image_codec.hpp"
 #include "common/input_error.hpp"
+#include "film/image_output.hpp"
 #include "ibl/environment.hpp"
 
 namespace fs = std::filesystem;
@@ -29,7 +32,7 @@ fs::path scratch_folder() {
 // A float image of width x height x channels, every value `fill`, encoded by the lab's image codec
 // (OpenImageIO) in the format of the name's extension: 8-bit for .png, float otherwise.
 std::string write_image(const std::string& name, int width, int height, int channels, float fill,
-                        const std::vector<std::pair<size_t, float>>& overrides = {}) {
+                        const std::vector<std::pair<size_t, float>>& overrides = {}, const std::string& compression = "") {
     const std::string path = (scratch_folder() / name).string();
     std::vector<float> pixels(size_t(width) * height * channels, fill);
     for (const auto& [index, value] : overrides) pixels[index] = value;
@@ -37,6 +40,12 @@ std::string write_image(const std::string& name, int width, int height, int chan
     encoding.width = width;
     encoding.height = height;
     encoding.channels = channels;
+    if (!compression.empty()) {
+        lab::codec::Attribute a;
+        a.name = "compression";
+        a.text = compression;
+        encoding.attributes.push_back(a);
+    }
     std::vector<uint8_t> bytes;
     if (fs::path(path).extension() == ".png") {
         for (float v : pixels) bytes.push_back(uint8_t(std::lround(255.0f * std::fmin(std::fmax(v, 0.0f), 1.0f))));
@@ -159,4 +168,85 @@ TEST_CASE("ibl: bad constant specs and options are refused with one line", "[ibl
     CHECK(load_error("constant:1,1,1", bad) == "--env: exposure_stops: must be a number in [-64, 64], got 100");
     bad.exposure_stops = NAN;
     CHECK(load_error("constant:1,1,1", bad) == "--env: exposure_stops: must be a number in [-64, 64], got nan");
+}
+
+TEST_CASE("ibl: a header that claims more pixels than its file or the machine can hold is refused before they are allocated", "[ibl]") {
+    // A Radiance header that says 32768 x 16384 over 100 bytes: 32768 is past the run-length
+    // encoding's 32767, so its scanlines are flat, 4 bytes a pixel. Read, it would allocate 6.4 GB
+    // for the pixels before finding them missing.
+    const std::string hdr = write_bytes("claims_32k.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 16384 +X 32768\n" + std::string(100, '\x02'));
+    CHECK(load_error(hdr) == hdr + ": size: 32768 x 16384 cannot be held by a file of 153 bytes (at least 2147483648 in hdr): a corrupt header");
+    const std::string rle = write_bytes("claims_16k.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8192 +X 16384\n" + std::string(100, '\x02'));
+    CHECK(load_error(rle) == rle + ": size: 16384 x 8192 cannot be held by a file of 152 bytes (at least 8552448 in hdr): a corrupt header");
+
+    // An OpenEXR file of 16 x 8 (ZIP: one chunk of 16 scanlines) made to say 32768 x 16384: the
+    // header's box2i "dataWindow" given xMax, yMax, and a line-offset table of the 1024 chunks that
+    // claims, all pointing at the one chunk, so that OpenEXR opens it and would read on.
+    std::ifstream small(write_image("small.exr", 16, 8, 3, 1.0f, {}, "zip"), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(small)), std::istreambuf_iterator<char>());
+    const std::string key = std::string("dataWindow") + '\0' + "box2i" + '\0';
+    const size_t at = bytes.find(key);
+    REQUIRE(at != std::string::npos);
+    const int32_t window[4] = {0, 0, 32767, 16383};
+    bytes.replace(at + key.size() + 4, sizeof window, reinterpret_cast<const char*>(window), sizeof window);
+    size_t table = 0;  // the one offset: the 8 bytes just before the chunk they point at
+    for (size_t p = at; p + 8 <= bytes.size() && table == 0; ++p) {
+        uint64_t offset;
+        std::memcpy(&offset, bytes.data() + p, 8);
+        if (offset == p + 8) table = p;
+    }
+    REQUIRE(table > 0);
+    std::string offsets;
+    for (int chunk = 0; chunk < 1024; ++chunk) {
+        const uint64_t offset = table + 1024 * 8;
+        offsets.append(reinterpret_cast<const char*>(&offset), 8);
+    }
+    bytes = bytes.substr(0, table) + offsets + bytes.substr(table + 8);
+    const std::string exr = write_bytes("claims_32k.exr", bytes);
+    CHECK(load_error(exr) == exr + ": size: 32768 x 16384 cannot be held by a file of " + std::to_string(bytes.size()) +
+                                 " bytes (at least 48771 in openexr): a corrupt header");
+    // the films that merge and --resume read go through the same check
+    CHECK_THROWS_WITH(lab::film::read_image(exr, nullptr), exr + ": size: 32768 x 16384 cannot be held by a file of " +
+                                                               std::to_string(bytes.size()) + " bytes (at least 48771 in openexr): a corrupt header");
+
+    // Memory: the floats to be read against half of a machine's memory.
+    lab::codec::Header header;
+    header.format = "openexr";
+    header.width = 2048;
+    header.height = 1024;
+    header.channels = 3;
+    try {
+        lab::codec::check_image_claim("map.exr", header, 1u << 20, 3, 40000000);
+        FAIL("25 MB of floats accepted on a machine of 40 MB");
+    } catch (const lab::InputError& e) {
+        CHECK(std::string(e.what()) == "map.exr: size: 2048 x 1024 needs 25 MB to read, more than half of this machine's 40 MB");
+    }
+    CHECK_NOTHROW(lab::codec::check_image_claim("map.exr", header, 1u << 20, 3, 60000000));
+    CHECK_NOTHROW(lab::codec::check_image_claim("map.exr", header, 1u << 20, 3, 0));  // memory unknown: no bound
+}
+
+TEST_CASE("ibl: no image is smaller than the claim check's least size for it: constant images, the most compressible, in each encoding", "[ibl]") {
+    // A constant image is what every encoding shrinks most; were the bound not a bound, a real file
+    // would be refused. 1024 x 512 (RLE scanlines of 1024 pixels) and 2048 x 8 (many per chunk).
+    for (const auto& [width, height] : {std::pair<int, int>{1024, 512}, {2048, 8}}) {
+        struct Case {
+            std::string name, compression;
+            int channels;
+        };
+        const std::vector<Case> cases = {{"constant.hdr", "", 3},           {"constant_dwab.exr", "dwab", 3}, {"constant_dwaa.exr", "dwaa", 3},
+                                         {"constant_zip.exr", "zip", 3},     {"constant_piz.exr", "piz", 4},   {"constant_rle.exr", "rle", 1},
+                                         {"constant_b44a.exr", "b44a", 3},   {"constant.png", "", 3}};
+        for (const Case& c : cases) {
+            const std::string path = write_image(c.name, width, height, c.channels, 0.25f, {}, c.compression);
+            std::string error;
+            std::unique_ptr<lab::codec::ImageFile> file = lab::codec::image_codec().open(path, &error);
+            INFO(error);
+            REQUIRE(file);
+            const uint64_t least = lab::codec::minimum_encoded_bytes(file->header().format, width, height, c.channels);
+            const uint64_t size = uint64_t(fs::file_size(path));
+            INFO(c.name << " " << width << " x " << height << ": " << size << " bytes, bound " << least);
+            CHECK(least > 0);
+            CHECK(size >= least);
+        }
+    }
 }
