@@ -11,7 +11,7 @@ set -eu
 packages="cmake g++ make pkg-config ca-certificates
 pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
 libopenimageio-dev openimageio-tools libopenexr-dev
-libglfw3-dev libimgui-dev libglm-dev catch2 nlohmann-json3-dev libcli11-dev libnlopt-dev
+libglfw3-dev libimgui-dev libglm-dev catch2 nlohmann-json3-dev libcli11-dev libnlopt-dev libpugixml-dev
 python3 python3-matplotlib python3-numpy"
 for set in "$@"; do
   case $set in

@@ -1,0 +1,54 @@
+// dtoadq convert: a material from one format into another (docs/interchange.md): a lab preset
+// (.json, openpbr), MaterialX (.mtlx) or glTF 2.0 (.gltf) in; any of them out, chosen by the output's
+// extension or --to. Every parameter or element the conversion could not carry exactly is printed
+// as one note on stderr.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "common/input_error.hpp"
+#include "interchange/formats.hpp"
+
+namespace lab::cli {
+
+namespace {
+
+struct ConvertOptions {
+    std::string input;
+    std::string output;
+    std::string to;
+    bool quiet = false;
+};
+
+void print_notes(const std::string& file, const interchange::Notes& notes) {
+    for (const interchange::Note& n : notes.items)
+        std::fprintf(stderr, "dtoadq: note: %s: %s%s%s\n", file.c_str(), n.field.c_str(), n.field.empty() ? "" : ": ", n.text.c_str());
+}
+
+void run_convert(const ConvertOptions& o) {
+    const interchange::Format from = interchange::format_of_file(o.input);
+    const interchange::Format to = o.to.empty() ? interchange::format_of_file(o.output) : interchange::format_named(o.to, "command line", "--to");
+    const interchange::Imported imported = interchange::read_material(o.input, from);
+    print_notes(o.input, imported.notes);
+    interchange::Notes written;
+    interchange::write_material(imported.preset, to, o.output, &written);
+    print_notes(o.output, written);
+    if (!o.quiet)
+        std::printf("converted %s (%s) to %s (%s): %zu note(s)\n", o.input.c_str(), interchange::format_name(from), o.output.c_str(),
+                    interchange::format_name(to), imported.notes.items.size() + written.items.size());
+}
+
+}  // namespace
+
+void register_convert(CLI::App& app) {
+    auto o = std::make_shared<ConvertOptions>();
+    auto* cmd = app.add_subcommand("convert", "Convert a material between a lab preset (.json), MaterialX (.mtlx) and glTF 2.0 (.gltf)");
+    cmd->add_option("input", o->input, "The material: an openpbr preset (.json), a MaterialX document (.mtlx) or a glTF 2.0 file (.gltf)")->required();
+    cmd->add_option("-o,--output", o->output, "The converted material; its extension chooses the format unless --to does")->required();
+    cmd->add_option("--to", o->to, "The output's format: mtlx, gltf or preset");
+    cmd->add_flag("--quiet", o->quiet, "Print nothing but the notes on success");
+    cmd->callback([o] { run_convert(*o); });
+}
+
+}  // namespace lab::cli
