@@ -11,7 +11,8 @@ GltfAnisotropy gltf_anisotropy_of(float specular_roughness, float specular_rough
     const brdf::Microfacet lobe = brdf::openpbr_microfacet(specular_roughness, specular_roughness_anisotropy);
     const float alpha_t = std::min(lobe.ax, 1.0f), alpha_b = lobe.ay;
     const float stretch = alpha_b < 1.0f ? (alpha_t - alpha_b) / (1.0f - alpha_b) : 0.0f;
-    return {std::sqrt(alpha_b), std::sqrt(std::max(stretch, 0.0f))};
+    const bool clamped = lobe.ax > 1.0f || lobe.ax <= BRDF_MIN_ALPHA || lobe.ay <= BRDF_MIN_ALPHA;
+    return {std::sqrt(alpha_b), std::sqrt(std::max(stretch, 0.0f)), clamped};
 }
 
 void openpbr_anisotropy_of(const GltfAnisotropy& gltf, float* specular_roughness, float* specular_roughness_anisotropy) {

@@ -10,6 +10,9 @@ namespace interchange {
 struct GltfAnisotropy {
     float roughness;
     float strength;
+    // the lab's alphas lie outside glTF's reach (alpha_t above 1) or at the lab's smallest alpha
+    // (BRDF_MIN_ALPHA, brdf/microfacet.h), where the lobe the lab renders is not the parameters' own
+    bool clamped = false;
 };
 GltfAnisotropy gltf_anisotropy_of(float specular_roughness, float specular_roughness_anisotropy);
 // OpenPBR's specular_roughness and specular_roughness_anisotropy of a glTF roughness and strength.

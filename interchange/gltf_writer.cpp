@@ -35,6 +35,8 @@ json gltf_document(const brdf::Preset& preset, Notes* notes) {
         const GltfAnisotropy a = gltf_anisotropy_of(m.roughness, m.anisotropic);
         pbr["roughnessFactor"] = shortest_decimal(a.roughness);
         extensions["KHR_materials_anisotropy"] = {{"anisotropyStrength", shortest_decimal(a.strength)}};
+        if (a.clamped)
+            notes->add("specular_roughness_anisotropy", "the stretched lobe's alphas leave glTF's range or reach the lab's smallest alpha 1e-4: written as clamped");
     } else {
         pbr["roughnessFactor"] = shortest_decimal(m.roughness);
     }

@@ -52,6 +52,25 @@ void set_parameter_value(brdf::Material* m, const brdf::ScalarParameter& p, cons
     for (int c = 0; c < 3; ++c) (m->*p.color)[c] = value[c];
 }
 
+std::vector<std::string> silent_changes(const brdf::Material& written, const brdf::Material& read, const Notes& notes,
+                                        const std::vector<std::string>& skip) {
+    std::vector<std::string> out;
+    auto text = [](const std::array<float, 3>& v, int n) {
+        std::string t;
+        for (int c = 0; c < n; ++c) t += (c ? " " : "") + float_text(v[c]);
+        return t;
+    };
+    for (const brdf::ScalarParameter& p : brdf::openpbr_parameters()) {
+        bool skipped = false;
+        for (const std::string& s : skip) skipped = skipped || s == p.key;
+        if (skipped || notes.names(p.key)) continue;
+        const std::array<float, 3> a = parameter_value(written, p), b = parameter_value(read, p);
+        if (a != b) out.push_back(std::string(p.key) + ": " + text(a, parameter_components(p)) + " -> " + text(b, parameter_components(p)));
+    }
+    if (written.energy_compensation != read.energy_compensation && !notes.names("energy_compensation")) out.push_back("energy_compensation");
+    return out;
+}
+
 std::string float_text(float value) {
     char text[32];
     auto [end, error] = std::to_chars(text, text + sizeof text, value);

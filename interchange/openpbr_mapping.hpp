@@ -58,6 +58,12 @@ std::array<float, 3> parameter_value(const brdf::Material& m, const brdf::Scalar
 void set_parameter_value(brdf::Material* m, const brdf::ScalarParameter& p, const std::array<float, 3>& value);
 inline int parameter_components(const brdf::ScalarParameter& p) { return p.field ? 1 : 3; }
 
+// The openpbr parameters whose value in `read` differs from `written` and that no note names, as
+// "key: written -> read" lines (energy_compensation too); `skip` lists parameters the caller
+// compares otherwise. What a round trip changed without saying so.
+std::vector<std::string> silent_changes(const brdf::Material& written, const brdf::Material& read, const Notes& notes,
+                                        const std::vector<std::string>& skip = {});
+
 // The shortest decimal text that reads back as the same float (JSON writers take
 // brdf::shortest_decimal, the same number as a double).
 std::string float_text(float value);

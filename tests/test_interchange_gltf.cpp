@@ -75,7 +75,7 @@ TEST_CASE("every bundled openpbr preset round-trips through glTF: each parameter
         if (notes.items.empty()) CHECK(back.notes.items.empty());
         CHECK(back.preset.name == p.name);
         const std::vector<std::string> changes =
-            interchange_checks::silent_changes(p.material, back.preset.material, notes, {"specular_roughness", "specular_roughness_anisotropy"});
+            interchange::silent_changes(p.material, back.preset.material, notes, {"specular_roughness", "specular_roughness_anisotropy"});
         for (const std::string& c : changes) INFO(c);
         CHECK(changes.empty());
         // the anisotropic roughness goes through glTF's two alphas: exact up to the few roundings of
@@ -100,7 +100,7 @@ TEST_CASE("a material setting every parameter glTF expresses comes back exactly,
     CHECK(doc.at("extensionsUsed").size() == 6);  // clearcoat, emissive_strength, ior, iridescence, sheen, transmission
     const interchange::Imported back = interchange::parse_gltf_text(doc.dump(), "everything.gltf");
     CHECK(back.notes.items.empty());
-    CHECK(interchange_checks::silent_changes(p.material, back.preset.material, notes).empty());
+    CHECK(interchange::silent_changes(p.material, back.preset.material, notes).empty());
     CHECK(std::memcmp(&p.material, &back.preset.material, sizeof p.material) == 0);
 }
 
@@ -111,7 +111,7 @@ TEST_CASE("a glTF value changed on the way back is caught by the round trip's co
     json& coat = doc["materials"][0]["extensions"]["KHR_materials_clearcoat"];
     coat["clearcoatRoughnessFactor"] = double(std::nextafter(p.material.coat_roughness, 1.0f));
     const interchange::Imported back = interchange::parse_gltf_text(doc.dump(), "changed.gltf");
-    const auto changes = interchange_checks::silent_changes(p.material, back.preset.material, notes);
+    const auto changes = interchange::silent_changes(p.material, back.preset.material, notes);
     REQUIRE(changes.size() == 1);
     CHECK(changes[0].rfind("coat_roughness:", 0) == 0);
 }

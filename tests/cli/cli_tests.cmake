@@ -578,3 +578,36 @@ cli_bad_input(NAME fit.lobes ABSENT ${PNG}.json EXPECT "${E}command line: --lobe
               ARGS ${FIT} ${D}/truncated.binary --lobes diffuse,transmission)
 cli_bad_input(NAME fit.stride ABSENT ${PNG}.json EXPECT "${E}command line: --stride: expected THETA_H,THETA_D,PHI_D bin strides, got \"3,3\"$"
               ARGS ${FIT} ${D}/truncated.binary --stride 3,3)
+
+# --- convert: materials between presets, MaterialX and glTF (docs/interchange.md) ---------------
+cli_bad_input(NAME convert.mtlx_unknown_node ABSENT ${PNG}
+              EXPECT "${E}${D}/unknown_node\\.mtlx: SR_a: unknown node <gltf_pbr> \\(the lab converts open_pbr_surface and standard_surface\\)$"
+              ARGS convert ${D}/unknown_node.mtlx --to mtlx -o ${PNG})
+cli_bad_input(NAME convert.mtlx_missing_material ABSENT ${PNG}
+              EXPECT "${E}${D}/no_material\\.mtlx: materialx: missing material: the document holds no <surfacematerial>$"
+              ARGS convert ${D}/no_material.mtlx --to gltf -o ${PNG})
+cli_bad_input(NAME convert.mtlx_wrong_type ABSENT ${PNG}
+              EXPECT "${E}${D}/wrong_type\\.mtlx: SR_a/base_color: wrong type \"float\" \\(open_pbr_surface's base_color is color3\\)$"
+              ARGS convert ${D}/wrong_type.mtlx --to preset -o ${PNG})
+cli_bad_input(NAME convert.mtlx_malformed ABSENT ${PNG} EXPECT "${E}${D}/malformed\\.mtlx: malformed XML: .* at byte [0-9]+$"
+              ARGS convert ${D}/malformed.mtlx --to preset -o ${PNG})
+cli_bad_input(NAME convert.gltf_out_of_range ABSENT ${PNG}
+              EXPECT "${E}${D}/ior_out_of_range\\.gltf: materials.0.\\.extensions\\.KHR_materials_ior\\.ior: value 3\\.5 is out of range .1, 3.$"
+              ARGS convert ${D}/ior_out_of_range.gltf --to mtlx -o ${PNG})
+cli_bad_input(NAME convert.gltf_missing_material ABSENT ${PNG}
+              EXPECT "${E}${D}/no_material\\.gltf: materials: missing material: the document holds no materials$"
+              ARGS convert ${D}/no_material.gltf --to mtlx -o ${PNG})
+cli_bad_input(NAME convert.lab_preset ABSENT ${PNG}
+              EXPECT "${E}presets/gold\\.json: model: a \"lab\" material has no OpenPBR inputs: convert takes \"openpbr\" presets"
+              ARGS convert presets/gold.json --to mtlx -o ${PNG})
+cli_bad_input(NAME convert.unknown_extension ABSENT ${PNG}
+              EXPECT "${E}.*/convert\\.unknown_extension\\.png: unknown file extension \"\\.png\" \\(expected preset \\(\\.json\\), mtlx \\(\\.mtlx\\), gltf \\(\\.gltf\\). or name the format with --to\\)$"
+              ARGS convert presets/car_paint.json -o ${PNG})
+cli_bad_input(NAME convert.unknown_format ABSENT ${PNG} EXPECT "${E}command line: --to: unknown format \"usd\""
+              ARGS convert presets/car_paint.json --to usd -o ${PNG})
+# a preset through MaterialX and back is the preset written directly, byte for byte
+add_test(NAME cli.convert.preset_through_mtlx_unchanged
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DPRESET=presets/pearlescent_paint.json -DSCRATCH=${CLI_SCRATCH}/convert
+                 -P ${CLI_TEST_DIR}/convert_round_trip.cmake
+         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.convert.preset_through_mtlx_unchanged PROPERTIES LABELS cli TIMEOUT 60)
