@@ -1,7 +1,7 @@
 // dtoadq convert: a material from one format into another (docs/interchange.md): a lab preset
-// (.json, openpbr), MaterialX (.mtlx) or glTF 2.0 (.gltf) in; any of them out, chosen by the output's
-// extension or --to. Every parameter or element the conversion could not carry exactly is printed
-// as one note on stderr.
+// (.json, openpbr), MaterialX (.mtlx) or glTF 2.0 (.gltf) in; any of them, Mitsuba 3 (.xml) or
+// pbrt-v4 (.pbrt) out, chosen by the output's extension or --to. Every parameter or element the
+// conversion could not carry exactly is printed as one note on stderr.
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -43,10 +43,10 @@ void run_convert(const ConvertOptions& o) {
 
 void register_convert(CLI::App& app) {
     auto o = std::make_shared<ConvertOptions>();
-    auto* cmd = app.add_subcommand("convert", "Convert a material between a lab preset (.json), MaterialX (.mtlx) and glTF 2.0 (.gltf)");
+    auto* cmd = app.add_subcommand("convert", "Convert a material between a lab preset (.json), MaterialX (.mtlx) and glTF 2.0 (.gltf); write it for Mitsuba 3 (.xml) and pbrt-v4 (.pbrt)");
     cmd->add_option("input", o->input, "The material: an openpbr preset (.json), a MaterialX document (.mtlx) or a glTF 2.0 file (.gltf)")->required();
     cmd->add_option("-o,--output", o->output, "The converted material; its extension chooses the format unless --to does")->required();
-    cmd->add_option("--to", o->to, "The output's format: mtlx, gltf or preset");
+    cmd->add_option("--to", o->to, "The output's format: mtlx, gltf, mitsuba (.xml), pbrt or preset");
     cmd->add_flag("--quiet", o->quiet, "Print nothing but the notes on success");
     cmd->callback([o] { run_convert(*o); });
 }

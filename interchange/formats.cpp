@@ -8,8 +8,10 @@
 #include "common/input_error.hpp"
 #include "interchange/gltf_reader.hpp"
 #include "interchange/gltf_writer.hpp"
+#include "interchange/mitsuba_writer.hpp"
 #include "interchange/mtlx_reader.hpp"
 #include "interchange/mtlx_writer.hpp"
+#include "interchange/pbrt_writer.hpp"
 
 namespace interchange {
 
@@ -24,6 +26,8 @@ constexpr FormatEntry kFormats[] = {
     {Format::preset, "preset", ".json"},
     {Format::mtlx, "mtlx", ".mtlx"},
     {Format::gltf, "gltf", ".gltf"},
+    {Format::mitsuba, "mitsuba", ".xml"},
+    {Format::pbrt, "pbrt", ".pbrt"},
 };
 
 std::string format_list() {
@@ -56,6 +60,8 @@ const char* format_name(Format format) {
 Imported read_material(const std::string& path, Format format) {
     if (format == Format::mtlx) return read_mtlx(path);
     if (format == Format::gltf) return read_gltf(path);
+    if (format == Format::mitsuba || format == Format::pbrt)
+        throw lab::InputError(path, "", std::string("the lab writes ") + format_name(format) + " but does not read it (it reads .json, .mtlx and .gltf)");
     Imported imported;
     imported.preset = brdf::load_preset(path);
     return imported;
@@ -64,6 +70,8 @@ Imported read_material(const std::string& path, Format format) {
 std::string material_text(const brdf::Preset& preset, Format format, Notes* notes) {
     if (format == Format::mtlx) return mtlx_text(preset, notes);
     if (format == Format::gltf) return gltf_text(preset, notes);
+    if (format == Format::mitsuba) return mitsuba_text(preset, notes);
+    if (format == Format::pbrt) return pbrt_text(preset, notes);
     return brdf::preset_to_json(preset).dump(2) + "\n";
 }
 

@@ -8,16 +8,16 @@
 
 namespace interchange {
 
-enum class Format { preset, mtlx, gltf };
+enum class Format { preset, mtlx, gltf, mitsuba, pbrt };
 
-// "mtlx", "gltf", "preset"; throws lab::InputError(source, field, ...) for another name.
+// "mtlx", "gltf", "mitsuba", "pbrt", "preset"; throws lab::InputError(source, field, ...) for another name.
 Format format_named(const std::string& name, const std::string& source, const std::string& field);
-// By the file's extension: .mtlx, .gltf, .json (a lab preset); throws lab::InputError(path, "", ...).
+// By the file's extension: .mtlx, .gltf, .xml (Mitsuba 3), .pbrt, .json (a lab preset); throws lab::InputError(path, "", ...).
 Format format_of_file(const std::string& path);
 const char* format_name(Format format);
 
 // A material file in any format the lab reads (preset, MaterialX, glTF), as an openpbr preset or,
-// for a preset file, the preset as it is.
+// for a preset file, the preset as it is; Mitsuba and pbrt are written only (lab::InputError).
 Imported read_material(const std::string& path, Format format);
 // The text of a material in `format`; notes name what it could not carry exactly.
 std::string material_text(const brdf::Preset& preset, Format format, Notes* notes);

@@ -6,6 +6,12 @@
 
 namespace interchange {
 
+void Notes::add(const std::string& field, const std::string& text) {
+    for (const Note& n : items)
+        if (n.field == field && n.text == text) return;
+    items.push_back({field, text});
+}
+
 bool Notes::names(const std::string& field) const {
     for (const Note& n : items)
         if (n.field == field) return true;

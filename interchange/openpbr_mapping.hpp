@@ -24,7 +24,8 @@ struct Note {
 
 struct Notes {
     std::vector<Note> items;
-    void add(const std::string& field, const std::string& text) { items.push_back({field, text}); }
+    // a note already made (the same field and text, as the parts of a mix give) is not repeated
+    void add(const std::string& field, const std::string& text);
     // whether a note names `field`
     bool names(const std::string& field) const;
 };

@@ -601,7 +601,7 @@ cli_bad_input(NAME convert.lab_preset ABSENT ${PNG}
               EXPECT "${E}presets/gold\\.json: model: a \"lab\" material has no OpenPBR inputs: convert takes \"openpbr\" presets"
               ARGS convert presets/gold.json --to mtlx -o ${PNG})
 cli_bad_input(NAME convert.unknown_extension ABSENT ${PNG}
-              EXPECT "${E}.*/convert\\.unknown_extension\\.png: unknown file extension \"\\.png\" \\(expected preset \\(\\.json\\), mtlx \\(\\.mtlx\\), gltf \\(\\.gltf\\). or name the format with --to\\)$"
+              EXPECT "${E}.*/convert\\.unknown_extension\\.png: unknown file extension \"\\.png\" \\(expected preset \\(\\.json\\), mtlx \\(\\.mtlx\\), gltf \\(\\.gltf\\), mitsuba \\(\\.xml\\), pbrt \\(\\.pbrt\\). or name the format with --to\\)$"
               ARGS convert presets/car_paint.json -o ${PNG})
 cli_bad_input(NAME convert.unknown_format ABSENT ${PNG} EXPECT "${E}command line: --to: unknown format \"usd\""
               ARGS convert presets/car_paint.json --to usd -o ${PNG})
