@@ -3,11 +3,14 @@
 // pbrt-v4 (.pbrt) out, chosen by the output's extension or --to. Every parameter or element the
 // conversion could not carry exactly is printed as one note on stderr.
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
+#include "interchange/fit_to_openpbr.hpp"
 #include "interchange/formats.hpp"
 
 namespace lab::cli {
@@ -18,8 +21,16 @@ struct ConvertOptions {
     std::string input;
     std::string output;
     std::string to;
+    int fit_starts = 8;
+    int fit_evaluations = 3000;
     bool quiet = false;
 };
+
+// The fit's report beside the export: car.mtlx -> car.fit.json.
+std::string fit_report_path(const std::string& output) {
+    const std::filesystem::path p(output);
+    return (p.parent_path() / (p.stem().string() + ".fit.json")).string();
+}
 
 void print_notes(const std::string& file, const interchange::Notes& notes) {
     for (const interchange::Note& n : notes.items)
@@ -29,8 +40,22 @@ void print_notes(const std::string& file, const interchange::Notes& notes) {
 void run_convert(const ConvertOptions& o) {
     const interchange::Format from = interchange::format_of_file(o.input);
     const interchange::Format to = o.to.empty() ? interchange::format_of_file(o.output) : interchange::format_named(o.to, "command line", "--to");
-    const interchange::Imported imported = interchange::read_material(o.input, from);
+    interchange::Imported imported = interchange::read_material(o.input, from);
     print_notes(o.input, imported.notes);
+    if (imported.preset.material.model != BRDF_MODEL_OPENPBR) {
+        if (o.fit_starts < 1 || o.fit_evaluations < 10)
+            throw InputError("command line", "--fit-starts", "needs at least 1 start of at least 10 evaluations");
+        lab::fit::FitOptions options;
+        options.starts = o.fit_starts;
+        options.max_evaluations = o.fit_evaluations;
+        const interchange::OpenpbrFit fit = interchange::fit_to_openpbr(imported.preset, options, lab::fit::PairGrid{3, 3, 10, 1});
+        const std::string report = fit_report_path(o.output);
+        std::ofstream out(report);
+        if (!(out << fit.report.dump(2) << "\n")) throw InputError(report, "", "cannot write the fit's report");
+        std::fprintf(stderr, "dtoadq: note: %s: model: a \"%s\" material, fitted to openpbr: error %.4g (cosine-weighted log-space RMSE), report in %s\n",
+                     o.input.c_str(), fit.report.at("fitted_from").get<std::string>().c_str(), fit.error, report.c_str());
+        imported.preset = fit.preset;
+    }
     interchange::Notes written;
     interchange::write_material(imported.preset, to, o.output, &written);
     print_notes(o.output, written);
@@ -44,9 +69,11 @@ void run_convert(const ConvertOptions& o) {
 void register_convert(CLI::App& app) {
     auto o = std::make_shared<ConvertOptions>();
     auto* cmd = app.add_subcommand("convert", "Convert a material between a lab preset (.json), MaterialX (.mtlx) and glTF 2.0 (.gltf); write it for Mitsuba 3 (.xml) and pbrt-v4 (.pbrt)");
-    cmd->add_option("input", o->input, "The material: an openpbr preset (.json), a MaterialX document (.mtlx) or a glTF 2.0 file (.gltf)")->required();
+    cmd->add_option("input", o->input, "The material: a preset (.json; a lab, dtoadq2017 or measured one is fitted to openpbr first), a MaterialX document (.mtlx) or a glTF 2.0 file (.gltf)")->required();
     cmd->add_option("-o,--output", o->output, "The converted material; its extension chooses the format unless --to does")->required();
     cmd->add_option("--to", o->to, "The output's format: mtlx, gltf, mitsuba (.xml), pbrt or preset");
+    cmd->add_option("--fit-starts", o->fit_starts, "A lab or measured material is fitted to openpbr first: starts of the search (as dtoadq fit)")->capture_default_str();
+    cmd->add_option("--fit-evaluations", o->fit_evaluations, "... and evaluations per start")->capture_default_str();
     cmd->add_flag("--quiet", o->quiet, "Print nothing but the notes on success");
     cmd->callback([o] { run_convert(*o); });
 }

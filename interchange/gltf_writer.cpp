@@ -11,7 +11,6 @@ using nlohmann::json;
 using brdf::shortest_decimal;
 
 json rgb(const float* c) { return json::array({shortest_decimal(c[0]), shortest_decimal(c[1]), shortest_decimal(c[2])}); }
-bool is_grey(const float* c, float v) { return c[0] == v && c[1] == v && c[2] == v; }
 bool same(const float* a, const float* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 
 }  // namespace

@@ -20,7 +20,6 @@ void add_float(pugi::xml_node bsdf, const char* name, float v) { add_value(bsdf,
 void add_rgb(pugi::xml_node bsdf, const char* name, const float* c) {
     add_value(bsdf, "rgb", name, float_text(c[0]) + ", " + float_text(c[1]) + ", " + float_text(c[2]));
 }
-bool is_white(const float* c) { return c[0] == 1.0f && c[1] == 1.0f && c[2] == 1.0f; }
 
 pugi::xml_node new_bsdf(pugi::xml_node parent, const char* type, const std::string& id) {
     pugi::xml_node bsdf = parent.append_child("bsdf");
@@ -65,7 +64,7 @@ void write_bsdf(pugi::xml_node parent, const brdf::Material& m, const std::strin
         if (m.fuzz_weight > 0.0f) notes->add("fuzz_weight", "principled's sheen: Disney's Schlick-shaped sheen, white; not the Charlie lobe, its colour and roughness dropped");
         if (m.metallic < 1.0f && m.weight_transmission < 1.0f)
             notes->add("base_color", "principled's diffuse is Disney's retro-reflective lobe, not OpenPBR's Lambert or EON");
-        if (!is_white(m.specular_color)) notes->add("specular_color", "principled has no specular tint of its own: dropped");
+        if (!is_grey(m.specular_color, 1.0f)) notes->add("specular_color", "principled has no specular tint of its own: dropped");
         if (m.ior == 1.0f) notes->add("specular_ior", "principled takes an index above 1: written as 1.001");
         return;
     }
@@ -85,7 +84,7 @@ void write_bsdf(pugi::xml_node parent, const brdf::Material& m, const std::strin
         add_rgb(bsdf, "base_color", base);
         add_float(bsdf, "metallic", 1.0f);
         add_principled_roughness(bsdf, m, notes);
-        if (!is_white(m.specular_color)) notes->add("specular_color", "the metal's F82 edge tint: principled's metal is Schlick's Fresnel without a tint");
+        if (!is_grey(m.specular_color, 1.0f)) notes->add("specular_color", "the metal's F82 edge tint: principled's metal is Schlick's Fresnel without a tint");
         if (m.specular_weight != 1.0f) notes->add("specular_weight", "principled does not scale the metal's Fresnel: dropped");
         return;
     }
@@ -98,8 +97,8 @@ void write_bsdf(pugi::xml_node parent, const brdf::Material& m, const std::strin
         }
         add_float(bsdf, "int_ior", m.ior);
         add_float(bsdf, "ext_ior", 1.0f);
-        if (!is_white(m.specular_color)) add_rgb(bsdf, "specular_reflectance", m.specular_color);
-        if (!is_white(m.transmission_color)) add_rgb(bsdf, "specular_transmittance", m.transmission_color);
+        if (!is_grey(m.specular_color, 1.0f)) add_rgb(bsdf, "specular_reflectance", m.specular_color);
+        if (!is_grey(m.transmission_color, 1.0f)) add_rgb(bsdf, "specular_transmittance", m.transmission_color);
         if (m.specular_weight != 1.0f) notes->add("specular_weight", "Mitsuba's dielectric has no specular weight: dropped");
         return;
     }
@@ -116,7 +115,7 @@ void write_bsdf(pugi::xml_node parent, const brdf::Material& m, const std::strin
         add_float(bsdf, "int_ior", m.ior);
         add_float(bsdf, "ext_ior", 1.0f);
         add_rgb(bsdf, "diffuse_reflectance", base);
-        if (!is_white(m.specular_color)) add_rgb(bsdf, "specular_reflectance", m.specular_color);
+        if (!is_grey(m.specular_color, 1.0f)) add_rgb(bsdf, "specular_reflectance", m.specular_color);
         add_value(bsdf, "boolean", "nonlinear", "false");
         if (m.specular_weight != 1.0f) notes->add("specular_weight", "Mitsuba's plastic has no specular weight: dropped");
     }

@@ -88,7 +88,7 @@ void require_openpbr(const brdf::Preset& preset) {
     if (preset.material.model == BRDF_MODEL_OPENPBR) return;
     throw lab::InputError(preset.source, "model",
                           std::string("a \"") + brdf::model_name(preset.material.model) +
-                              "\" material has no OpenPBR inputs: convert takes \"openpbr\" presets (docs/interchange.md)");
+                              "\" material has no OpenPBR inputs: the writers take openpbr materials (convert fits the others first, docs/interchange.md)");
 }
 
 std::string identifier(const std::string& name) {

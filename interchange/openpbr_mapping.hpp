@@ -58,6 +58,8 @@ const std::vector<LeftOutInput>& openpbr_inputs_left_out();
 std::array<float, 3> parameter_value(const brdf::Material& m, const brdf::ScalarParameter& p);
 void set_parameter_value(brdf::Material* m, const brdf::ScalarParameter& p, const std::array<float, 3>& value);
 inline int parameter_components(const brdf::ScalarParameter& p) { return p.field ? 1 : 3; }
+// Whether every channel of an RGB colour is v.
+inline bool is_grey(const float* c, float v) { return c[0] == v && c[1] == v && c[2] == v; }
 
 // The openpbr parameters whose value in `read` differs from `written` and that no note names, as
 // "key: written -> read" lines (energy_compensation too); `skip` lists parameters the caller
@@ -70,7 +72,8 @@ std::vector<std::string> silent_changes(const brdf::Material& written, const brd
 std::string float_text(float value);
 
 // The preset a writer takes: an openpbr one. Throws lab::InputError naming the preset's file for a
-// lab, dtoadq2017 or measured material, which have no OpenPBR inputs.
+// lab, dtoadq2017 or measured material, which have no OpenPBR inputs (interchange/fit_to_openpbr.hpp
+// carries them to openpbr first).
 void require_openpbr(const brdf::Preset& preset);
 
 // A name usable as an identifier in MaterialX and pbrt: letters, digits and '_', not starting with a

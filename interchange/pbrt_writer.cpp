@@ -7,7 +7,6 @@
 namespace interchange {
 namespace {
 
-bool is_white(const float* c) { return c[0] == 1.0f && c[1] == 1.0f && c[2] == 1.0f; }
 
 std::string quoted(const std::string& s) {
     std::string out = "\"";
@@ -64,7 +63,7 @@ std::string write_material(const brdf::Material& m, const std::string& name, Not
         out.rgb("reflectance", base);
         out.flag("remaproughness", false);
         notes->add("base_color", "pbrt's conductor of this reflectance is the exact Fresnel of index 1 + i k with that F0, not the lab's Schlick (F82) curve");
-        if (!is_white(m.specular_color)) notes->add("specular_color", "the metal's F82 edge tint: pbrt's reflectance conductor has none");
+        if (!is_grey(m.specular_color, 1.0f)) notes->add("specular_color", "the metal's F82 edge tint: pbrt's reflectance conductor has none");
         if (m.specular_weight != 1.0f) notes->add("specular_weight", "pbrt's conductor has no Fresnel weight: dropped");
         return out.text();
     }
@@ -73,8 +72,8 @@ std::string write_material(const brdf::Material& m, const std::string& name, Not
         out.number("eta", m.ior);
         out.alphas("", specular);
         out.flag("remaproughness", false);
-        if (!is_white(m.transmission_color)) notes->add("transmission_color", "pbrt's dielectric is colourless: dropped");
-        if (!is_white(m.specular_color) || m.specular_weight != 1.0f) notes->add("specular_color", "pbrt's dielectric has no specular tint or weight: dropped");
+        if (!is_grey(m.transmission_color, 1.0f)) notes->add("transmission_color", "pbrt's dielectric is colourless: dropped");
+        if (!is_grey(m.specular_color, 1.0f) || m.specular_weight != 1.0f) notes->add("specular_color", "pbrt's dielectric has no specular tint or weight: dropped");
         if (coated) notes->add("coat_weight", "pbrt's dielectric has no coat: dropped");
         return out.text();
     }
@@ -93,7 +92,7 @@ std::string write_material(const brdf::Material& m, const std::string& name, Not
     if (coated && m.specular_weight != 0.0f)
         notes->add("specular_roughness", "pbrt's coated diffuse has one interface: the coat's; the base's own specular is dropped");
     if (m.base_diffuse_roughness != 0.0f) notes->add("base_diffuse_roughness", "pbrt's coated diffuse base is Lambert: dropped");
-    if (!is_white(m.specular_color) || (!coated && m.specular_weight != 1.0f))
+    if (!is_grey(m.specular_color, 1.0f) || (!coated && m.specular_weight != 1.0f))
         notes->add("specular_color", "pbrt's coated diffuse interface has no tint or weight: dropped");
     return out.text();
 }
@@ -106,7 +105,7 @@ std::string pbrt_text(const brdf::Preset& preset, Notes* notes) {
     std::string text = "# " + preset.name + " (dtoadq convert; docs/interchange.md)\n" + write_material(m, identifier(preset.name), notes);
     if (m.coat_weight > 0.0f) {
         if (m.coat_weight != 1.0f) notes->add("coat_weight", "pbrt's coated materials have a whole coat: written as 1");
-        if (!is_white(m.coat_color)) notes->add("coat_color", "pbrt's coat is clear (its albedo is a scattering medium's): dropped");
+        if (!is_grey(m.coat_color, 1.0f)) notes->add("coat_color", "pbrt's coat is clear (its albedo is a scattering medium's): dropped");
         if (m.coat_darkening != 1.0f) notes->add("coat_darkening", "pbrt's layers scatter between the interfaces, fully darkening: dropped");
         if (m.coat_roughness != 0.0f && m.metallic > 0.0f)
             notes->add("coat_roughness", "OpenPBR roughens the specular under a rough coat; the conductor below keeps its own roughness in pbrt");

@@ -597,9 +597,10 @@ cli_bad_input(NAME convert.gltf_out_of_range ABSENT ${PNG}
 cli_bad_input(NAME convert.gltf_missing_material ABSENT ${PNG}
               EXPECT "${E}${D}/no_material\\.gltf: materials: missing material: the document holds no materials$"
               ARGS convert ${D}/no_material.gltf --to mtlx -o ${PNG})
-cli_bad_input(NAME convert.lab_preset ABSENT ${PNG}
-              EXPECT "${E}presets/gold\\.json: model: a \"lab\" material has no OpenPBR inputs: convert takes \"openpbr\" presets"
-              ARGS convert presets/gold.json --to mtlx -o ${PNG})
+# a lab preset is fitted to openpbr first; one with a transmission lobe cannot be
+cli_bad_input(NAME convert.lab_glass_not_fitted ABSENT ${PNG}
+              EXPECT "${E}presets/glass\\.json: lobes: a mirror or transmission lobe cannot be fitted from reflectance at direction pairs"
+              ARGS convert presets/glass.json --to mtlx -o ${PNG})
 cli_bad_input(NAME convert.unknown_extension ABSENT ${PNG}
               EXPECT "${E}.*/convert\\.unknown_extension\\.png: unknown file extension \"\\.png\" \\(expected preset \\(\\.json\\), mtlx \\(\\.mtlx\\), gltf \\(\\.gltf\\), mitsuba \\(\\.xml\\), pbrt \\(\\.pbrt\\). or name the format with --to\\)$"
               ARGS convert presets/car_paint.json -o ${PNG})
