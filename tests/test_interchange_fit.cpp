@@ -3,9 +3,12 @@
 // reflectance fit cannot hold is refused. On a coarse grid of pairs and few starts, to stay cheap.
 #include <catch2/catch.hpp>
 
+#include <cstring>
+
 #include "brdf/host/parameters.hpp"
 #include "common/input_error.hpp"
 #include "fit/fit_metric.hpp"
+#include "fit/fit_space.hpp"
 #include "interchange/fit_to_openpbr.hpp"
 
 namespace fit_tests {
@@ -54,6 +57,31 @@ TEST_CASE("a lab GGX conductor fits openpbr's metal at least as well as its exac
     brdf::Material grey = counterpart;
     grey.albedo[0] = grey.albedo[1] = grey.albedo[2] = 0.8f;
     CHECK(lab::fit::fit_error(grey, pairs) > 100.0 * std::max(fit.error, 1e-4));
+}
+
+TEST_CASE("the openpbr fit space maps a material to its vector and back exactly", "[interchange][fit]") {
+    for (bool anisotropic : {false, true}) {
+        lab::fit::FitSpace space;
+        space.openpbr = true;
+        space.anisotropic = anisotropic;
+        brdf::Material m = brdf::default_material(BRDF_MODEL_OPENPBR);
+        m.albedo[0] = 0.3f;
+        m.albedo[1] = 0.6f;
+        m.albedo[2] = 0.9f;
+        m.roughness = 0.45f;
+        m.metallic = 0.7f;
+        m.ior = 1.8f;
+        m.anisotropic = anisotropic ? 0.6f : 0.0f;
+        const std::vector<double> x = lab::fit::parameters_from_material(space, m);
+        REQUIRE(x.size() == lab::fit::fit_parameters(space).size());
+        const brdf::Material back = lab::fit::material_from_parameters(space, x);
+        CHECK(std::memcmp(&back, &m, sizeof m) == 0);
+        for (size_t k = 0; k < x.size(); ++k) {
+            INFO(lab::fit::fit_parameters(space)[k].name);
+            CHECK(x[k] >= lab::fit::fit_parameters(space)[k].min);
+            CHECK(x[k] <= lab::fit::fit_parameters(space)[k].max);
+        }
+    }
 }
 
 TEST_CASE("a lab material with a mirror or transmission lobe is refused by the fit, naming the preset", "[interchange][fit]") {
