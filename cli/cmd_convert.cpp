@@ -3,14 +3,12 @@
 // pbrt-v4 (.pbrt) out, chosen by the output's extension or --to. Every parameter or element the
 // conversion could not carry exactly is printed as one note on stderr.
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 
 #include "cli/commands.hpp"
 #include "common/input_error.hpp"
-#include "interchange/fit_to_openpbr.hpp"
+#include "interchange/export_material.hpp"
 #include "interchange/formats.hpp"
 
 namespace lab::cli {
@@ -26,38 +24,22 @@ struct ConvertOptions {
     bool quiet = false;
 };
 
-// The fit's report beside the export: car.mtlx -> car.fit.json.
-std::string fit_report_path(const std::string& output) {
-    const std::filesystem::path p(output);
-    return (p.parent_path() / (p.stem().string() + ".fit.json")).string();
-}
-
 void print_notes(const std::string& file, const interchange::Notes& notes) {
     for (const interchange::Note& n : notes.items)
-        std::fprintf(stderr, "dtoadq: note: %s: %s%s%s\n", file.c_str(), n.field.c_str(), n.field.empty() ? "" : ": ", n.text.c_str());
+        std::fprintf(stderr, "dtoadq: note: %s\n", interchange::note_line(file, n).c_str());
 }
 
 void run_convert(const ConvertOptions& o) {
     const interchange::Format from = interchange::format_of_file(o.input);
     const interchange::Format to = o.to.empty() ? interchange::format_of_file(o.output) : interchange::format_named(o.to, "command line", "--to");
-    interchange::Imported imported = interchange::read_material(o.input, from);
+    const interchange::Imported imported = interchange::read_material(o.input, from);
     print_notes(o.input, imported.notes);
-    if (imported.preset.material.model != BRDF_MODEL_OPENPBR) {
-        if (o.fit_starts < 1 || o.fit_evaluations < 10)
-            throw InputError("command line", "--fit-starts", "needs at least 1 start of at least 10 evaluations");
-        lab::fit::FitOptions options;
-        options.starts = o.fit_starts;
-        options.max_evaluations = o.fit_evaluations;
-        const interchange::OpenpbrFit fit = interchange::fit_to_openpbr(imported.preset, options, lab::fit::PairGrid{3, 3, 10, 1});
-        const std::string report = fit_report_path(o.output);
-        std::ofstream out(report);
-        if (!(out << fit.report.dump(2) << "\n")) throw InputError(report, "", "cannot write the fit's report");
-        std::fprintf(stderr, "dtoadq: note: %s: model: a \"%s\" material, fitted to openpbr: error %.4g (cosine-weighted log-space RMSE), report in %s\n",
-                     o.input.c_str(), fit.report.at("fitted_from").get<std::string>().c_str(), fit.error, report.c_str());
-        imported.preset = fit.preset;
-    }
-    interchange::Notes written;
-    interchange::write_material(imported.preset, to, o.output, &written);
+    if (o.fit_starts < 1 || o.fit_evaluations < 10)
+        throw InputError("command line", "--fit-starts", "needs at least 1 start of at least 10 evaluations");
+    lab::fit::FitOptions options;
+    options.starts = o.fit_starts;
+    options.max_evaluations = o.fit_evaluations;
+    const interchange::Notes written = interchange::export_material(imported.preset, to, o.output, options);
     print_notes(o.output, written);
     if (!o.quiet)
         std::printf("converted %s (%s) to %s (%s): %zu note(s)\n", o.input.c_str(), interchange::format_name(from), o.output.c_str(),

@@ -6,6 +6,10 @@
 
 namespace interchange {
 
+std::string note_line(const std::string& file, const Note& note) {
+    return file + ": " + note.field + (note.field.empty() ? "" : ": ") + note.text;
+}
+
 void Notes::add(const std::string& field, const std::string& text) {
     for (const Note& n : items)
         if (n.field == field && n.text == text) return;

@@ -22,6 +22,9 @@ struct Note {
     std::string text;
 };
 
+// "FILE: FIELD: text", the line a note is printed as.
+std::string note_line(const std::string& file, const Note& note);
+
 struct Notes {
     std::vector<Note> items;
     // a note already made (the same field and text, as the parts of a mix give) is not repeated

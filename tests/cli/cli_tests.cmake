@@ -520,6 +520,9 @@ cli_bad_input(NAME view.bad_constant_env EXPECT "${E}--env: constant: G is not a
 cli_bad_input(NAME view.set_unknown_key EXPECT "${E}--set: roughnes: unknown key$" ARGS view --frames 2 --set roughnes=0.2@1)
 cli_bad_input(NAME view.set_out_of_range EXPECT "${E}--set: roughness: value 2 is out of range \\[0, 1\\]$" ARGS view --frames 2 --set roughness=2@1)
 cli_bad_input(NAME view.bad_export_target EXPECT "${E}--export-to: expected SCENE\\.json:NAME" ARGS view --export-to nope)
+# a material file of another tool is exported on exit; an unknown extension is neither
+cli_bad_input(NAME view.bad_export_extension EXPECT "${E}--export-to: expected SCENE\\.json:NAME or a material file FILE\\.mtlx.\\.gltf.\\.xml.\\.pbrt, got \"out\\.txt\"$"
+              ARGS view --export-to out.txt)
 cli_bad_input(NAME view.move_unknown_key EXPECT "${E}--move: spin: unknown key \\(orbit, env_rotation, env_exposure, background_blur, background_opacity\\)$" ARGS view --frames 2 --move spin=3@1)
 cli_bad_input(NAME view.unknown_reference_load EXPECT "${E}--load-references: unknown reference \"ball\" \\(none, all, or a list of chrome, grey, chart, catcher\\)$"
               ARGS view --frames 2 --load-references ball@1)
