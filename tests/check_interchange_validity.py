@@ -10,6 +10,10 @@ formats' own tools").
   interchange/schema/gltf/ with their licence; every extension a material uses must be listed in
   extensionsUsed and every listed one used.
 
+And the other way: documents MaterialX's own writer makes (an open_pbr_surface and a
+standard_surface material) are read by `dtoadq convert` into the values set, or the translation
+graph's for standard_surface.
+
 Before it checks the lab's files, it checks that each validator refuses broken variants (an input
 of the wrong type, an unknown input, a dangling shader reference; a roughness of 2, no asset, a
 negative clearcoat, an extension missing from extensionsUsed), so it can fail.
@@ -94,6 +98,42 @@ def gltf_problems(doc, validator):
     return problems
 
 
+def materialx_written_documents_read_back(dtoadq, folder):
+    """Documents MaterialX's own writer makes (writeToXmlFile): an open_pbr_surface and a
+    standard_surface material, read by `dtoadq convert` into presets whose values are those set
+    (open_pbr_surface) or the translation graph's (standard_surface). The values are exact in binary,
+    so the comparison is exact."""
+    failures = []
+    cases = {
+        "open_pbr_surface": ({"base_color": mx.Color3(0.25, 0.5, 0.75), "base_metalness": 0.5, "specular_roughness": 0.125,
+                              "coat_weight": 1.0, "coat_ior": 1.5, "fuzz_weight": 0.25, "thin_film_thickness": 0.375},
+                             {"base_color": [0.25, 0.5, 0.75], "base_metalness": 0.5, "specular_roughness": 0.125, "coat_weight": 1.0,
+                              "coat_ior": 1.5, "fuzz_weight": 0.25, "thin_film_thickness": 0.375}),
+        "standard_surface": ({"base": 0.5, "base_color": mx.Color3(1.0, 0.5, 0.25), "metalness": 1.0, "specular_roughness": 0.25,
+                              "coat": 0.5, "coat_color": mx.Color3(0.5, 1.0, 1.0)},
+                             # the translation graph: base_color x mix(1, coat_color, coat); a coated metal has no coat on top
+                             {"base_weight": 0.5, "base_color": [0.75, 0.5, 0.25], "base_metalness": 1.0, "specular_weight": 1.0,
+                              "specular_roughness": 0.25, "coat_weight": 0.0}),
+    }
+    for category, (inputs, expected) in cases.items():
+        doc = mx.createDocument()
+        shader = doc.addNode(category, "SR_written", "surfaceshader")
+        for name, value in inputs.items():
+            shader.setInputValue(name, value)
+        material = doc.addMaterialNode("M_written", shader)
+        assert material
+        path = os.path.join(folder, f"written_by_materialx_{category}.mtlx")
+        mx.writeToXmlFile(doc, path)
+        out = os.path.join(folder, f"written_by_materialx_{category}.json")
+        subprocess.run([dtoadq, "convert", path, "-o", out, "--quiet"], check=True, stderr=subprocess.DEVNULL)
+        with open(out) as f:
+            preset = json.load(f)
+        for key, value in expected.items():
+            if preset.get(key) != value:
+                failures.append(f"a {category} document written by MaterialX: {key} read as {preset.get(key)}, expected {value}")
+    return failures, len(cases)
+
+
 def main():
     dtoadq = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "cli", "dtoadq")
     library = mx.createDocument()
@@ -161,6 +201,9 @@ def main():
             if not gltf_problems(variant, validator):
                 failures.append(f"the glTF checks accepted a document with {what}")
 
+        written_failures, written = materialx_written_documents_read_back(dtoadq, folder)
+        failures += written_failures
+
         for name in presets + ["everything"]:
             problems = mtlx_problems(os.path.join(folder, name + ".mtlx"), library)
             with open(os.path.join(folder, name + ".gltf")) as f:
@@ -170,7 +213,8 @@ def main():
     for failure in failures:
         print("check_interchange_validity: " + failure, file=sys.stderr)
     print(f"check_interchange_validity: MaterialX {mx.getVersionString()}, jsonschema {importlib.metadata.version('jsonschema')}: "
-          f"{len(presets)} presets and one material with every extension, {len(broken_mtlx) + len(variants)} broken variants refused, {len(failures)} failures")
+          f"{len(presets)} presets and one material with every extension, {len(broken_mtlx) + len(variants)} broken variants refused, "
+          f"{written} documents written by MaterialX read back, {len(failures)} failures")
     return 1 if failures else 0
 
 
