@@ -1,4 +1,5 @@
-// What the interchange tests share: the bundled openpbr presets.
+// What the interchange tests share: the bundled openpbr presets, and the message of a reader's
+// lab::InputError.
 #pragma once
 
 #include <filesystem>
@@ -7,6 +8,7 @@
 
 #include "brdf/host/parameters.hpp"
 #include "brdf/host/preset.hpp"
+#include "common/input_error.hpp"
 #include "interchange/openpbr_mapping.hpp"
 
 namespace interchange_checks {
@@ -19,6 +21,17 @@ inline std::vector<brdf::Preset> openpbr_presets() {
         if (p.material.model == BRDF_MODEL_OPENPBR) out.push_back(p);
     }
     return out;
+}
+
+// The message of the lab::InputError `read` throws, or "" when it throws none.
+template <class Read>
+std::string input_error_of(const Read& read) {
+    try {
+        read();
+    } catch (const lab::InputError& e) {
+        return e.what();
+    }
+    return "";
 }
 
 }  // namespace interchange_checks

@@ -10,6 +10,7 @@
 #include "fit/fit_metric.hpp"
 #include "fit/fit_space.hpp"
 #include "interchange/fit_to_openpbr.hpp"
+#include "tests/interchange_checks.hpp"
 
 namespace fit_tests {
 
@@ -87,12 +88,8 @@ TEST_CASE("the openpbr fit space maps a material to its vector and back exactly"
 TEST_CASE("a lab material with a mirror or transmission lobe is refused by the fit, naming the preset", "[interchange][fit]") {
     brdf::Preset glass = lab_conductor();
     glass.material.weight_transmission = 1.0f;
-    std::string error;
-    try {
-        interchange::fit_to_openpbr(glass, lab::fit::FitOptions{}, lab::fit::PairGrid{6, 6, 20, 1});
-    } catch (const lab::InputError& e) {
-        error = e.what();
-    }
+    const std::string error = interchange_checks::input_error_of(
+        [&] { interchange::fit_to_openpbr(glass, lab::fit::FitOptions{}, lab::fit::PairGrid{6, 6, 20, 1}); });
     CHECK(error.rfind("conductor.json: lobes: a mirror or transmission lobe cannot be fitted", 0) == 0);
 }
 

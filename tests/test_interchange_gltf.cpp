@@ -22,12 +22,7 @@ namespace gltf_tests {
 using nlohmann::json;
 
 std::string error_of(const std::string& text) {
-    try {
-        interchange::parse_gltf_text(text, "mine.gltf");
-    } catch (const lab::InputError& e) {
-        return e.what();
-    }
-    return "";
+    return interchange_checks::input_error_of([&] { interchange::parse_gltf_text(text, "mine.gltf"); });
 }
 
 std::string with_material(const std::string& material) { return R"({"asset": {"version": "2.0"}, "materials": [)" + material + "]}"; }

@@ -16,12 +16,7 @@
 namespace mtlx_tests {
 
 std::string error_of(const std::string& text) {
-    try {
-        interchange::parse_mtlx_text(text, "mine.mtlx");
-    } catch (const lab::InputError& e) {
-        return e.what();
-    }
-    return "";
+    return interchange_checks::input_error_of([&] { interchange::parse_mtlx_text(text, "mine.mtlx"); });
 }
 
 std::string document(const std::string& shader, const std::string& inputs, const std::string& extra = "") {
@@ -170,12 +165,7 @@ TEST_CASE("a MaterialX file larger than the reader takes is refused before it is
     const std::string path = (std::filesystem::temp_directory_path() / "dtoadq-too-large.mtlx").string();
     { std::ofstream(path) << "<materialx/>"; }
     std::filesystem::resize_file(path, interchange::kMaxMaterialFileBytes + 1);
-    std::string error;
-    try {
-        interchange::read_mtlx(path);
-    } catch (const lab::InputError& e) {
-        error = e.what();
-    }
+    const std::string error = interchange_checks::input_error_of([&] { interchange::read_mtlx(path); });
     std::filesystem::remove(path);
     CHECK(error == path + ": is 8388609 bytes, more than the 8388608 a MaterialX file may hold");
 }
