@@ -132,7 +132,11 @@ Imported parse_mtlx_text(const std::string& text, const std::string& source) {
         throw InputError(source, std::string("<") + root.name() + ">", "not a MaterialX document (its root element is not <materialx>)");
     std::vector<pugi::xml_node> materials;
     for (const pugi::xml_node& child : root.children("surfacematerial")) materials.push_back(child);
-    if (materials.empty()) throw InputError(source, "materialx", "missing material: the document holds no <surfacematerial>");
+    if (materials.empty()) {
+        const bool includes = root.child("xi:include");
+        throw InputError(source, "materialx", std::string("missing material: the document holds no <surfacematerial>") +
+                                                  (includes ? " (it includes other documents, xi:include, which the lab does not follow)" : ""));
+    }
     const pugi::xml_node material = materials.front();
     const std::string material_name = material.attribute("name").value();
     Imported out;
@@ -148,7 +152,8 @@ Imported parse_mtlx_text(const std::string& text, const std::string& source) {
             shader_name = input.attribute("nodename").value();
             if (shader_name.empty())
                 throw InputError(source, material_name + "/surfaceshader", "names no shader node (nodename): a node graph's shader is not converted");
-        } else {
+        } else if (connection_of(input) || !std::string(input.attribute("value").value()).empty()) {
+            // an input left empty (MaterialX writes displacementshader value="") carries nothing
             out.notes.add(material_name + "/" + name, std::string("<") + input.name() + "> of the material: not converted");
         }
     }

@@ -133,12 +133,26 @@ TEST_CASE("what a MaterialX document holds beyond the lab's inputs is noted, one
     CHECK(in.preset.material.albedo[0] == 0.8f);  // the connected input keeps its default
 }
 
+TEST_CASE("a material's empty input carries nothing and is not noted; a connected one is", "[interchange][mtlx]") {
+    auto with_input = [](const std::string& input) {
+        return "<materialx version=\"1.39\"><open_pbr_surface name=\"SR_a\" type=\"surfaceshader\"/>"
+               "<surfacematerial name=\"a\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"SR_a\"/>" +
+               input + "</surfacematerial></materialx>";
+    };
+    CHECK(interchange::parse_mtlx_text(with_input("<input name=\"displacementshader\" type=\"displacementshader\" value=\"\"/>"), "a.mtlx")
+              .notes.items.empty());
+    CHECK(interchange::parse_mtlx_text(with_input("<input name=\"displacementshader\" type=\"displacementshader\" nodename=\"SR_a\"/>"), "a.mtlx")
+              .notes.names("a/displacementshader"));
+}
+
 TEST_CASE("bad MaterialX documents name the file, the element and the problem", "[interchange][mtlx]") {
     const std::string ok = "    <input name=\"coat_weight\" type=\"float\" value=\"0.5\" />\n";
     CHECK(error_of(document("open_pbr_surface", ok)).empty());
     CHECK(error_of("<materialx><open_pbr_surface") == "mine.mtlx: malformed XML: Error parsing start element tag at byte 27");
     CHECK(error_of("<gltf/>") == "mine.mtlx: <gltf>: not a MaterialX document (its root element is not <materialx>)");
     CHECK(error_of("<materialx version=\"1.39\"/>") == "mine.mtlx: materialx: missing material: the document holds no <surfacematerial>");
+    CHECK(error_of("<materialx xmlns:xi=\"http://www.w3.org/2001/XInclude\"><xi:include href=\"a.mtlx\"/></materialx>") ==
+          "mine.mtlx: materialx: missing material: the document holds no <surfacematerial> (it includes other documents, xi:include, which the lab does not follow)");
     CHECK(error_of(document("gltf_pbr", ok)) == "mine.mtlx: SR_a: unknown node <gltf_pbr> (the lab converts open_pbr_surface and standard_surface)");
     CHECK(error_of(document("open_pbr_surface", "    <input name=\"coat_wieght\" type=\"float\" value=\"1\" />\n")) ==
           "mine.mtlx: SR_a/coat_wieght: unknown input of open_pbr_surface");
