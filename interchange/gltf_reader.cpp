@@ -110,6 +110,10 @@ Imported parse_gltf_text(const std::string& text, const std::string& source) {
 
     Imported out;
     Notes* notes = &out.notes;
+    if (doc.contains("extensionsRequired") && doc.at("extensionsRequired").is_array())
+        for (const json& name : doc.at("extensionsRequired"))
+            if (!name.is_string() || !kExtensionsRead.count(name.get<std::string>()))
+                notes->add("extensionsRequired", "requires " + name.dump() + ", which the lab does not read: the material is converted without it");
     for (size_t k = 1; k < materials.size(); ++k)
         notes->add("materials[" + std::to_string(k) + "]", "a further material: not converted (the first is)");
     brdf::Material& m = out.preset.material;

@@ -88,8 +88,9 @@ json gltf_document(const brdf::Preset& preset, Notes* notes) {
         for (int c = 0; c < 3; ++c) sheen[c] = m.fuzz_weight * m.fuzz_color[c];
         extensions["KHR_materials_sheen"] = {{"sheenColorFactor", rgb(sheen)}, {"sheenRoughnessFactor", shortest_decimal(m.fuzz_roughness)}};
         if (m.fuzz_weight != 1.0f) notes->add("fuzz_weight", "glTF has no sheen weight: folded into sheenColorFactor (read back as fuzz_weight 1)");
-    } else if (!same(m.fuzz_color, d.fuzz_color) || m.fuzz_roughness != d.fuzz_roughness) {
-        notes->add("fuzz_color", "fuzz_weight is 0: the fuzz's colour and roughness are not written");
+    } else {
+        if (!same(m.fuzz_color, d.fuzz_color)) notes->add("fuzz_color", "fuzz_weight is 0: the fuzz's colour is not written");
+        if (m.fuzz_roughness != d.fuzz_roughness) notes->add("fuzz_roughness", "fuzz_weight is 0: the fuzz's roughness is not written");
     }
 
     if (m.thin_film_weight != 0.0f) {
@@ -98,8 +99,9 @@ json gltf_document(const brdf::Preset& preset, Notes* notes) {
                                                    {"iridescenceIor", shortest_decimal(m.thin_film_ior)},
                                                    {"iridescenceThicknessMinimum", nanometres},
                                                    {"iridescenceThicknessMaximum", nanometres}};
-    } else if (m.thin_film_thickness != d.thin_film_thickness || m.thin_film_ior != d.thin_film_ior) {
-        notes->add("thin_film_thickness", "thin_film_weight is 0: the film's thickness and index are not written");
+    } else {
+        if (m.thin_film_thickness != d.thin_film_thickness) notes->add("thin_film_thickness", "thin_film_weight is 0: the film's thickness is not written");
+        if (m.thin_film_ior != d.thin_film_ior) notes->add("thin_film_ior", "thin_film_weight is 0: the film's index is not written");
     }
 
     if (m.emission_luminance != 0.0f) {

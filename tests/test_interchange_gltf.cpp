@@ -160,6 +160,10 @@ TEST_CASE("what a glTF material holds beyond the lab's parameters is noted, one 
     CHECK(in.notes.items.size() == 5);
     CHECK(in.preset.material.albedo[1] == 0.5f);
     CHECK(in.preset.material.metallic == 1.0f);  // glTF's default
+    const interchange::Imported required = interchange::parse_gltf_text(
+        R"({"asset": {"version": "2.0"}, "extensionsRequired": ["KHR_texture_transform", "KHR_materials_ior"], "materials": [{}]})", "r.gltf");
+    CHECK(required.notes.names("extensionsRequired"));
+    CHECK(required.notes.items.size() == 1);
 }
 
 TEST_CASE("bad glTF documents name the file, the element and the problem", "[interchange][gltf]") {
