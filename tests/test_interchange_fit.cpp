@@ -4,8 +4,13 @@
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
+#include "brdf/brdf.hpp"
+#include "brdf/host/merl_file.hpp"
 #include "brdf/host/parameters.hpp"
+#include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
 #include "fit/fit_metric.hpp"
 #include "fit/fit_space.hpp"
@@ -58,6 +63,30 @@ TEST_CASE("a lab GGX conductor fits openpbr's metal at least as well as its exac
     brdf::Material grey = counterpart;
     grey.albedo[0] = grey.albedo[1] = grey.albedo[2] = 0.8f;
     CHECK(lab::fit::fit_error(grey, pairs) > 100.0 * std::max(fit.error, 1e-4));
+}
+
+TEST_CASE("a measured material fits from its table's entries; the report names the file", "[interchange][fit]") {
+    // a MERL file made from the lab conductor (brdf::tabulate_merl), as the project makes its own
+    const brdf::Preset lab = lab_conductor();
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "dtoadq-interchange-fit";
+    std::filesystem::create_directories(dir);
+    brdf::write_merl_file((dir / "conductor.binary").string(),
+                          brdf::tabulate_merl([&](brdf::float3 wo, brdf::float3 wi) { return brdf::bsdf_eval(&lab.material, wo, wi); }, "conductor"));
+    std::ofstream(dir / "measured.json") << R"({"name": "measured conductor", "measured": "conductor.binary"})";
+    const brdf::Preset measured = brdf::load_preset((dir / "measured.json").string());
+    lab::fit::FitOptions options;
+    options.starts = 2;
+    options.max_evaluations = 600;
+    const interchange::OpenpbrFit fit = interchange::fit_to_openpbr(measured, options, lab::fit::PairGrid{6, 6, 20, 1});
+    const interchange::OpenpbrFit from_lab = interchange::fit_to_openpbr(lab, options, lab::fit::PairGrid{6, 6, 20, 1});
+    std::filesystem::remove_all(dir);
+    CHECK(fit.report.at("fitted_from") == "measured");
+    CHECK(fit.report.at("measured") == (dir / "conductor.binary").string());
+    // the table holds the lab material's values at the same bin centres, in doubles of float
+    // values: the same pairs and targets up to MERL's scaling, so the same floor
+    INFO("measured " << fit.error << ", lab " << from_lab.error);
+    CHECK(fit.error <= std::max(1.01 * from_lab.error, from_lab.error + 1e-4));
+    CHECK(fit.preset.name == "measured conductor");
 }
 
 TEST_CASE("the openpbr fit space maps a material to its vector and back exactly", "[interchange][fit]") {
