@@ -57,9 +57,10 @@ const char* format_name(Format format) {
     return "?";
 }
 
-Imported read_material(const std::string& path, Format format) {
-    if (format == Format::mtlx) return read_mtlx(path);
-    if (format == Format::gltf) return read_gltf(path);
+Imported read_material(const std::string& path, Format format, const std::string& material) {
+    if (format == Format::mtlx) return read_mtlx(path, material);
+    if (format == Format::gltf) return read_gltf(path, material);
+    if (!material.empty()) throw lab::InputError("command line", "--material", "a preset file holds one material");
     if (format == Format::mitsuba || format == Format::pbrt)
         throw lab::InputError(path, "", std::string("the lab writes ") + format_name(format) + " but does not read it (it reads .json, .mtlx and .gltf)");
     Imported imported;

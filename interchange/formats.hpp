@@ -18,7 +18,8 @@ const char* format_name(Format format);
 
 // A material file in any format the lab reads (preset, MaterialX, glTF), as an openpbr preset or,
 // for a preset file, the preset as it is; Mitsuba and pbrt are written only (lab::InputError).
-Imported read_material(const std::string& path, Format format);
+// `material` chooses one of a document's materials by name (glTF: or index); empty: the first.
+Imported read_material(const std::string& path, Format format, const std::string& material = "");
 // The text of a material in `format`; notes name what it could not carry exactly.
 std::string material_text(const brdf::Preset& preset, Format format, Notes* notes);
 // material_text written to `path`; throws lab::InputError(path, "", ...) when it cannot be written.

@@ -95,7 +95,7 @@ const brdf::ScalarParameter& parameter(const char* key) { return *lab_openpbr_pa
 
 }  // namespace
 
-Imported parse_gltf_text(const std::string& text, const std::string& source) {
+Imported parse_gltf_text(const std::string& text, const std::string& source, const std::string& wanted) {
     const json doc = parse_json(text, source);
     if (!doc.is_object()) throw InputError(source, "", "a glTF document must be a JSON object");
     if (!doc.contains("asset") || !doc.at("asset").is_object()) throw InputError(source, "asset", "missing: not a glTF document");
@@ -114,17 +114,31 @@ Imported parse_gltf_text(const std::string& text, const std::string& source) {
         for (const json& name : doc.at("extensionsRequired"))
             if (!name.is_string() || !kExtensionsRead.count(name.get<std::string>()))
                 notes->add("extensionsRequired", "requires " + name.dump() + ", which the lab does not read: the material is converted without it");
-    for (size_t k = 1; k < materials.size(); ++k)
-        notes->add("materials[" + std::to_string(k) + "]", "a further material: not converted (the first is)");
+    size_t chosen = 0;
+    if (!wanted.empty()) {
+        std::string names;
+        for (chosen = 0; chosen < materials.size(); ++chosen) {
+            const json& named = materials.at(chosen);
+            const std::string name = named.is_object() && named.contains("name") && named.at("name").is_string() ? named.at("name").get<std::string>() : "";
+            if (name == wanted || std::to_string(chosen) == wanted) break;
+            names += (names.empty() ? "" : ", ") + (name.empty() ? std::to_string(chosen) : name);
+        }
+        if (chosen == materials.size()) throw InputError(source, "materials", "no material named or numbered \"" + wanted + "\" (the document holds " + names + ")");
+    }
+    for (size_t k = 0; k < materials.size(); ++k)
+        if (k != chosen)
+            notes->add("materials[" + std::to_string(k) + "]", "a further material: not converted (materials[" + std::to_string(chosen) + "] is; --material chooses)");
     brdf::Material& m = out.preset.material;
     m = brdf::default_material(BRDF_MODEL_OPENPBR);
     out.preset.source = source;
-    Fields material(materials.at(0), "materials[0]", source, notes);
+    const std::string path = "materials[" + std::to_string(chosen) + "]";
+    const json& chosen_material = materials.at(chosen);
+    Fields material(chosen_material, path, source, notes);
     out.preset.name = "material";
     material.ignore("name");
     if (material.has("name")) {
-        if (!materials.at(0).at("name").is_string()) throw InputError(source, material.field("name"), "expected a string");
-        out.preset.name = materials.at(0).at("name").get<std::string>();
+        if (!chosen_material.at("name").is_string()) throw InputError(source, material.field("name"), "expected a string");
+        out.preset.name = chosen_material.at("name").get<std::string>();
     }
     auto range = [](const char* key) { return std::pair<float, float>{parameter(key).min, parameter(key).max}; };
     float gltf_roughness = 1.0f;
@@ -148,7 +162,7 @@ Imported parse_gltf_text(const std::string& text, const std::string& source) {
     for (const char* key : {"alphaMode", "alphaCutoff", "doubleSided"}) {
         material.ignore(key);
         if (!material.has(key)) continue;
-        const json& v = materials.at(0).at(key);
+        const json& v = chosen_material.at(key);
         const bool fallback = (std::string(key) == "alphaMode" && v == "OPAQUE") || (std::string(key) == "doubleSided" && v == false);
         if (!fallback) notes->add(material.field(key), "not converted: the lab's surfaces are opaque and bound solids");
     }
@@ -239,6 +253,8 @@ Imported parse_gltf_text(const std::string& text, const std::string& source) {
     return out;
 }
 
-Imported read_gltf(const std::string& path) { return parse_gltf_text(lab::read_text_file(path, kMaxMaterialFileBytes, "glTF"), path); }
+Imported read_gltf(const std::string& path, const std::string& material) {
+    return parse_gltf_text(lab::read_text_file(path, kMaxMaterialFileBytes, "glTF"), path, material);
+}
 
 }  // namespace interchange

@@ -1,4 +1,4 @@
-// Reads a glTF 2.0 document's first material as an openpbr preset: pbrMetallicRoughness and the
+// Reads a glTF 2.0 document's first material (or the one named) as an openpbr preset: pbrMetallicRoughness and the
 // KHR_materials_* extensions the writer uses (interchange/gltf_writer.hpp), by the mapping of
 // docs/interchange.md. Textures, other extensions, further materials and alpha modes are noted one
 // line each; malformed input (not JSON, not glTF 2.0, no material, a wrong type, a value out of the
@@ -11,8 +11,10 @@
 
 namespace interchange {
 
-Imported read_gltf(const std::string& path);
+// `material` names the material to read, by its name or its index in `materials`; empty: the first
+// (the others are noted).
+Imported read_gltf(const std::string& path, const std::string& material = "");
 // The same from the document's text; `source` names it in messages.
-Imported parse_gltf_text(const std::string& text, const std::string& source);
+Imported parse_gltf_text(const std::string& text, const std::string& source, const std::string& material = "");
 
 }  // namespace interchange

@@ -122,7 +122,7 @@ void apply_openpbr(const std::map<std::string, std::array<float, 3>>& values, co
 
 }  // namespace
 
-Imported parse_mtlx_text(const std::string& text, const std::string& source) {
+Imported parse_mtlx_text(const std::string& text, const std::string& source, const std::string& wanted) {
     pugi::xml_document doc;
     const pugi::xml_parse_result parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
     if (!parsed)
@@ -137,11 +137,19 @@ Imported parse_mtlx_text(const std::string& text, const std::string& source) {
         throw InputError(source, "materialx", std::string("missing material: the document holds no <surfacematerial>") +
                                                   (includes ? " (it includes other documents, xi:include, which the lab does not follow)" : ""));
     }
-    const pugi::xml_node material = materials.front();
+    size_t chosen = 0;
+    if (!wanted.empty()) {
+        std::string names;
+        for (chosen = 0; chosen < materials.size() && wanted != materials[chosen].attribute("name").value(); ++chosen)
+            names += (names.empty() ? "" : ", ") + std::string(materials[chosen].attribute("name").value());
+        if (chosen == materials.size()) throw InputError(source, wanted, "no <surfacematerial> of that name (the document holds " + names + ")");
+    }
+    const pugi::xml_node material = materials[chosen];
     const std::string material_name = material.attribute("name").value();
     Imported out;
-    for (size_t k = 1; k < materials.size(); ++k)
-        out.notes.add(materials[k].attribute("name").value(), "a further material: not converted (the first, \"" + material_name + "\", is)");
+    for (size_t k = 0; k < materials.size(); ++k)
+        if (k != chosen)
+            out.notes.add(materials[k].attribute("name").value(), "a further material: not converted (\"" + material_name + "\" is; --material chooses)");
     std::string shader_name;
     for (const pugi::xml_node& input : material.children()) {
         if (input.type() != pugi::node_element) continue;
@@ -185,6 +193,8 @@ Imported parse_mtlx_text(const std::string& text, const std::string& source) {
     return out;
 }
 
-Imported read_mtlx(const std::string& path) { return parse_mtlx_text(lab::read_text_file(path, kMaxMaterialFileBytes, "MaterialX"), path); }
+Imported read_mtlx(const std::string& path, const std::string& material) {
+    return parse_mtlx_text(lab::read_text_file(path, kMaxMaterialFileBytes, "MaterialX"), path, material);
+}
 
 }  // namespace interchange

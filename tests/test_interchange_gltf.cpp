@@ -25,6 +25,10 @@ std::string error_of(const std::string& text) {
     return interchange_checks::input_error_of([&] { interchange::parse_gltf_text(text, "mine.gltf"); });
 }
 
+std::string error_of_material(const std::string& text, const std::string& material) {
+    return interchange_checks::input_error_of([&] { interchange::parse_gltf_text(text, "m.gltf", material); });
+}
+
 std::string with_material(const std::string& material) { return R"({"asset": {"version": "2.0"}, "materials": [)" + material + "]}"; }
 
 // Every parameter glTF expresses set away from its default, with the rest at values glTF carries
@@ -164,6 +168,19 @@ TEST_CASE("what a glTF material holds beyond the lab's parameters is noted, one 
         R"({"asset": {"version": "2.0"}, "extensionsRequired": ["KHR_texture_transform", "KHR_materials_ior"], "materials": [{}]})", "r.gltf");
     CHECK(required.notes.names("extensionsRequired"));
     CHECK(required.notes.items.size() == 1);
+}
+
+TEST_CASE("a glTF material is chosen by name or index; the others are noted", "[interchange][gltf]") {
+    const std::string doc = with_material(R"({"name": "a", "pbrMetallicRoughness": {"metallicFactor": 0.25}},
+                                             {"name": "b", "pbrMetallicRoughness": {"metallicFactor": 0.5}},
+                                             {"pbrMetallicRoughness": {"metallicFactor": 0.75}})");
+    const interchange::Imported b = interchange::parse_gltf_text(doc, "m.gltf", "b");
+    CHECK(b.preset.name == "b");
+    CHECK(b.preset.material.metallic == 0.5f);
+    CHECK(b.notes.names("materials[0]"));
+    CHECK(b.notes.names("materials[2]"));
+    CHECK(interchange::parse_gltf_text(doc, "m.gltf", "2").preset.material.metallic == 0.75f);
+    CHECK(error_of_material(doc, "c") == "m.gltf: materials: no material named or numbered \"c\" (the document holds a, b, 2)");
 }
 
 TEST_CASE("bad glTF documents name the file, the element and the problem", "[interchange][gltf]") {

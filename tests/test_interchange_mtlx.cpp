@@ -133,6 +133,20 @@ TEST_CASE("what a MaterialX document holds beyond the lab's inputs is noted, one
     CHECK(in.preset.material.albedo[0] == 0.8f);  // the connected input keeps its default
 }
 
+TEST_CASE("a MaterialX material is chosen by name; the others are noted", "[interchange][mtlx]") {
+    const std::string extra =
+        "  <open_pbr_surface name=\"SR_b\" type=\"surfaceshader\"><input name=\"coat_weight\" type=\"float\" value=\"0.5\"/></open_pbr_surface>\n"
+        "  <surfacematerial name=\"b\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"SR_b\"/></surfacematerial>\n";
+    const std::string doc = document("open_pbr_surface", "", extra);
+    const interchange::Imported b = interchange::parse_mtlx_text(doc, "m.mtlx", "b");
+    CHECK(b.preset.name == "b");
+    CHECK(b.preset.material.coat_weight == 0.5f);
+    CHECK(b.notes.names("a"));
+    CHECK(b.notes.names("SR_a"));  // the other material's shader node, not converted
+    CHECK(interchange_checks::input_error_of([&] { interchange::parse_mtlx_text(doc, "m.mtlx", "c"); }) ==
+          "m.mtlx: c: no <surfacematerial> of that name (the document holds a, b)");
+}
+
 TEST_CASE("a material's empty input carries nothing and is not noted; a connected one is", "[interchange][mtlx]") {
     auto with_input = [](const std::string& input) {
         return "<materialx version=\"1.39\"><open_pbr_surface name=\"SR_a\" type=\"surfaceshader\"/>"
