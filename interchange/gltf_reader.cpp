@@ -191,8 +191,9 @@ Imported parse_gltf_text(const std::string& text, const std::string& source, con
         if (const json* o = ext.object("KHR_materials_transmission")) {
             Fields f(*o, ext.field("KHR_materials_transmission"), source, notes);
             m.weight_transmission = f.number("transmissionFactor", 0.0f, 1.0f, 0.0f);
-            if (m.weight_transmission > 0.0f && !(m.albedo[0] == 1.0f && m.albedo[1] == 1.0f && m.albedo[2] == 1.0f))
-                notes->add(f.field("transmissionFactor"), "glTF tints the transmitted light by baseColorFactor; the lab's transmission_color stays white");
+            // glTF's transmitted light takes the base colour's tint: OpenPBR's transmission_color
+            if (m.weight_transmission > 0.0f)
+                for (int c = 0; c < 3; ++c) m.transmission_color[c] = m.albedo[c];
             f.note_the_rest();
         }
         if (const json* o = ext.object("KHR_materials_clearcoat")) {

@@ -59,13 +59,14 @@ json gltf_document(const brdf::Preset& preset, Notes* notes) {
     }
     if (m.ior != 1.5f) extensions["KHR_materials_ior"] = {{"ior", shortest_decimal(m.ior)}};
 
+    // glTF tints the transmitted light by baseColorFactor, which the reader gives back as transmission_color
     if (m.weight_transmission != 0.0f) {
         extensions["KHR_materials_transmission"] = {{"transmissionFactor", shortest_decimal(m.weight_transmission)}};
-        if (!is_grey(base, 1.0f))
-            notes->add("transmission_weight", "glTF tints the transmitted light by baseColorFactor, OpenPBR by transmission_color");
+        if (!same(m.transmission_color, base))
+            notes->add("transmission_color", "glTF tints the transmitted light by baseColorFactor, not a colour of its own: read back as the base colour");
+    } else if (!same(m.transmission_color, d.transmission_color)) {
+        notes->add("transmission_color", "transmission_weight is 0: the transmission's tint is not written");
     }
-    if (!same(m.transmission_color, d.transmission_color))
-        notes->add("transmission_color", "glTF has no transmission tint of its own (it uses baseColorFactor): dropped");
 
     if (m.subsurface != 0.0f) notes->add("subsurface_weight", "glTF's extensions used here have no subsurface lobe: dropped");
     if (!same(m.subsurface_color, d.subsurface_color)) notes->add("subsurface_color", "no subsurface lobe in glTF: dropped");

@@ -143,11 +143,11 @@ TEST_CASE("what glTF cannot express is noted by the writer, one line each", "[in
     interchange::Notes notes;
     interchange::gltf_text(p, &notes);
     for (const char* key : {"base_weight", "base_diffuse_roughness", "subsurface_weight", "coat_color", "coat_ior", "coat_darkening",
-                            "coat_roughness_anisotropy", "transmission_color", "transmission_weight", "fuzz_weight", "energy_compensation"}) {
+                            "coat_roughness_anisotropy", "transmission_color", "fuzz_weight", "energy_compensation"}) {
         INFO(key);
         CHECK(notes.names(key));
     }
-    CHECK(notes.items.size() == 11);
+    CHECK(notes.items.size() == 10);
 }
 
 TEST_CASE("what a glTF material holds beyond the lab's parameters is noted, one line each", "[interchange][gltf]") {
@@ -168,6 +168,25 @@ TEST_CASE("what a glTF material holds beyond the lab's parameters is noted, one 
         R"({"asset": {"version": "2.0"}, "extensionsRequired": ["KHR_texture_transform", "KHR_materials_ior"], "materials": [{}]})", "r.gltf");
     CHECK(required.notes.names("extensionsRequired"));
     CHECK(required.notes.items.size() == 1);
+}
+
+TEST_CASE("glTF's transmission takes the base colour's tint, read as OpenPBR's transmission_color", "[interchange][gltf]") {
+    const interchange::Imported green = interchange::parse_gltf_text(
+        with_material(R"({"pbrMetallicRoughness": {"baseColorFactor": [0.5, 1, 0.5, 1], "metallicFactor": 0, "roughnessFactor": 0},
+                          "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1}}})"),
+        "green.gltf");
+    CHECK(green.notes.items.empty());
+    CHECK(green.preset.material.weight_transmission == 1.0f);
+    CHECK(green.preset.material.transmission_color[0] == 0.5f);
+    CHECK(green.preset.material.transmission_color[1] == 1.0f);
+    // and a lab glass whose tint is its base colour goes out and back without a note
+    brdf::Preset glass = every_expressible_parameter();
+    glass.material.albedo[0] = glass.material.transmission_color[0] = 0.7f;
+    interchange::Notes notes;
+    const std::string text = interchange::gltf_text(glass, &notes);
+    CHECK(notes.items.empty());
+    const brdf::Material back = interchange::parse_gltf_text(text, "glass.gltf").preset.material;
+    CHECK(std::memcmp(&back, &glass.material, sizeof back) == 0);
 }
 
 TEST_CASE("a glTF material is chosen by name or index; the others are noted", "[interchange][gltf]") {
