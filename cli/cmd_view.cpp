@@ -19,6 +19,7 @@
 #include "viewer/material_edit.hpp"
 #include "render/aov_layers.hpp"
 #include "render/progressive.hpp"
+#include "viewer/material_export.hpp"
 #include "viewer/scene_export.hpp"
 #include "viewer/view_modes.hpp"
 #include "viewer/window_layout.hpp"
@@ -76,7 +77,11 @@ void run_view(const ViewOptions& o) {
     if (!sets.empty() && o.frames == 0) throw InputError("--set", "", "needs --frames (a scripted run)");
     if (!o.screenshot.empty()) render::check_render_output(o.screenshot);
     std::string export_scene, export_name;
-    if (!o.export_to.empty()) viewer::parse_export_target(o.export_to, &export_scene, &export_name);
+    std::string export_material;
+    if (viewer::is_material_file_target(o.export_to))
+        export_material = o.export_to;
+    else if (!o.export_to.empty())
+        viewer::parse_export_target(o.export_to, &export_scene, &export_name);
 
     auto job = std::make_shared<RenderJob>(prepare_render_job(o.job));  // a bad preset, scene or environment stops here
     const scene::Scene& scene = job->input.scene;
@@ -181,6 +186,7 @@ void run_view(const ViewOptions& o) {
     config.screenshot = o.screenshot;
     config.save_preset = o.save_preset;
     config.export_scene = export_scene;
+    config.export_material = export_material;
     config.export_name = export_name;
     config.stats = o.stats;
     config.print_layout = o.print_layout;
@@ -244,7 +250,7 @@ void register_view(CLI::App& app) {
                     "env_rotation=DEG, env_exposure=STOPS, background_blur=DEG, background_opacity=A (repeatable)");
     cmd->add_option("--screenshot", o->screenshot, "Headless: the window as a PNG at the last frame");
     cmd->add_option("--save-preset", o->save_preset, "Write the edited material as a preset on exit");
-    cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME)");
+    cmd->add_option("--export-to", o->export_to, "SCENE.json:NAME: write the material into the scene on exit (add or replace NAME); or FILE.mtlx|.gltf|.xml|.pbrt: export it for MaterialX, glTF, Mitsuba 3 or pbrt-v4 on exit (docs/interchange.md)");
     cmd->add_option("--load-env", o->env_loads, "Headless: PATH@FRAME, load an environment map at a frame as the panel does (errors are shown, not fatal)");
     cmd->add_option("--load-references", o->reference_loads,
                     "Headless: LIST@FRAME, the look-dev references switched at a frame as the environment panel does (none, all, or chrome,grey,chart,catcher)");

@@ -17,6 +17,7 @@ void register_render(CLI::App& app);
 void register_merge(CLI::App& app);
 void register_view(CLI::App& app);
 void register_fit(CLI::App& app);
+void register_convert(CLI::App& app);
 // `bench preview`, registered under the bench group by register_bench
 void register_bench_preview(CLI::App& bench);
 // `bench render`, likewise

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
     lab::cli::register_merge(app);
     lab::cli::register_view(app);
     lab::cli::register_fit(app);
+    lab::cli::register_convert(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::RuntimeError& e) {

@@ -29,6 +29,26 @@ double roughness_floor() { return 1.01 * std::sqrt(double(BRDF_SMOOTH_ALPHA)); }
 // strength are both free. Diffuse and glossy: albedo, Fresnel F0 and metallic all fitted.
 bool conductor_only(const FitSpace& s) { return s.glossy && !s.diffuse; }
 
+FitParameter openpbr_bounded(const std::string& name, const std::string& key) {
+    for (const brdf::ScalarParameter& p : brdf::openpbr_parameters())
+        if (key == p.key) return {name, double(p.min), double(p.max)};
+    throw std::logic_error("fit: no parameter " + key + " in the openpbr table");
+}
+
+// The openpbr space's parameters: the base colour, the specular's roughness, the metalness and the
+// dielectric's index (its F0), and the stretch when anisotropic.
+std::vector<FitParameter> openpbr_fit_parameters(const FitSpace& s) {
+    std::vector<FitParameter> p;
+    for (const char* c : {"base_color_r", "base_color_g", "base_color_b"}) p.push_back(openpbr_bounded(c, "base_color"));
+    FitParameter r = openpbr_bounded("specular_roughness", "specular_roughness");
+    r.min = std::fmax(r.min, roughness_floor());
+    p.push_back(r);
+    p.push_back(openpbr_bounded("base_metalness", "base_metalness"));
+    p.push_back(openpbr_bounded("specular_ior", "specular_ior"));
+    if (s.anisotropic) p.push_back(openpbr_bounded("specular_roughness_anisotropy", "specular_roughness_anisotropy"));
+    return p;
+}
+
 }  // namespace
 
 void parse_lobes(const std::string& text, FitSpace* space) {
@@ -56,6 +76,7 @@ void parse_lobes(const std::string& text, FitSpace* space) {
 }
 
 std::vector<FitParameter> fit_parameters(const FitSpace& s) {
+    if (s.openpbr) return openpbr_fit_parameters(s);
     std::vector<FitParameter> p;
     const char* channel[3] = {"albedo_r", "albedo_g", "albedo_b"};
     for (const char* c : channel) p.push_back(bounded(c, "albedo"));
@@ -85,6 +106,16 @@ std::vector<FitParameter> fit_parameters(const FitSpace& s) {
 }
 
 brdf::Material material_from_parameters(const FitSpace& s, const std::vector<double>& x) {
+    if (s.openpbr) {
+        if (x.size() != openpbr_fit_parameters(s).size()) throw std::logic_error("fit: parameter vector of the wrong length");
+        brdf::Material m = brdf::default_material(BRDF_MODEL_OPENPBR);
+        for (int c = 0; c < 3; ++c) m.albedo[c] = float(x[c]);
+        m.roughness = float(x[3]);
+        m.metallic = float(x[4]);
+        m.ior = float(x[5]);
+        if (s.anisotropic) m.anisotropic = float(x[6]);
+        return m;
+    }
     brdf::Material m = brdf::default_material();
     m.model = BRDF_MODEL_LAB;
     m.distribution = s.distribution;
@@ -121,6 +152,11 @@ brdf::Material material_from_parameters(const FitSpace& s, const std::vector<dou
 
 std::vector<double> parameters_from_material(const FitSpace& s, const brdf::Material& m) {
     std::vector<double> x;
+    if (s.openpbr) {
+        x = {m.albedo[0], m.albedo[1], m.albedo[2], m.roughness, m.metallic, m.ior};
+        if (s.anisotropic) x.push_back(m.anisotropic);
+        return x;
+    }
     for (int c = 0; c < 3; ++c) x.push_back(m.albedo[c]);
     if (s.glossy) {
         x.push_back(m.roughness);

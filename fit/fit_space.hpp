@@ -11,6 +11,10 @@
 namespace lab::fit {
 
 struct FitSpace {
+    // the model fitted: the lab's (the default), or openpbr's (base_color, specular_roughness,
+    // base_metalness, specular_ior and, when anisotropic, specular_roughness_anisotropy, under
+    // OpenPBR's names and ranges; GGX only; interchange/fit_to_openpbr.hpp)
+    bool openpbr = false;
     int distribution = BRDF_DISTRIBUTION_GGX;
     bool anisotropic = false;  // fit the anisotropy too (the tangent stays at rotation 0)
     bool diffuse = true, glossy = true;

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,6 +17,7 @@
 
 #include "brdf/host/parameters.hpp"
 #include "common/input_error.hpp"
+#include "interchange/mtlx_reader.hpp"
 #include "render/host_renderer.hpp"
 #include "scene/load_scene.hpp"
 #include "scene/test_model.hpp"
@@ -23,6 +25,7 @@
 #include "viewer/frame_stats.hpp"
 #include "viewer/json_members.hpp"
 #include "viewer/latest_job.hpp"
+#include "viewer/material_export.hpp"
 #include "viewer/material_edit.hpp"
 #include "viewer/render_worker.hpp"
 #include "viewer/scene_export.hpp"
@@ -181,6 +184,22 @@ TEST_CASE("export to scene adds or replaces one material and keeps the rest in p
     CHECK_THROWS_WITH(lab::viewer::export_to_scene(p, bad.string(), "a"), Catch::Contains("materials: expected an object"));
     CHECK(read(bad) == R"({"materials": [1, 2]})");
     fs::remove_all(dir);
+}
+
+TEST_CASE("export material writes the edited material for another tool, chosen by the file's extension", "[viewer]") {
+    for (const char* target : {"a.mtlx", "a.gltf", "a.xml", "a.pbrt"}) CHECK(lab::viewer::is_material_file_target(target));
+    for (const char* target : {"scene.json:a", "a.json", "a.txt", ""}) CHECK(!lab::viewer::is_material_file_target(target));
+    const brdf::Preset car = brdf::load_preset("presets/car_paint.json");
+    const fs::path file = fs::temp_directory_path() / ("dtoadq-viewer-export-" + std::to_string(::getpid()) + ".mtlx");
+    CHECK(lab::viewer::export_material_file(car, file.string()).empty());  // MaterialX carries every openpbr parameter
+    const brdf::Material back = interchange::read_mtlx(file.string()).preset.material;
+    fs::remove(file);
+    CHECK(std::memcmp(&back, &car.material, sizeof back) == 0);
+    const std::vector<std::string> notes = lab::viewer::export_material_file(car, (fs::temp_directory_path() / "dtoadq-viewer-export.gltf").string());
+    fs::remove(fs::temp_directory_path() / "dtoadq-viewer-export.gltf");
+    REQUIRE(notes.size() == 1);  // glTF's metal has no F82 tint
+    CHECK(notes[0].find(": specular_color: ") != std::string::npos);
+    CHECK_THROWS_WITH(lab::viewer::export_material_file(car, "a.json"), Catch::Contains("a preset is saved with"));
 }
 
 TEST_CASE("frame-time quantiles by the nearest rank", "[viewer]") {

@@ -2,14 +2,14 @@
 # Runs every libFuzzer harness of fuzz/ for a number of executions and prints, per harness, the
 # executions, crashes and coverage (docs/testing.md). Builds them first with clang 16 in
 # build-fuzz/ (-DDTOADQ_FUZZ=ON: AddressSanitizer, UndefinedBehaviorSanitizer, libFuzzer).
-#   sh tools/fuzz.sh [EXECUTIONS (default 1000000)] [HARNESS ...]   (harnesses: preset scene environment cli_options)
+#   sh tools/fuzz.sh [EXECUTIONS (default 1000000)] [HARNESS ...]   (harnesses: preset scene environment cli_options mtlx gltf)
 # New inputs go to build-fuzz/corpus/NAME (seeded from fuzz/corpus/NAME); an input that crashes is
 # copied into fuzz/corpus/NAME/ so that the test run replays it from then on: commit it with the fix.
 set -eu
 cd "$(dirname "$0")/.."
 runs=${1:-1000000}
 [ $# -gt 0 ] && shift
-harnesses=${*:-"preset scene environment cli_options"}
+harnesses=${*:-"preset scene environment cli_options mtlx gltf"}
 build=build-fuzz
 cxx=$(command -v clang++-16 || command -v clang++ || true)
 [ -n "$cxx" ] || { echo "fuzz.sh: clang++-16 is needed (sh tools/install-deps.sh --fuzz installs it)" >&2; exit 1; }
@@ -25,7 +25,7 @@ status=0
 for h in $harnesses; do
   case $h in
     scene) max_len=65536 ;;
-    preset) max_len=8192 ;;
+    preset | mtlx | gltf) max_len=8192 ;;
     environment) max_len=4096 ;;
     *) max_len=1024 ;;
   esac

@@ -26,6 +26,7 @@
 #include "viewer/material_edit.hpp"
 #include "viewer/material_panel.hpp"
 #include "viewer/pixel_probe.hpp"
+#include "viewer/material_export.hpp"
 #include "viewer/scene_export.hpp"
 #include "viewer/validation_badges.hpp"
 #include "viewer/view_export.hpp"
@@ -658,6 +659,10 @@ void write_outputs(const ViewerConfig& config, const UiState& ui) {
     if (!config.export_scene.empty()) {
         export_to_scene(ui.preset, config.export_scene, config.export_name);
         std::printf("exported %s into %s\n", config.export_name.c_str(), config.export_scene.c_str());
+    }
+    if (!config.export_material.empty()) {
+        for (const std::string& n : export_material_file(ui.preset, config.export_material)) std::fprintf(stderr, "dtoadq: note: %s\n", n.c_str());
+        std::printf("exported the material to %s\n", config.export_material.c_str());
     }
 }
 

@@ -10,7 +10,9 @@
 
 #include "render/camera_setup.hpp"
 #include "viewer/camera_controller.hpp"
+#include "viewer/material_export.hpp"
 #include "viewer/pixel_probe.hpp"
+#include "viewer/material_export.hpp"
 #include "viewer/scene_export.hpp"
 
 namespace lab::viewer {
@@ -89,6 +91,16 @@ bool preset_panel(UiState* ui) {
             ui->message = "exported " + name + " into " + file;
         } catch (const std::exception& e) {
             ui->message = e.what();  // the scene file is untouched
+        }
+    }
+    ImGui::InputText("file (.mtlx .gltf .xml .pbrt)", ui->export_file, sizeof ui->export_file);
+    if (ImGui::Button("export material")) {
+        try {
+            const std::vector<std::string> notes = export_material_file(ui->preset, ui->export_file);
+            ui->message = std::string("exported ") + ui->export_file + (notes.empty() ? "" : ": " + std::to_string(notes.size()) + " note(s) on stderr");
+            for (const std::string& n : notes) std::fprintf(stderr, "dtoadq: note: %s\n", n.c_str());
+        } catch (const std::exception& e) {
+            ui->message = e.what();
         }
     }
     return loaded;

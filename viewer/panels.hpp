@@ -24,6 +24,7 @@ struct UiState {
     float display_exposure = 0.0f;
     char preset_path[512] = "material.json";
     char export_target[512] = "scene.json:material";
+    char export_file[512] = "material.mtlx";  // .mtlx, .gltf, .xml (Mitsuba 3) or .pbrt
     char env_path[512] = "";
     bool split = false;       // A/B split view
     bool denoise = true;      // the display denoised (viewer/display_denoiser.hpp); the film never is

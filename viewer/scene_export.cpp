@@ -83,7 +83,7 @@ std::optional<std::string> edited_in_place(const std::string& text, const std::s
 void parse_export_target(const std::string& text, std::string* scene_file, std::string* material_name) {
     size_t colon = text.rfind(':');
     if (colon == std::string::npos || colon == 0 || colon + 1 == text.size())
-        throw InputError("--export-to", "", "expected SCENE.json:NAME, got \"" + text + "\"");
+        throw InputError("--export-to", "", "expected SCENE.json:NAME or a material file FILE.mtlx|.gltf|.xml|.pbrt, got \"" + text + "\"");
     *scene_file = text.substr(0, colon);
     *material_name = text.substr(colon + 1);
 }

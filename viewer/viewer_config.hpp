@@ -61,6 +61,7 @@ struct ViewerConfig {
     render::AovSelection save_layers;
     std::string save_preset;           // written on exit
     std::string export_scene, export_name;  // written on exit
+    std::string export_material;       // a .mtlx, .gltf, .xml (Mitsuba 3) or .pbrt file written on exit (viewer/material_export.hpp)
     std::vector<std::array<int, 2>> inspect;  // pixels whose inspector lines are printed at the end
     bool stats = false;                // print frame times, samples/s and change latency on exit
     bool print_layout = false;         // print each new layout of the window, and the open sections' places on exit

@@ -40,17 +40,7 @@ const json* find_key(const json& doc, const std::string& key) {
 float checked_number(const json& value, const std::string& source, const std::string& key, float lo, float hi) {
     if (!value.is_number())
         throw InputError(source, key, std::string("expected a number, got ") + value.type_name());
-    double v = value.get<double>();
-    if (!std::isfinite(v)) throw InputError(source, key, "not a finite number");
-    // a little slack for values written with fewer digits than the bounds, relative to each bound
-    // (one of the upper bound's would let -1 nit below 0 with an upper bound of 1e6 nits)
-    auto slack = [](float bound) { return 1e-6 * std::max(1.0, std::fabs(double(bound))); };
-    if (v < lo - slack(lo) || v > hi + slack(hi)) {
-        std::ostringstream msg;
-        msg << "value " << v << " is out of range [" << lo << ", " << hi << "]";
-        throw InputError(source, key, msg.str());
-    }
-    return float(std::min(std::max(v, double(lo)), double(hi)));
+    return checked_parameter_value(value.get<double>(), source, key, lo, hi);
 }
 
 int parse_enum(const json& doc, const std::string& source, const std::string& key, const char* a, int va, const char* b, int vb,
@@ -133,6 +123,19 @@ void parse_color(const json& value, const std::string& source, const ScalarParam
 
 }  // namespace
 
+float checked_parameter_value(double v, const std::string& source, const std::string& field, float lo, float hi) {
+    if (!std::isfinite(v)) throw InputError(source, field, "not a finite number");
+    // a little slack for values written with fewer digits than the bounds, relative to each bound
+    // (one of the upper bound's would let -1 nit below 0 with an upper bound of 1e6 nits)
+    auto slack = [](float bound) { return 1e-6 * std::max(1.0, std::fabs(double(bound))); };
+    if (v < lo - slack(lo) || v > hi + slack(hi)) {
+        std::ostringstream msg;
+        msg << "value " << v << " is out of range [" << lo << ", " << hi << "]";
+        throw InputError(source, field, msg.str());
+    }
+    return float(std::min(std::max(v, double(lo)), double(hi)));
+}
+
 Preset parse_preset(const json& doc, const std::string& source, const std::string& base_dir) {
     if (!doc.is_object()) throw InputError(source, "", "a preset must be a JSON object");
     const int model = doc.contains("measured") ? BRDF_MODEL_LAB : parse_model(doc, source);
@@ -210,18 +213,12 @@ Preset parse_preset_text(const std::string& text, const std::string& path) {
     return parse_preset(doc, path);
 }
 
-namespace {
-
-// The shortest decimal that reads back as the same float (0.9f is written 0.9, not the double
-// 0.8999999761581421 the float widens to), so saved presets and exported scenes read as typed.
 double shortest_decimal(float value) {
     char text[32];
     auto [end, error] = std::to_chars(text, text + sizeof text, value);
     if (error != std::errc()) return double(value);
     return std::strtod(std::string(text, end).c_str(), nullptr);
 }
-
-}  // namespace
 
 json preset_to_json(const Preset& preset) {
     json doc;

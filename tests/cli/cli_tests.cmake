@@ -520,6 +520,9 @@ cli_bad_input(NAME view.bad_constant_env EXPECT "${E}--env: constant: G is not a
 cli_bad_input(NAME view.set_unknown_key EXPECT "${E}--set: roughnes: unknown key$" ARGS view --frames 2 --set roughnes=0.2@1)
 cli_bad_input(NAME view.set_out_of_range EXPECT "${E}--set: roughness: value 2 is out of range \\[0, 1\\]$" ARGS view --frames 2 --set roughness=2@1)
 cli_bad_input(NAME view.bad_export_target EXPECT "${E}--export-to: expected SCENE\\.json:NAME" ARGS view --export-to nope)
+# a material file of another tool is exported on exit; an unknown extension is neither
+cli_bad_input(NAME view.bad_export_extension EXPECT "${E}--export-to: expected SCENE\\.json:NAME or a material file FILE\\.mtlx.\\.gltf.\\.xml.\\.pbrt, got \"out\\.txt\"$"
+              ARGS view --export-to out.txt)
 cli_bad_input(NAME view.move_unknown_key EXPECT "${E}--move: spin: unknown key \\(orbit, env_rotation, env_exposure, background_blur, background_opacity\\)$" ARGS view --frames 2 --move spin=3@1)
 cli_bad_input(NAME view.unknown_reference_load EXPECT "${E}--load-references: unknown reference \"ball\" \\(none, all, or a list of chrome, grey, chart, catcher\\)$"
               ARGS view --frames 2 --load-references ball@1)
@@ -578,3 +581,37 @@ cli_bad_input(NAME fit.lobes ABSENT ${PNG}.json EXPECT "${E}command line: --lobe
               ARGS ${FIT} ${D}/truncated.binary --lobes diffuse,transmission)
 cli_bad_input(NAME fit.stride ABSENT ${PNG}.json EXPECT "${E}command line: --stride: expected THETA_H,THETA_D,PHI_D bin strides, got \"3,3\"$"
               ARGS ${FIT} ${D}/truncated.binary --stride 3,3)
+
+# --- convert: materials between presets, MaterialX and glTF (docs/interchange.md) ---------------
+cli_bad_input(NAME convert.mtlx_unknown_node ABSENT ${PNG}
+              EXPECT "${E}${D}/unknown_node\\.mtlx: SR_a: unknown node <gltf_pbr> \\(the lab converts open_pbr_surface and standard_surface\\)$"
+              ARGS convert ${D}/unknown_node.mtlx --to mtlx -o ${PNG})
+cli_bad_input(NAME convert.mtlx_missing_material ABSENT ${PNG}
+              EXPECT "${E}${D}/no_material\\.mtlx: materialx: missing material: the document holds no <surfacematerial>$"
+              ARGS convert ${D}/no_material.mtlx --to gltf -o ${PNG})
+cli_bad_input(NAME convert.mtlx_wrong_type ABSENT ${PNG}
+              EXPECT "${E}${D}/wrong_type\\.mtlx: SR_a/base_color: wrong type \"float\" \\(open_pbr_surface's base_color is color3\\)$"
+              ARGS convert ${D}/wrong_type.mtlx --to preset -o ${PNG})
+cli_bad_input(NAME convert.mtlx_malformed ABSENT ${PNG} EXPECT "${E}${D}/malformed\\.mtlx: malformed XML: .* at byte [0-9]+$"
+              ARGS convert ${D}/malformed.mtlx --to preset -o ${PNG})
+cli_bad_input(NAME convert.gltf_out_of_range ABSENT ${PNG}
+              EXPECT "${E}${D}/ior_out_of_range\\.gltf: materials.0.\\.extensions\\.KHR_materials_ior\\.ior: value 3\\.5 is out of range .1, 3.$"
+              ARGS convert ${D}/ior_out_of_range.gltf --to mtlx -o ${PNG})
+cli_bad_input(NAME convert.gltf_missing_material ABSENT ${PNG}
+              EXPECT "${E}${D}/no_material\\.gltf: materials: missing material: the document holds no materials$"
+              ARGS convert ${D}/no_material.gltf --to mtlx -o ${PNG})
+# a lab preset is fitted to openpbr first; one with a transmission lobe cannot be
+cli_bad_input(NAME convert.lab_glass_not_fitted ABSENT ${PNG}
+              EXPECT "${E}presets/glass\\.json: lobes: a mirror or transmission lobe cannot be fitted from reflectance at direction pairs"
+              ARGS convert presets/glass.json --to mtlx -o ${PNG})
+cli_bad_input(NAME convert.unknown_extension ABSENT ${PNG}
+              EXPECT "${E}.*/convert\\.unknown_extension\\.png: unknown file extension \"\\.png\" \\(expected preset \\(\\.json\\), mtlx \\(\\.mtlx\\), gltf \\(\\.gltf\\), mitsuba \\(\\.xml\\), pbrt \\(\\.pbrt\\). or name the format with --to\\)$"
+              ARGS convert presets/car_paint.json -o ${PNG})
+cli_bad_input(NAME convert.unknown_format ABSENT ${PNG} EXPECT "${E}command line: --to: unknown format \"usd\""
+              ARGS convert presets/car_paint.json --to usd -o ${PNG})
+# a preset through MaterialX and back is the preset written directly, byte for byte
+add_test(NAME cli.convert.preset_through_mtlx_unchanged
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DPRESET=presets/pearlescent_paint.json -DSCRATCH=${CLI_SCRATCH}/convert
+                 -P ${CLI_TEST_DIR}/convert_round_trip.cmake
+         WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.convert.preset_through_mtlx_unchanged PROPERTIES LABELS cli TIMEOUT 60)
