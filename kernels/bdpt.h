@@ -120,6 +120,58 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings ma
     return L;
 }
 
+/* Strategy (s, t) of a path with these subpaths, MIS-weighted (unless the settings ask for it
+ * unweighted), where the render adds it; zero where it does not (outside max_vertices, the mask,
+ * or the one strategy --strategies renders). t = 1 sets *raster to where it lands. The light sample
+ * (s = 1) and the lens sample (t = 1) draw from the strategy's own stream, (key, sample,
+ * stream_base + 1 + its code): a strategy rendered alone (--strategies) draws what it draws in the
+ * whole render, so the strategy images add up to the render; the other strategies draw none. */
+SS_FN float3 bdpt_strategy_contribution(const RenderKernelSettings* settings, MarchSettings march_settings, const Camera* camera,
+                                        const RenderScene* scene, const PathVertex* light, const PathVertex* cam, int s, int t,
+                                        int max_vertices, uint key, uint sample, uint stream_base, const Rng* rng, float2* raster,
+                                        PathCounters* counters) {
+    float3 zero = float3_splat(0.0f);
+    if (s + t < 2 || s + t > max_vertices) return zero;
+    if (!bdpt_strategy_runs(settings->bdpt.strategies, s, t)) return zero;
+    if (settings->bdpt.single_strategy >= 0 && settings->bdpt.single_strategy != bdpt_strategy_code(s, t)) return zero;
+    Rng connection_rng = *rng;
+    if (s == 1 || t == 1)
+        connection_rng = rng_make_stream(key, sample, stream_base + (uint)(1 + bdpt_strategy_code(s, t)), settings->seed_lo, settings->seed_hi);
+    float weight;
+    float3 c = bdpt_connect(settings, march_settings, camera, scene, light, cam, s, t, &connection_rng, raster, &weight, counters);
+    return settings->bdpt.unweighted ? c : c * weight;
+}
+
+/* The most vertices of this kernel's paths: the settings' max_vertices, within the private arrays. */
+SS_FN int bdpt_kernel_max_vertices(const RenderKernelSettings* settings) { return min(max(settings->bdpt.max_vertices, 2), BDPT_MAX_VERTICES); }
+
+SS_FN PathCounters bdpt_counters_zero(void) {
+    PathCounters counters;
+    counters.rays = 0u;
+    counters.lost_rays = 0u;
+    return counters;
+}
+
+/* A sample's own-pixel radiance l into the pixel's sums; a sample with a non-finite contribution
+ * or weight only counted in sum.w (the film divides by the finite samples). */
+SS_FN void bdpt_add_sample(float4* sum, float4* square_sum, float3 l, bool finite) {
+    if (finite) {
+        *sum += make_float4(l.x, l.y, l.z, 0.0f);
+        *square_sum = film_add_square(*square_sum, l);
+    } else {
+        sum->w += 1.0f;
+    }
+}
+
+/* A pixel's sums and its rays back into the film's buffers. */
+SS_FN void bdpt_store_pixel(int pixel, float4 sum, float4 square_sum, PathCounters counters, GLOBAL_MEM float4* accumulation,
+                            GLOBAL_MEM float4* squares, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts) {
+    accumulation[pixel] = sum;
+    squares[pixel] = square_sum;
+    ray_counts[pixel] += counters.rays;
+    lost_ray_counts[pixel] += counters.lost_rays;
+}
+
 /* Adds settings->sample_count samples to one pixel (pixel k is (k % width, k / width)), its t = 1
  * connections to the splat buffer. The sum of squares holds the own pixel's part of each sample:
  * the splats' variance is not in it. A sample with a non-finite contribution or MIS weight is counted
@@ -130,14 +182,13 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera
                       GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
     float4 sum = accumulation[pixel], square_sum = squares[pixel];
-    PathCounters counters;
-    counters.rays = 0u;
-    counters.lost_rays = 0u;
-    int max_vertices = min(max(settings->bdpt.max_vertices, 2), BDPT_MAX_VERTICES);
+    PathCounters counters = bdpt_counters_zero();
+    int max_vertices = bdpt_kernel_max_vertices(settings);
     PathVertex cam[BDPT_MAX_VERTICES];
     PathVertex light[BDPT_MAX_VERTICES];
     for (int i = 0; i < settings->sample_count; ++i) {
-        Rng rng = rng_make((uint)pixel, (uint)(settings->first_sample + i), settings->seed_lo, settings->seed_hi);
+        uint sample = (uint)(settings->first_sample + i);
+        Rng rng = rng_make((uint)pixel, sample, settings->seed_lo, settings->seed_hi);
         /* t = 1 alone (the light tracer) needs no camera subpath: its lens vertex is sampled per connection */
         bool camera_strategies = (settings->bdpt.strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
         int n_cam = camera_strategies ? bdpt_camera_subpath(settings, march_settings, camera, scene, pixel, &rng, cam, max_vertices, &counters) : 1;
@@ -146,20 +197,9 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera
         bool finite = true;
         for (int t = 1; t <= n_cam; ++t)
             for (int s = 0; s <= n_light; ++s) {
-                int depth = s + t - 2;
-                if (depth < 0 || s + t > max_vertices) continue;
-                if (!bdpt_strategy_runs(settings->bdpt.strategies, s, t)) continue;
-                if (settings->bdpt.single_strategy >= 0 && settings->bdpt.single_strategy != bdpt_strategy_code(s, t)) continue;
                 float2 raster = make_float2(-1.0f, -1.0f);
-                float weight;
-                /* the light sample (s = 1) and the lens sample (t = 1) draw from the strategy's own
-                 * stream: a strategy rendered alone (--strategies) draws what it draws in the whole
-                 * render, so the strategy images add up to the render; the other strategies draw none */
-                Rng connection_rng = rng;
-                if (s == 1 || t == 1)
-                    connection_rng = rng_make_stream((uint)pixel, (uint)(settings->first_sample + i), (uint)(1 + bdpt_strategy_code(s, t)), settings->seed_lo, settings->seed_hi);
-                float3 c = bdpt_connect(settings, march_settings, camera, scene, light, cam, s, t, &connection_rng, &raster, &weight, &counters);
-                if (!settings->bdpt.unweighted) c = c * weight;
+                float3 c = bdpt_strategy_contribution(settings, march_settings, camera, scene, light, cam, s, t, max_vertices, (uint)pixel, sample,
+                                                      0u, &rng, &raster, &counters);
                 /* a NaN or infinite contribution or weight is counted before anything can drop it */
                 if (!finite3(c)) {
                     finite = false;
@@ -169,17 +209,9 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera
                 if (t == 1) film_splat(splat, camera->width, camera->height, raster.x, raster.y, c);
                 else l += c;
             }
-        if (finite) {
-            sum += make_float4(l.x, l.y, l.z, 0.0f);
-            square_sum = film_add_square(square_sum, l);
-        } else {
-            sum.w += 1.0f;
-        }
+        bdpt_add_sample(&sum, &square_sum, l, finite);
     }
-    accumulation[pixel] = sum;
-    squares[pixel] = square_sum;
-    ray_counts[pixel] += counters.rays;
-    lost_ray_counts[pixel] += counters.lost_rays;
+    bdpt_store_pixel(pixel, sum, square_sum, counters, accumulation, squares, ray_counts, lost_ray_counts);
 }
 
 #endif

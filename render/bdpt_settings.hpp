@@ -9,6 +9,11 @@ enum class MisHeuristic { balance, power };
 
 struct BdptSettings {
     MisHeuristic mis_heuristic = MisHeuristic::balance;
+    // bdpt-cache (kernels/bdpt_cache.h, render/light_cache.hpp): light subpaths per sample index, as
+    // a multiple of the image's pixels (--light-paths), and the cache vertices each camera vertex is
+    // joined to (--connections). The defaults are measured (docs/bdpt.md, "The light-vertex cache").
+    float light_paths = 1.0f;
+    int connections = 1;
 };
 
 // The strategies apart (--strategies DIR, the tests of the estimator): other masks than the
