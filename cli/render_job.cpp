@@ -44,6 +44,10 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
         ->capture_default_str();
     cmd.add_option("--connections", o->connections, "bdpt-cache: light-cache vertices each camera vertex is joined to, in [1, 64]")
         ->capture_default_str();
+    cmd.add_option("--connection-roulette", o->connection_roulette,
+                   "bdpt, lt, bdpt-cache: a connection of MIS weight w below this traces its shadow ray with probability w / this, and "
+                   "counts 1 / that probability (0: always)")
+        ->capture_default_str();
     cmd.add_option("--max-steps", o->max_steps, "Sphere-tracing steps per ray before it counts as lost")->capture_default_str();
     cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain; a scene that is not a distance bound uses 1)")->capture_default_str();
     cmd.add_option("--seed", o->seed, "Seed of the random numbers (same seed, same image)")->capture_default_str();
@@ -108,6 +112,7 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     settings.bdpt.mis_heuristic = render::parse_mis_heuristic(o.mis_heuristic);
     settings.bdpt.light_paths = o.light_paths;
     settings.bdpt.connections = o.connections;
+    settings.bdpt.connection_roulette = o.connection_roulette;
     settings.max_steps = o.max_steps;
     settings.over_relaxation = o.over_relaxation;
     render::check_render_settings(settings);

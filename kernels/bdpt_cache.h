@@ -22,9 +22,10 @@
 #include "kernels/bdpt.h"
 
 /* The random-number streams of the cache's passes, apart from the per-pixel kernel's (stream 0 the
- * camera subpath, 1 + a strategy's code its light or lens sample): a light subpath's walk, and
- * above it its t = 1 strategies' lens samples, keyed by (light subpath, sample); camera vertex t's
- * choice of cache vertices keyed by (pixel, sample). */
+ * camera subpath, 1 + a strategy's code its connection's): a light subpath's walk, and above it its
+ * t = 1 strategies' lens samples, keyed by (light subpath, sample); camera vertex t's choice of
+ * cache vertices (+ t), and the roulette of its m-th connection (+ 64 (m + 1) + t: t < 64), keyed
+ * by (pixel, sample). */
 #define BDPT_CACHE_LIGHT_STREAM 0x40000000u
 #define BDPT_CACHE_CHOICE_STREAM 0x20000000u
 
@@ -61,7 +62,7 @@ SS_FN void bdpt_cache_light_path(const RenderKernelSettings* settings, const Cam
             float2 raster = make_float2(-1.0f, -1.0f);
             /* no camera subpath: t = 1 samples its lens vertex */
             float3 c = bdpt_strategy_contribution(settings, march_settings, camera, scene, light, light, s, 1, slots + 1, (uint)path, sample,
-                                                  BDPT_CACHE_LIGHT_STREAM, &rng, &raster, &counters) *
+                                                  BDPT_CACHE_LIGHT_STREAM + (uint)(1 + bdpt_strategy_code(s, 1)), &raster, &counters) *
                        scale;
             /* a non-finite splat has no pixel of its own to be counted in: it is left out */
             if (finite3(c) && max_component(c) > 0.0f) film_splat(splat, camera->width, camera->height, raster.x, raster.y, c);
@@ -102,8 +103,8 @@ SS_FN void bdpt_cache_pixel(const RenderKernelSettings* settings, const Camera* 
     for (int t = 2; t <= n_cam; ++t) {
         for (int s = 0; s <= 1; ++s) {
             float2 raster;
-            float3 c = bdpt_strategy_contribution(settings, march_settings, camera, scene, cam, cam, s, t, max_vertices, (uint)pixel, sample, 0u,
-                                                  &rng, &raster, &counters);
+            float3 c = bdpt_strategy_contribution(settings, march_settings, camera, scene, cam, cam, s, t, max_vertices, (uint)pixel, sample,
+                                                  (uint)(1 + bdpt_strategy_code(s, t)), &raster, &counters);
             if (!finite3(c)) finite = false;
             else l += c;
         }
@@ -134,8 +135,8 @@ SS_FN void bdpt_cache_pixel(const RenderKernelSettings* settings, const Camera* 
             if (k == 0 || s + t > max_vertices) continue;
             light[0] = cache[lo * slots];
             float2 raster;
-            float3 c = bdpt_strategy_contribution(settings, march_settings, camera, scene, light, cam, s, t, max_vertices, (uint)pixel, sample, 0u,
-                                                  &rng, &raster, &counters) *
+            float3 c = bdpt_strategy_contribution(settings, march_settings, camera, scene, light, cam, s, t, max_vertices, (uint)pixel, sample,
+                                                  BDPT_CACHE_CHOICE_STREAM + 64u * (uint)(m + 1) + (uint)t, &raster, &counters) *
                        scale;
             if (!finite3(c)) finite = false;
             else l += c;

@@ -43,6 +43,10 @@ typedef struct BdptKernelSettings {
      * given light vertex for s >= 2, t >= 2 (docs/bdpt.md, "The light-vertex cache"). */
     float light_tracing_samples;
     float connection_samples;
+    /* Connection roulette: a connection of MIS weight w below this traces its visibility march
+     * with probability w / connection_roulette and counts 1 / that probability (bdpt_connect);
+     * 0: every connection of nonzero weight traces it. */
+    float connection_roulette;
 } BdptKernelSettings;
 
 /* Whether strategy (s, t) belongs to the mask. */

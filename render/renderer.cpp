@@ -152,6 +152,7 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     // own counts (set_light_cache_weights) from their pilot pool
     launch_settings.bdpt.light_tracing_samples = 1.0f;
     launch_settings.bdpt.connection_samples = 1.0f;
+    launch_settings.bdpt.connection_roulette = s.bdpt.connection_roulette;
     for (int i = 0; i < 3; ++i) {
         launch_settings.surface_lo[i] = compiled_.surface_lo[i];
         launch_settings.surface_hi[i] = compiled_.surface_hi[i];
