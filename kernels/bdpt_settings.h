@@ -18,7 +18,7 @@
 #define BDPT_VERTEX_LIMIT 64
 
 /* A light-vertex cache's vertex (kernels/bdpt_cache.h) takes at most this many bytes on any
- * device (the OpenCL build's PathVertex, its float3s of 16 bytes, is 128; kernels/bdpt_cache.cl
+ * device (the OpenCL build's PathVertex, its float3s of 16 bytes, is 128; kernels/bdpt.cl
  * checks it): the renderers size the cache's vertex buffer with it. */
 #define BDPT_CACHE_VERTEX_BYTES 128
 

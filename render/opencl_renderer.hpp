@@ -62,7 +62,7 @@ private:
     size_t table_floats_ = 0;
     opencl::BufferHandle accumulation_, squares_, splat_, rays_, lost_;
     size_t film_pixels_ = 0;  // the size the film buffers were made for
-    // bdpt-cache (kernels/bdpt_cache.cl): its light pass and offsets kernels, one sample index's
+    // bdpt-cache (kernels/bdpt.cl, kernels/bdpt_cache.h): its light pass and offsets kernels, one sample index's
     // light subpaths (vertices, lengths, offsets), their rays, and the pilot pool's connectable
     // vertices (render/light_cache.hpp), -1 until it is traced
     void launch_light_cache(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels);

@@ -21,8 +21,8 @@
 // kDarkRegion of the image's mean in a channel are tested but left out of the bound: they hold
 // next to none of the image's light. The budget (batches, samples per batch) is the smallest found
 // to reach the bound. The batches render on the OpenCL device: its compiled scene renders these
-// budgets about 8 times faster than the host C++ build's scene interpreter, which pays for the three
-// programs PoCL builds per scene (pt, bdpt for bdpt and lt, bdpt-cache) even with an empty kernel
+// budgets about 8 times faster than the host C++ build's scene interpreter, which pays for the two
+// programs PoCL builds per scene (pt, and bdpt for bdpt, lt and bdpt-cache) even with an empty kernel
 // cache.
 // Both builds give the same images, so the figures below hold for either.
 #include <catch2/catch.hpp>
