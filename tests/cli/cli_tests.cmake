@@ -409,6 +409,10 @@ add_test(NAME cli.render.strategy_images
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/strategy_images -DSOURCE=${PROJECT_SOURCE_DIR}
                  -P ${CLI_TEST_DIR}/expect_strategy_images.cmake)
 set_tests_properties(cli.render.strategy_images PROPERTIES LABELS cli TIMEOUT 120)
+add_test(NAME cli.render.strategy_images_cache
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/strategy_images_cache -DSOURCE=${PROJECT_SOURCE_DIR}
+                 -DINTEGRATOR=bdpt-cache -P ${CLI_TEST_DIR}/expect_strategy_images.cmake)
+set_tests_properties(cli.render.strategy_images_cache PROPERTIES LABELS cli TIMEOUT 120)
 
 # --- a render split by sample range (render --samples A:B), merged (dtoadq merge) and resumed ----
 add_test(NAME cli.render.split_merge_resume
