@@ -3,12 +3,13 @@
 // ratio, with march steps per ray and distance evaluations per step (bench/march_cost.hpp); and
 // on the scenes where the choice matters (the Cornell box, Veach's MIS scene) the equal-time error of next-event estimation with MIS against BSDF sampling alone (what the
 // preview did before the render core) and light sampling alone, against a long reference. Then,
-// on the scenes of --integrators (the Cornell box, the caustic), the equal-time error of bdpt and lt
+// on the scenes of --integrators (the Cornell box, the caustic), the equal-time error of bdpt, bdpt-cache and lt
 // against pt over the same path space (pt's max depth = bdpt's max vertices - 2), against a long pt
 // reference of that depth. Figures, not timed tests: every ratio is measured within the one run.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,10 @@ struct BenchRenderCommand {
                                     "scenes/depth_of_field.json", "scenes/metaballs.json",  "scenes/repetition.json",
                                     "scenes/primitives.json"};
     std::vector<std::string> compare{"scenes/cornell_box.json", "scenes/veach_mis.json"};
-    std::vector<std::string> integrators{"scenes/cornell_box.json", "scenes/caustic.json"};
+    std::vector<std::string> integrators{"scenes/cornell_box.json", "scenes/caustic.json", "scenes/shader_ball.json"};
+    // bdpt-cache's runs at equal time: light paths per pixel and connections, "R:M" each; empty:
+    // one run with --light-paths and --connections
+    std::vector<std::string> cache_counts;
     double throughput_seconds = 2.0;
     double seconds = 4.0;
     double reference_seconds = 40.0;
@@ -78,7 +82,25 @@ void compare_at_equal_time(const report::RendererFactory& on_device, const Bench
     std::printf("\n");
 }
 
+// "R:M": --light-paths R and --connections M of bdpt-cache; errors name --cache-counts.
+void parse_cache_counts(const std::string& text, render::RenderSettings* settings) {
+    const size_t colon = text.find(':');
+    try {
+        size_t used = 0;
+        if (colon == std::string::npos) throw std::invalid_argument(text);
+        settings->bdpt.light_paths = std::stof(text.substr(0, colon), &used);
+        if (used != colon) throw std::invalid_argument(text);
+        settings->bdpt.connections = std::stoi(text.substr(colon + 1), &used);
+        if (used != text.size() - colon - 1) throw std::invalid_argument(text);
+    } catch (const std::logic_error&) {
+        throw InputError("--cache-counts", "", "expected light paths per pixel and connections as R:M, got \"" + text + "\"");
+    }
+    render::check_render_settings(*settings);
+}
+
 void run_bench_render(const BenchRenderCommand& c) {
+    render::RenderSettings checked;
+    for (const std::string& counts : c.cache_counts) parse_cache_counts(counts, &checked);
     check_render_seconds(c.seconds);
     check_render_seconds(c.throughput_seconds, "--throughput-seconds");
     if (!(c.reference_seconds >= c.seconds && c.reference_seconds <= 36000.0))
@@ -89,8 +111,8 @@ void run_bench_render(const BenchRenderCommand& c) {
     std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());
 
     std::printf("(a scene with no light of its own is lit by envmaps/courtyard.exr)\n");
-    std::printf("%-28s %12s %12s %10s %10s %10s %14s %12s %12s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "steps/ray", "evals/step",
-                "host paths/s", "device/host", "bdpt paths/s", "lt paths/s");
+    std::printf("%-28s %12s %12s %10s %10s %10s %14s %12s %12s %12s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "steps/ray", "evals/step",
+                "host paths/s", "device/host", "bdpt paths/s", "lt paths/s", "cache paths/s");
     for (const std::string& file : c.scenes) {
         RenderJob job = scene_job(c.job, file);
         std::unique_ptr<render::Renderer> device = on_device(job.input);
@@ -98,20 +120,21 @@ void run_bench_render(const BenchRenderCommand& c) {
         bench::MarchCost work = bench::measure_march_cost(runtime, job.input, 1);
         render::HostRenderer host(job.input);
         render::RenderStatistics h = measure(host, c.throughput_seconds);
-        double bidirectional[2] = {0.0, 0.0};
-        for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt}) {
-            if (!render::integrator_descriptor(integrator).renders_environment() && job.input.environment) continue;
+        const render::Integrator kBidirectional[] = {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::bdpt_cache};
+        double bidirectional[3] = {0.0, 0.0, 0.0};
+        for (int i = 0; i < 3; ++i) {
+            if (!render::integrator_descriptor(kBidirectional[i]).renders_environment() && job.input.environment) continue;
             render::RenderInput input = job.input;
-            input.settings.integrator = integrator;
+            input.settings.integrator = kBidirectional[i];
             std::unique_ptr<render::Renderer> r = on_device(input);
-            bidirectional[integrator == render::Integrator::lt] = measure(*r, c.throughput_seconds).paths_per_second();
+            bidirectional[i] = measure(*r, c.throughput_seconds).paths_per_second();
         }
         char lt[32] = "-";  // not under an environment
         if (bidirectional[1] > 0.0) std::snprintf(lt, sizeof(lt), "%.3g", bidirectional[1]);
-        std::printf("%-28s %12.3g %12.3g %10.2f %10.1f %10.2f %14.3g %11.2fx %12.3g %12s\n", fs::path(file).filename().string().c_str(),
+        std::printf("%-28s %12.3g %12.3g %10.2f %10.1f %10.2f %14.3g %11.2fx %12.3g %12s %12.3g\n", fs::path(file).filename().string().c_str(),
                     d.paths_per_second(), d.rays_per_second(), double(d.rays) / double(d.paths), work.steps_per_ray,
                     work.evaluations_per_step, h.paths_per_second(),
-                    d.paths_per_second() / h.paths_per_second(), bidirectional[0], lt);
+                    d.paths_per_second() / h.paths_per_second(), bidirectional[0], lt, bidirectional[2]);
         std::fflush(stdout);
     }
 
@@ -131,10 +154,20 @@ void run_bench_render(const BenchRenderCommand& c) {
         RenderJob job = scene_job(c.job, file);
         std::string name = fs::path(file).stem().string();
         std::vector<report::EqualTimeRun> runs;
-        for (render::Integrator integrator : {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::pt}) {
+        for (render::Integrator integrator :
+             {render::Integrator::bdpt, render::Integrator::bdpt_cache, render::Integrator::lt, render::Integrator::pt}) {
             if (!render::integrator_descriptor(integrator).renders_environment() && job.input.environment) continue;
             report::EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
             run.input.settings.integrator = integrator;
+            if (integrator == render::Integrator::bdpt_cache && !c.cache_counts.empty()) {
+                for (const std::string& counts : c.cache_counts) {
+                    report::EqualTimeRun sized = run;
+                    sized.name += " " + counts;
+                    parse_cache_counts(counts, &sized.input.settings);
+                    runs.push_back(std::move(sized));
+                }
+                continue;
+            }
             runs.push_back(std::move(run));
         }
         compare_at_equal_time(on_device, c, name + ": reference (pt, max depth " + std::to_string(job.input.settings.max_depth) + ")",
@@ -153,12 +186,15 @@ void register_bench_render(CLI::App& bench) {
     auto c = std::make_shared<BenchRenderCommand>();
     c->job.size = "128x128";
     auto* cmd = bench.add_subcommand(
-        "render", "Paths/s and rays/s per bundled scene (pt on the device and the host build, bdpt, lt), and the equal-time error of each light-sampling "
-        "strategy and of bdpt and lt against pt");
+        "render", "Paths/s and rays/s per bundled scene (pt on the device and the host build, bdpt, lt, bdpt-cache), and the equal-time error of "
+        "each light-sampling strategy and of bdpt, bdpt-cache and lt against pt");
     add_render_options(*cmd, &c->job);
     cmd->add_option("--scenes", c->scenes, "Scenes to measure throughput on")->capture_default_str();
     cmd->add_option("--compare", c->compare, "Scenes to compare light-sampling strategies on at equal time")->capture_default_str();
-    cmd->add_option("--integrators", c->integrators, "Scenes to compare bdpt, lt and pt on at equal time")->capture_default_str();
+    cmd->add_option("--integrators", c->integrators, "Scenes to compare bdpt, bdpt-cache, lt and pt on at equal time")->capture_default_str();
+    cmd->add_option("--cache-counts", c->cache_counts,
+                    "bdpt-cache at equal time with each of these light paths per pixel and connections, R:M (default: one run with "
+                    "--light-paths and --connections)");
     cmd->add_option("--throughput-seconds", c->throughput_seconds, "Render time of each throughput figure")->capture_default_str();
     cmd->add_option("--seconds", c->seconds, "Render time of each strategy")->capture_default_str();
     cmd->add_option("--reference-seconds", c->reference_seconds, "Render time of each reference (MIS)")->capture_default_str();

@@ -40,6 +40,14 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
                    "auto: plain primitives and emitters intersected exactly, the rest sphere-traced; march: sphere-trace everything (to compare)")
         ->capture_default_str();
     cmd.add_option("--max-depth", o->max_depth, "Scattering events per path, for every integrator (bdpt and lt: paths of at most max-depth + 2 vertices, at most 62 events)")->capture_default_str();
+    cmd.add_option("--light-paths", o->light_paths, "bdpt-cache: light subpaths per sample, per pixel of the image, in (0, 16]")
+        ->capture_default_str();
+    cmd.add_option("--connections", o->connections, "bdpt-cache: light-cache vertices each camera vertex is joined to, in [1, 64]")
+        ->capture_default_str();
+    cmd.add_option("--connection-roulette", o->connection_roulette,
+                   "bdpt, lt, bdpt-cache: a connection of MIS weight w below this traces its shadow ray with probability w / this, and "
+                   "counts 1 / that probability (0: always)")
+        ->capture_default_str();
     cmd.add_option("--max-steps", o->max_steps, "Sphere-tracing steps per ray before it counts as lost")->capture_default_str();
     cmd.add_option("--over-relaxation", o->over_relaxation, "Sphere-tracing over-relaxation in [1, 2] (1: plain; a scene that is not a distance bound uses 1)")->capture_default_str();
     cmd.add_option("--seed", o->seed, "Seed of the random numbers (same seed, same image)")->capture_default_str();
@@ -102,6 +110,9 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     settings.normals = render::parse_normal_method(o.normals);
     settings.max_depth = o.max_depth;
     settings.bdpt.mis_heuristic = render::parse_mis_heuristic(o.mis_heuristic);
+    settings.bdpt.light_paths = o.light_paths;
+    settings.bdpt.connections = o.connections;
+    settings.bdpt.connection_roulette = o.connection_roulette;
     settings.max_steps = o.max_steps;
     settings.over_relaxation = o.over_relaxation;
     render::check_render_settings(settings);

@@ -41,6 +41,9 @@ struct RenderJobOptions {
     std::string geometry = "auto";
     int max_depth = 16;
     std::string mis_heuristic = "balance";  // bdpt, lt
+    float light_paths = render::BdptSettings{}.light_paths;  // bdpt-cache
+    int connections = render::BdptSettings{}.connections;    // bdpt-cache
+    float connection_roulette = render::BdptSettings{}.connection_roulette;  // bdpt, lt, bdpt-cache
     int max_steps = 1024;
     float over_relaxation = render::RenderSettings{}.over_relaxation;
     unsigned long long seed = 0;

@@ -43,7 +43,11 @@ SS_FN float3 bdpt_ray_origin(const PathVertex* v, float3 w) {
 }
 
 /* The unweighted contribution of strategy (s, t) and, through *weight, its MIS weight; t = 1 sets
- * *raster to where it lands. Zero where the strategy cannot make a path from these subpaths. */
+ * *raster to where it lands. Zero where the strategy cannot make a path from these subpaths. The
+ * weight needs no ray, so it comes before the connection's visibility march: a connection of
+ * weight 0 traces none, and one whose weight w is below settings->bdpt.connection_roulette
+ * traces it with probability w / connection_roulette (drawn from rng) and counts 1 / that
+ * probability when it does (connection roulette, docs/bdpt.md). */
 SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings march_settings, const Camera* camera, const RenderScene* scene,
                           const PathVertex* light, const PathVertex* cam, int s, int t, Rng* rng, float2* raster, float* weight,
                           PathCounters* counters) {
@@ -52,6 +56,10 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings ma
     if (t > 1 && s != 0 && cam[t - 1].type == VERTEX_ENVIRONMENT) return zero; /* nothing connects to infinity */
     PathVertex sampled;
     float3 L;
+    /* the shadow ray of s = 1 and t = 1, traced after the weight */
+    float3 ray_origin = zero, ray_direction = zero;
+    float ray_distance = 0.0f;
+    int ray_target = -1;
     if (s == 0) {
         const PathVertex* pt = &cam[t - 1];
         if (!vertex_emits(scene, pt)) return zero;
@@ -74,7 +82,9 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings ma
         float cos_q = qs->on_surface ? fabs(dot(qs->frame.n, cs.wi)) : 1.0f;
         L = qs->beta * f * sampled.beta * cos_q;
         if (!(max_component(L) > 0.0f)) return zero;
-        if (!segment_unoccluded(bdpt_ray_origin(qs, cs.wi), cs.wi, cs.distance, -1, march_settings, counters)) return zero;
+        ray_origin = bdpt_ray_origin(qs, cs.wi);
+        ray_direction = cs.wi;
+        ray_distance = cs.distance;
         *raster = cs.raster;
     } else if (s == 1) {
         const PathVertex* pt = &cam[t - 1];
@@ -102,7 +112,10 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings ma
         sampled.pdf_fwd = vertex_pdf_light_origin(settings, scene, &sampled);
         L = pt->beta * vertex_f(scene, pt, ls.wi, TRANSPORT_RADIANCE) * sampled.beta * fabs(dot(ls.wi, pt->frame.n));
         if (!(max_component(L) > 0.0f)) return zero;
-        if (!segment_unoccluded(bdpt_ray_origin(pt, ls.wi), ls.wi, ls.distance, l.material_slot, march_settings, counters)) return zero;
+        ray_origin = bdpt_ray_origin(pt, ls.wi);
+        ray_direction = ls.wi;
+        ray_distance = ls.distance;
+        ray_target = l.material_slot;
     } else {
         const PathVertex* qs = &light[s - 1];
         const PathVertex* pt = &cam[t - 1];
@@ -114,10 +127,71 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings ma
         float g = fabs(dot(qs->frame.n, w)) * fabs(dot(pt->frame.n, w)) / d2;
         L = qs->beta * vertex_f(scene, qs, w, TRANSPORT_IMPORTANCE) * vertex_f(scene, pt, -w, TRANSPORT_RADIANCE) * pt->beta * g;
         if (!(max_component(L) > 0.0f)) return zero;
-        if (!bdpt_surfaces_see_each_other(qs, pt, march_settings, counters)) return zero;
     }
-    *weight = bdpt_mis_weight(settings, camera, scene, light, cam, &sampled, s, t);
+    float w = bdpt_mis_weight(settings, camera, scene, light, cam, &sampled, s, t);
+    if (s != 0) { /* the connection's visibility march, unless its weight leaves it out */
+        if (w == 0.0f) return zero;
+        float roulette = settings->bdpt.connection_roulette;
+        if (w < roulette) {
+            float survive = w / roulette;
+            if (!(uint_to_unit_float(rng_next_uint(rng)) < survive)) return zero;
+            L = L / survive;
+        }
+        bool visible = s >= 2 && t >= 2 ? bdpt_surfaces_see_each_other(&light[s - 1], &cam[t - 1], march_settings, counters)
+                                        : segment_unoccluded(ray_origin, ray_direction, ray_distance, ray_target, march_settings, counters);
+        if (!visible) return zero;
+    }
+    *weight = w;
     return L;
+}
+
+/* Strategy (s, t) of a path with these subpaths, MIS-weighted (unless the settings ask for it
+ * unweighted), where the render adds it; zero where it does not (outside max_vertices, the mask,
+ * or the one strategy --strategies renders). t = 1 sets *raster to where it lands. A connection
+ * (s >= 1) draws its light sample (s = 1), lens sample (t = 1) and connection roulette from a
+ * stream of its own, (key, sample, stream): a strategy rendered alone (--strategies) draws what it
+ * draws in the whole render, so the strategy images add up to the render. */
+SS_FN float3 bdpt_strategy_contribution(const RenderKernelSettings* settings, MarchSettings march_settings, const Camera* camera,
+                                        const RenderScene* scene, const PathVertex* light, const PathVertex* cam, int s, int t,
+                                        int max_vertices, uint key, uint sample, uint stream, float2* raster, PathCounters* counters) {
+    float3 zero = float3_splat(0.0f);
+    if (s + t < 2 || s + t > max_vertices) return zero;
+    if (!bdpt_strategy_runs(settings->bdpt.strategies, s, t)) return zero;
+    if (settings->bdpt.single_strategy >= 0 && settings->bdpt.single_strategy != bdpt_strategy_code(s, t)) return zero;
+    Rng connection_rng = rng_make_stream(key, sample, stream, settings->seed_lo, settings->seed_hi);
+    float weight;
+    float3 c = bdpt_connect(settings, march_settings, camera, scene, light, cam, s, t, &connection_rng, raster, &weight, counters);
+    return settings->bdpt.unweighted ? c : c * weight;
+}
+
+/* The most vertices of this kernel's paths: the settings' max_vertices, within the private arrays. */
+SS_FN int bdpt_kernel_max_vertices(const RenderKernelSettings* settings) { return min(max(settings->bdpt.max_vertices, 2), BDPT_MAX_VERTICES); }
+
+SS_FN PathCounters bdpt_counters_zero(void) {
+    PathCounters counters;
+    counters.rays = 0u;
+    counters.lost_rays = 0u;
+    return counters;
+}
+
+/* A sample's own-pixel radiance l into the pixel's sums; a sample with a non-finite contribution
+ * or weight only counted in sum.w (the film divides by the finite samples). */
+SS_FN void bdpt_add_sample(float4* sum, float4* square_sum, float3 l, bool finite) {
+    if (finite) {
+        *sum += make_float4(l.x, l.y, l.z, 0.0f);
+        *square_sum = film_add_square(*square_sum, l);
+    } else {
+        sum->w += 1.0f;
+    }
+}
+
+/* A pixel's sums and its rays back into the film's buffers. */
+SS_FN void bdpt_store_pixel(int pixel, float4 sum, float4 square_sum, PathCounters counters, GLOBAL_MEM float4* accumulation,
+                            GLOBAL_MEM float4* squares, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts) {
+    accumulation[pixel] = sum;
+    squares[pixel] = square_sum;
+    ray_counts[pixel] += counters.rays;
+    lost_ray_counts[pixel] += counters.lost_rays;
 }
 
 /* Adds settings->sample_count samples to one pixel (pixel k is (k % width, k / width)), its t = 1
@@ -130,14 +204,13 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera
                       GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
     float4 sum = accumulation[pixel], square_sum = squares[pixel];
-    PathCounters counters;
-    counters.rays = 0u;
-    counters.lost_rays = 0u;
-    int max_vertices = min(max(settings->bdpt.max_vertices, 2), BDPT_MAX_VERTICES);
+    PathCounters counters = bdpt_counters_zero();
+    int max_vertices = bdpt_kernel_max_vertices(settings);
     PathVertex cam[BDPT_MAX_VERTICES];
     PathVertex light[BDPT_MAX_VERTICES];
     for (int i = 0; i < settings->sample_count; ++i) {
-        Rng rng = rng_make((uint)pixel, (uint)(settings->first_sample + i), settings->seed_lo, settings->seed_hi);
+        uint sample = (uint)(settings->first_sample + i);
+        Rng rng = rng_make((uint)pixel, sample, settings->seed_lo, settings->seed_hi);
         /* t = 1 alone (the light tracer) needs no camera subpath: its lens vertex is sampled per connection */
         bool camera_strategies = (settings->bdpt.strategies & (STRATEGY_S0 | STRATEGY_S1 | STRATEGY_S2)) != 0;
         int n_cam = camera_strategies ? bdpt_camera_subpath(settings, march_settings, camera, scene, pixel, &rng, cam, max_vertices, &counters) : 1;
@@ -146,20 +219,9 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera
         bool finite = true;
         for (int t = 1; t <= n_cam; ++t)
             for (int s = 0; s <= n_light; ++s) {
-                int depth = s + t - 2;
-                if (depth < 0 || s + t > max_vertices) continue;
-                if (!bdpt_strategy_runs(settings->bdpt.strategies, s, t)) continue;
-                if (settings->bdpt.single_strategy >= 0 && settings->bdpt.single_strategy != bdpt_strategy_code(s, t)) continue;
                 float2 raster = make_float2(-1.0f, -1.0f);
-                float weight;
-                /* the light sample (s = 1) and the lens sample (t = 1) draw from the strategy's own
-                 * stream: a strategy rendered alone (--strategies) draws what it draws in the whole
-                 * render, so the strategy images add up to the render; the other strategies draw none */
-                Rng connection_rng = rng;
-                if (s == 1 || t == 1)
-                    connection_rng = rng_make_stream((uint)pixel, (uint)(settings->first_sample + i), (uint)(1 + bdpt_strategy_code(s, t)), settings->seed_lo, settings->seed_hi);
-                float3 c = bdpt_connect(settings, march_settings, camera, scene, light, cam, s, t, &connection_rng, &raster, &weight, &counters);
-                if (!settings->bdpt.unweighted) c = c * weight;
+                float3 c = bdpt_strategy_contribution(settings, march_settings, camera, scene, light, cam, s, t, max_vertices, (uint)pixel, sample,
+                                                      (uint)(1 + bdpt_strategy_code(s, t)), &raster, &counters);
                 /* a NaN or infinite contribution or weight is counted before anything can drop it */
                 if (!finite3(c)) {
                     finite = false;
@@ -169,17 +231,9 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera
                 if (t == 1) film_splat(splat, camera->width, camera->height, raster.x, raster.y, c);
                 else l += c;
             }
-        if (finite) {
-            sum += make_float4(l.x, l.y, l.z, 0.0f);
-            square_sum = film_add_square(square_sum, l);
-        } else {
-            sum.w += 1.0f;
-        }
+        bdpt_add_sample(&sum, &square_sum, l, finite);
     }
-    accumulation[pixel] = sum;
-    squares[pixel] = square_sum;
-    ray_counts[pixel] += counters.rays;
-    lost_ray_counts[pixel] += counters.lost_rays;
+    bdpt_store_pixel(pixel, sum, square_sum, counters, accumulation, squares, ray_counts, lost_ray_counts);
 }
 
 #endif

@@ -6,8 +6,10 @@
  * remapped to 1 in the ratio, and strategies that would have to connect through such a vertex are
  * left out of the sum. Vertices at infinity (the environment) carry solid-angle densities on both
  * sides, so the ratios stay consistent. Only strategies of the kernel's mask count: `lt` (t = 1
- * alone) weighs its strategies against each other only. Balance heuristic: 1 / sum r_i; power
- * heuristic: 1 / sum r_i^2 (r_s = 1). */
+ * alone) weighs its strategies against each other only. Strategies with more than one sample per
+ * camera subpath (the light-vertex cache's, BdptKernelSettings.light_tracing_samples) enter with
+ * their count: r_i = n_i p_i / (n_s p_s). Balance heuristic: 1 / sum r_i; power heuristic:
+ * 1 / sum r_i^2 (r_s = 1). */
 #ifndef KERNELS_BDPT_MIS_H
 #define KERNELS_BDPT_MIS_H
 
@@ -67,7 +69,11 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* 
     if (s == 0 && t > 1) q_ratio = bdpt_light_sample_ratio(settings, scene, pt, pt_minus);
     else if (s == 1) q_ratio = bdpt_light_sample_ratio(settings, scene, qs, pt);
     else if (s >= 2) q_ratio = bdpt_light_sample_ratio(settings, scene, &light[0], &light[1]);
-    float own = s == 1 ? 1.0f / q_ratio : 1.0f; /* scales every other strategy's ratio */
+    /* and each strategy's samples per camera subpath (bdpt_strategy_samples): strategy i's ratio
+     * is n_i p_i / (n_s p_s) */
+    float n_s = bdpt_strategy_samples(&settings->bdpt, s, t);
+    float own = (s == 1 ? 1.0f / q_ratio : 1.0f) / n_s; /* scales every other strategy's ratio */
+    float q_ratio_s1 = q_ratio / n_s;                   /* strategy s' = 1's, when this one is not it */
 
     float sum = 0.0f;
     float r = 1.0f;
@@ -76,7 +82,7 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* 
         float rev = i == t - 1 ? pt_rev : (i == t - 2 ? pt_minus_rev : cam[i].pdf_rev);
         r *= bdpt_remap_reverse(rev, i < t - 2 && cam[i + 1].delta) / bdpt_remap0(cam[i].pdf_fwd);
         bool delta = i != t - 1 && cam[i].delta;
-        float q = s + t - i == 1 ? q_ratio : own;
+        float q = (s + t - i == 1 ? q_ratio_s1 : own) * bdpt_strategy_samples(&settings->bdpt, s + t - i, i);
         if (!delta && !cam[i - 1].delta && bdpt_strategy_enabled(settings->bdpt.strategies, s + t - i, i)) sum += bdpt_heuristic(settings->bdpt.mis_heuristic, r * q);
     }
     r = 1.0f;
@@ -86,7 +92,7 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* 
         r *= bdpt_remap_reverse(rev, i < s - 2 && light[i + 1].delta) / bdpt_remap0(v->pdf_fwd);
         bool delta = i != s - 1 && v->delta;
         bool delta_before = i > 0 ? light[i - 1].delta != 0 : vertex_is_delta_light(scene, i == s - 1 ? qs : &light[0]);
-        float q = i == 1 ? q_ratio : own;
+        float q = (i == 1 ? q_ratio_s1 : own) * bdpt_strategy_samples(&settings->bdpt, i, s + t - i);
         if (!delta && !delta_before && bdpt_strategy_enabled(settings->bdpt.strategies, i, s + t - i)) sum += bdpt_heuristic(settings->bdpt.mis_heuristic, r * q);
     }
     return 1.0f / (1.0f + sum);

@@ -17,6 +17,11 @@
  * vertex arrays (kernels/bdpt_vertex.h); an OpenCL build sizes them to its own max_vertices. */
 #define BDPT_VERTEX_LIMIT 64
 
+/* A light-vertex cache's vertex (kernels/bdpt_cache.h) takes at most this many bytes on any
+ * device (the OpenCL build's PathVertex, its float3s of 16 bytes, is 128; kernels/bdpt.cl
+ * checks it): the renderers size the cache's vertex buffer with it. */
+#define BDPT_CACHE_VERTEX_BYTES 128
+
 #define MIS_BALANCE 0
 #define MIS_POWER 1
 
@@ -30,6 +35,18 @@ typedef struct BdptKernelSettings {
     int unweighted;       /* 1: with single_strategy, its contribution without the MIS weight */
     float scene_center[3]; /* the sphere holding the scene: the disk environment light paths start on */
     float scene_radius;
+    /* How many samples of a strategy one camera subpath gets, relative to s <= 1's one each: the
+     * factors n_i of the MIS weights n_i p_i / sum_j n_j p_j (bdpt_strategy_samples). Both 1 for the
+     * per-pixel kernel (one light subpath per camera subpath); the light-vertex cache
+     * (kernels/bdpt_cache.h) has N_L / N_pixels light subpaths per camera subpath for t = 1 and
+     * M / (mean connectable vertices per light subpath) connections of each camera vertex to a
+     * given light vertex for s >= 2, t >= 2 (docs/bdpt.md, "The light-vertex cache"). */
+    float light_tracing_samples;
+    float connection_samples;
+    /* Connection roulette: a connection of MIS weight w below this traces its visibility march
+     * with probability w / connection_roulette and counts 1 / that probability (bdpt_connect);
+     * 0: every connection of nonzero weight traces it. */
+    float connection_roulette;
 } BdptKernelSettings;
 
 /* Whether strategy (s, t) belongs to the mask. */
@@ -47,6 +64,12 @@ SS_FN bool bdpt_strategy_enabled(int mask, int s, int t) {
 SS_FN bool bdpt_strategy_runs(int mask, int s, int t) {
     if (s == 1 && t == 1 && bdpt_strategy_enabled(mask, 0, 2)) return false;
     return bdpt_strategy_enabled(mask, s, t);
+}
+
+/* n_i of strategy (s, t): see BdptKernelSettings.light_tracing_samples. */
+SS_FN float bdpt_strategy_samples(const BdptKernelSettings* bdpt, int s, int t) {
+    if (t == 1) return bdpt->light_tracing_samples;
+    return s >= 2 ? bdpt->connection_samples : 1.0f;
 }
 
 /* One number per strategy, s * 32 + t (t < 32: a path has at most BDPT_VERTEX_LIMIT vertices, and

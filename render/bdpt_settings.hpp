@@ -9,6 +9,15 @@ enum class MisHeuristic { balance, power };
 
 struct BdptSettings {
     MisHeuristic mis_heuristic = MisHeuristic::balance;
+    // bdpt-cache (kernels/bdpt_cache.h, render/light_cache.hpp): light subpaths per sample index, as
+    // a multiple of the image's pixels (--light-paths), and the cache vertices each camera vertex is
+    // joined to (--connections). The defaults are measured (docs/bdpt.md, "The light-vertex cache").
+    float light_paths = 0.25f;
+    int connections = 1;
+    // bdpt, lt, bdpt-cache: a connection whose MIS weight is below this traces its visibility march
+    // with probability weight / connection_roulette (--connection-roulette; 0: always). Measured in
+    // docs/bdpt.md, "Connection roulette".
+    float connection_roulette = 0.0f;
 };
 
 // The strategies apart (--strategies DIR, the tests of the estimator): other masks than the

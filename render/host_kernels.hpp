@@ -18,7 +18,7 @@ using namespace scene::field_for_kernel_headers;
 #include "sdf/march.h"
 #include "sdf/normals.h"
 #include "kernels/path_tracer.h"
-#include "kernels/bdpt.h"
+#include "kernels/bdpt_cache.h"
 #include "kernels/first_hit.h"
 
 }  // namespace host_kernels

@@ -5,7 +5,13 @@
 // a debugger, running it under AddressSanitizer and UBSan, and checking the device against it.
 #pragma once
 
+#include <functional>
+
 #include "render/renderer.hpp"
+
+namespace lab::render::host_kernels {
+struct PathVertex;  // kernels/bdpt_vertex.h, compiled in render/host_kernels.hpp
+}
 
 namespace lab::render {
 
@@ -17,6 +23,7 @@ class HostRenderer final : public Renderer {
 public:
     // threads: 0 uses every hardware thread.
     explicit HostRenderer(RenderInput input, int threads = 0);
+    ~HostRenderer() override;
 
     std::string device_description() const override;
 
@@ -29,9 +36,20 @@ private:
     void write_film(const FilmReadback& film) override;
     void read_ray_counts(uint64_t* rays, uint64_t* lost) const override;
 
+    // The light-vertex cache's passes (kernels/bdpt_cache.h), one sample index at a time.
+    void launch_light_cache(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels);
+    // `count` items, `chunk` at a time, on every thread, each in the scene's scope.
+    void parallel_for(int first, int end, int chunk, const std::function<void(int)>& item) const;
+
     int threads_ = 1;
     FilmReadback film_;
     std::vector<uint32_t> rays_, lost_;
+    // bdpt-cache: the vertices, lengths and offsets of one sample's light subpaths, their rays, and
+    // the pilot pool's connectable vertices (render/light_cache.hpp), -1 until it is traced
+    std::vector<host_kernels::PathVertex> cache_;
+    std::vector<int> cache_lengths_;
+    std::vector<uint32_t> cache_offsets_, cache_rays_, cache_lost_;
+    int64_t pilot_vertices_ = -1;
 };
 
 }  // namespace lab::render

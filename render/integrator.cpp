@@ -26,6 +26,9 @@ constexpr IntegratorDescriptor kIntegrators[] = {
     {Integrator::lt, "lt", "light tracing", "the light tracer", "kernels/bdpt.cl", "render_bdpt", STRATEGY_T1, false,
      "lt cannot render an environment light (light tracing never reaches the lens from infinity, nor an endless surface "
      "beyond the environment's light disk): use --integrator bdpt or pt"},
+    // bdpt's strategies and weights, its light subpaths traced once per sample index for all pixels
+    {Integrator::bdpt_cache, "bdpt-cache", "bidirectional, light subpaths shared by all pixels through a light-vertex cache",
+     "bidirectional path tracing with a light-vertex cache", "kernels/bdpt.cl", "render_bdpt_cache", STRATEGY_ALL, false, nullptr, true},
 };
 constexpr size_t kIntegratorCount = std::size(kIntegrators);
 

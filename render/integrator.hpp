@@ -10,8 +10,9 @@ namespace lab::render {
 
 // Which transport algorithm fills the film. `pt`: the path tracer with next-event estimation
 // (kernels/path_tracer.h); `bdpt`: bidirectional path tracing, every strategy (kernels/bdpt.h);
-// `lt`: light tracing, the same code with only its t = 1 strategies (docs/bdpt.md).
-enum class Integrator { pt, bdpt, lt };
+// `lt`: light tracing, the same code with only its t = 1 strategies (docs/bdpt.md); `bdpt-cache`:
+// every strategy, the light subpaths shared by all pixels in a light-vertex cache (kernels/bdpt_cache.h).
+enum class Integrator { pt, bdpt, lt, bdpt_cache };
 
 struct IntegratorDescriptor {
     Integrator integrator;
@@ -28,6 +29,9 @@ struct IntegratorDescriptor {
     bool wavefront;
     // Why it cannot render an environment light; nullptr: it can.
     const char* environment_refusal;
+    // Its light subpaths are a pool per sample index that every pixel shares (kernels/bdpt_cache.h):
+    // the program's light pass and offsets kernels run before `kernel`, the camera pass.
+    bool light_cache = false;
 
     // Subpaths from the lens and from the lights (kernels/bdpt.h): the lights start its light
     // subpaths, its vertex arrays bound the depth (kBdptMaxDepth), and it has an MIS heuristic.

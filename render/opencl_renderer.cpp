@@ -8,6 +8,7 @@
 #include "brdf/host/measured_registry.hpp"
 #include "kernels/host/material_layout.hpp"
 #include "kernels/host/scene_kernel_source.hpp"
+#include "render/light_cache.hpp"
 #include "render/opencl_launch.hpp"
 
 namespace lab::render {
@@ -73,6 +74,10 @@ void OpenClRenderer::build_kernel() {
     while (local_size_ > 1 && local_size_ > kernel_max) local_size_ /= 2;
     program_.emplace(std::move(program));
     first_hit_program_.reset();  // the scene's source or features changed
+    if (integrator.light_cache) {
+        cache_light_kernel_ = program_->kernel("render_bdpt_cache_light");
+        cache_offsets_kernel_ = program_->kernel("render_bdpt_cache_offsets");
+    }
     kernel_ = std::move(kernel);
     if (wavefront()) wavefront_driver_.build(*program_, compiled_, options);
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -125,6 +130,19 @@ void OpenClRenderer::clear_film() {
     runtime_.write(splat_, zeros.data(), pixels * 3 * sizeof(cl_uint));
     runtime_.write(rays_, zeros.data(), pixels * sizeof(cl_uint));
     runtime_.write(lost_, zeros.data(), pixels * sizeof(cl_uint));
+    if (integrator_descriptor(input_.settings.integrator).light_cache) {
+        const size_t paths = size_t(light_cache_paths(input_.settings));
+        cache_ = runtime_.buffer(light_cache_bytes(input_.settings), CL_MEM_READ_WRITE);
+        cache_lengths_ = runtime_.buffer(paths * sizeof(cl_int), CL_MEM_READ_WRITE);
+        cache_offsets_ = runtime_.buffer((paths + 1) * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        cache_rays_ = runtime_.buffer(paths * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        cache_lost_ = runtime_.buffer(paths * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        std::vector<cl_uint> path_zeros(paths + 1, 0u);
+        runtime_.write(cache_offsets_, path_zeros.data(), (paths + 1) * sizeof(cl_uint));
+        runtime_.write(cache_rays_, path_zeros.data(), paths * sizeof(cl_uint));
+        runtime_.write(cache_lost_, path_zeros.data(), paths * sizeof(cl_uint));
+    }
+    pilot_vertices_ = -1;  // the scene, camera or settings may have changed
 }
 
 cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& launch_settings) const {
@@ -140,6 +158,10 @@ cl_uint OpenClRenderer::bind_render_arguments(const opencl::KernelHandle& kernel
 
 void OpenClRenderer::launch(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels) {
     const int image = input_.settings.width * input_.settings.height;
+    if (integrator_descriptor(input_.settings.integrator).light_cache) {
+        launch_light_cache(launch_settings, pixels);
+        return;
+    }
     if (wavefront()) {
         const WavefrontTarget target{&camera_,
                                      [this](const opencl::KernelHandle& kernel, const kernel::RenderKernelSettings& settings) {
@@ -149,6 +171,48 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& launch_settings,
         wavefront_driver_.launch(target, launch_settings, pixels);
     } else {
         bind_render_arguments(kernel_, launch_settings);
+        launch_range(runtime_, kernel_, pixels, local_size_, size_t(image));
+    }
+    runtime_.finish();
+}
+
+void OpenClRenderer::launch_light_cache(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels) {
+    const int image = input_.settings.width * input_.settings.height;
+    const cl_int paths = light_cache_paths(input_.settings);
+    // one sample index's pool: its light subpaths, their t = 1 splats when `splats`, the offsets
+    auto light_pass = [&](const kernel::RenderKernelSettings& settings, cl_int splats) {
+        cl_uint a = bind_render_arguments(cache_light_kernel_, settings);
+        // the light subpaths' own ray counters in place of the pixels'
+        opencl::set_kernel_arg(cache_light_kernel_, a - 2, cache_rays_);
+        opencl::set_kernel_arg(cache_light_kernel_, a - 1, cache_lost_);
+        for (const opencl::BufferHandle* b : {&cache_, &cache_lengths_, &cache_offsets_}) opencl::set_kernel_arg(cache_light_kernel_, a++, *b);
+        opencl::set_kernel_arg(cache_light_kernel_, a++, paths);
+        opencl::set_kernel_arg(cache_light_kernel_, a++, splats);
+        launch_range(runtime_, cache_light_kernel_, PixelRange{0, paths}, local_size_, size_t(paths));
+        opencl::set_kernel_arg(cache_offsets_kernel_, 0, cache_offsets_);
+        opencl::set_kernel_arg(cache_offsets_kernel_, 1, paths);
+        runtime_.launch_1d(cache_offsets_kernel_, 1, 1);
+    };
+    if (pilot_vertices_ < 0) {
+        light_pass(kernel_settings(kLightCachePilotSample, 1), 0);
+        std::vector<cl_uint> offsets(size_t(paths) + 1);
+        runtime_.read(cache_offsets_, offsets.data(), offsets.size() * sizeof(cl_uint));
+        pilot_vertices_ = int64_t(offsets.back());
+        std::vector<cl_uint> zeros(size_t(paths), 0u);  // the pilot's rays are no render's
+        runtime_.write(cache_rays_, zeros.data(), zeros.size() * sizeof(cl_uint));
+        runtime_.write(cache_lost_, zeros.data(), zeros.size() * sizeof(cl_uint));
+    }
+    for (int i = 0; i < launch_settings.sample_count; ++i) {
+        kernel::RenderKernelSettings settings = launch_settings;
+        settings.first_sample = launch_settings.first_sample + i;
+        settings.sample_count = 1;
+        set_light_cache_weights(input_.settings, uint64_t(pilot_vertices_), &settings);
+        // a pass split into pixel ranges traces the pool for each; the first range splats it
+        light_pass(settings, pixels.first == 0 ? 1 : 0);
+        cl_uint a = bind_render_arguments(kernel_, settings);
+        for (const opencl::BufferHandle* b : {&cache_, &cache_lengths_, &cache_offsets_}) opencl::set_kernel_arg(kernel_, a++, *b);
+        opencl::set_kernel_arg(kernel_, a++, paths);
+        opencl::set_kernel_arg(kernel_, a++, cl_int(input_.settings.bdpt.connections));
         launch_range(runtime_, kernel_, pixels, local_size_, size_t(image));
     }
     runtime_.finish();
@@ -217,6 +281,17 @@ void OpenClRenderer::read_ray_counts(uint64_t* rays, uint64_t* lost) const {
     for (size_t p = 0; p < pixels; ++p) {
         *rays += r[p];
         *lost += l[p];
+    }
+    if (integrator_descriptor(input_.settings.integrator).light_cache) {  // bdpt-cache's light subpaths
+        const size_t paths = size_t(light_cache_paths(input_.settings));
+        r.resize(paths);
+        l.resize(paths);
+        runtime_.read(cache_rays_, r.data(), paths * sizeof(cl_uint));
+        runtime_.read(cache_lost_, l.data(), paths * sizeof(cl_uint));
+        for (size_t p = 0; p < paths; ++p) {
+            *rays += r[p];
+            *lost += l[p];
+        }
     }
 }
 

@@ -62,6 +62,13 @@ private:
     size_t table_floats_ = 0;
     opencl::BufferHandle accumulation_, squares_, splat_, rays_, lost_;
     size_t film_pixels_ = 0;  // the size the film buffers were made for
+    // bdpt-cache (kernels/bdpt.cl, kernels/bdpt_cache.h): its light pass and offsets kernels, one sample index's
+    // light subpaths (vertices, lengths, offsets), their rays, and the pilot pool's connectable
+    // vertices (render/light_cache.hpp), -1 until it is traced
+    void launch_light_cache(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels);
+    opencl::KernelHandle cache_light_kernel_, cache_offsets_kernel_;
+    opencl::BufferHandle cache_, cache_lengths_, cache_offsets_, cache_rays_, cache_lost_;
+    int64_t pilot_vertices_ = -1;
     const brdf::float4* uploaded_texels_ = nullptr;  // the environment texels texels_ holds
     uint64_t uploaded_texels_version_ = 0;           // and Renderer::texels_version() when uploaded
 };

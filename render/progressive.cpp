@@ -74,6 +74,11 @@ film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatis
     if (integrator_descriptor(s.integrator).bidirectional()) {  // what only the bidirectional kernel reads
         m.set("max_vertices", bdpt_max_vertices(s));
         m.set("mis_heuristic", mis_heuristic_name(s.bdpt.mis_heuristic));
+        if (s.bdpt.connection_roulette > 0.0f) m.set("connection_roulette", s.bdpt.connection_roulette);
+        if (integrator_descriptor(s.integrator).light_cache) {  // the cache's sizes change its estimator's noise, not its mean
+            m.set("light_paths", s.bdpt.light_paths);
+            m.set("connections", s.bdpt.connections);
+        }
         if (s.strategy_debug.strategies != 0) m.set("strategies", s.strategy_debug.strategies);  // a STRATEGY_* mask other than the integrator's own
         if (s.strategy_debug.strategy_s >= 0) {  // one strategy alone (--strategies DIR)
             m.set("strategy_s", s.strategy_debug.strategy_s);

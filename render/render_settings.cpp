@@ -6,6 +6,7 @@
 #include "common/input_error.hpp"
 #include "ibl/background_blur.hpp"
 #include "kernels/host.hpp"
+#include "render/light_cache.hpp"
 #include "render/option_words.hpp"
 
 namespace lab::render {
@@ -46,6 +47,9 @@ void check_render_settings(const RenderSettings& settings) {
     if (integrator_descriptor(settings.integrator).bidirectional() && settings.max_depth > kBdptMaxDepth)
         throw InputError("--max-depth", "", std::string(integrator_name(settings.integrator)) + " takes at most " +
                                                 std::to_string(kBdptMaxDepth) + " scattering events, got " + std::to_string(settings.max_depth));
+    check_light_cache_settings(settings);
+    if (!(settings.bdpt.connection_roulette >= 0.0f && settings.bdpt.connection_roulette < 1.0f))
+        throw InputError("--connection-roulette", "", "must be a weight in [0, 1)");
     if (settings.opencl.local_size < 0 || settings.opencl.local_size > 4096)
         throw InputError("local size", "", "must be in [0, 4096], got " + std::to_string(settings.opencl.local_size));
     if (settings.max_steps < 1 || settings.max_steps > 1 << 20)

@@ -148,6 +148,11 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     launch_settings.bdpt.scene_center[1] = compiled_.bounds_center.y;
     launch_settings.bdpt.scene_center[2] = compiled_.bounds_center.z;
     launch_settings.bdpt.scene_radius = std::max(compiled_.bounds_radius, 1e-3f);
+    // one sample of each strategy per camera subpath; the light-vertex cache's renderers set its
+    // own counts (set_light_cache_weights) from their pilot pool
+    launch_settings.bdpt.light_tracing_samples = 1.0f;
+    launch_settings.bdpt.connection_samples = 1.0f;
+    launch_settings.bdpt.connection_roulette = s.bdpt.connection_roulette;
     for (int i = 0; i < 3; ++i) {
         launch_settings.surface_lo[i] = compiled_.surface_lo[i];
         launch_settings.surface_hi[i] = compiled_.surface_hi[i];

@@ -30,6 +30,25 @@ TEST_CASE("Closed forms: BDPT on the host gives the exact pixel values", "[rende
     }
 }
 
+// The same with the light-vertex cache (bdpt-cache, its default counts: 36 light subpaths per sample
+// here), and with bdpt's connection roulette at W = 0.2 (connections of weight below 0.2 trace their
+// ray with probability w / 0.2 and count 1 / that): both are unbiased, so the exact values hold.
+TEST_CASE("Closed forms: bdpt-cache, and BDPT with connection roulette, on the host give the exact pixel values",
+          "[render][closed-form][bdpt][host]") {
+    for (const Case& c : cases()) {
+        lab::render::HostRenderer cache(bdpt_input(c, lab::render::Integrator::bdpt_cache, 12));
+        INFO("bdpt-cache");
+        check_case(c, LightSelection::power, cache, 512);
+    }
+    for (const Case& c : cases()) {
+        lab::render::RenderInput input = bdpt_input(c, lab::render::Integrator::bdpt, 12);
+        input.settings.bdpt.connection_roulette = 0.2f;
+        lab::render::HostRenderer roulette(input);
+        INFO("bdpt, connection roulette 0.2");
+        check_case(c, LightSelection::power, roulette, 512);
+    }
+}
+
 // The light tracer's estimate is far noisier per path (every path splats wherever it lands): it
 // needs 16 times BDPT's paths for the same standard error, which the compiled kernel gives faster.
 // The first two cases: under an environment it has no strategy for a camera ray that escapes, and

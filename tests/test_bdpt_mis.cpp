@@ -1,6 +1,9 @@
 // BDPT's MIS weights (kernels/bdpt_mis.h) on paths the real walks made (kernels/bdpt_walk.h, on the
 // host build of the kernels over a real scene): for every path, the weights of all the strategies
-// that can make it sum to 1, with the balance and the power heuristic, over every strategy mask.
+// that can make it sum to 1, with the balance and the power heuristic, over every strategy mask,
+// and with the light-vertex cache's sample counts (kernels/bdpt_cache.h: N_L / N_pixels light
+// subpaths per camera subpath for t = 1, M / (connectable vertices per light subpath) connections
+// to a given light vertex for s >= 2, t >= 2) as render/light_cache.cpp sets them.
 //
 // The paths come from the walks themselves, with the densities the walks recorded:
 //  - camera subpaths that reach a light (an emissive sphere or the environment): the path is the
@@ -24,6 +27,7 @@
 #include "render/camera_setup.hpp"
 #include "render/host_kernels.hpp"
 #include "render/host_renderer.hpp"
+#include "render/light_cache.hpp"
 #include "render/light_set.hpp"
 #include "tests/render_inputs.hpp"
 
@@ -185,8 +189,24 @@ struct Totals {
 };
 
 // The weights of every strategy of the mask that can make the path `walked` (one walk's subpath that
-// is a whole path) sum to 1.
+// is a whole path) sum to 1, with bdpt's sample counts (one of each strategy) and the light-vertex
+// cache's: a pool of a quarter of the pixels with 3 connections, and of 4 times the pixels with 1,
+// over pilots of 0.6 and 2.5 connectable vertices per light subpath.
 void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_is_camera, Totals* totals) {
+    kernel::RenderKernelSettings counts[3] = {f.settings, f.settings, f.settings};
+    const struct {
+        float light_paths;
+        int connections;
+        double vertices_per_path;
+    } kCaches[2] = {{0.25f, 3, 0.6}, {4.0f, 1, 2.5}};
+    for (int c = 0; c < 2; ++c) {
+        lab::render::RenderSettings cache = f.input.settings;
+        cache.integrator = lab::render::Integrator::bdpt_cache;
+        cache.bdpt.light_paths = kCaches[c].light_paths;
+        cache.bdpt.connections = kCaches[c].connections;
+        const double paths = lab::render::light_cache_paths(cache);
+        lab::render::set_light_cache_weights(cache, uint64_t(kCaches[c].vertices_per_path * paths), &counts[c + 1]);
+    }
     const int n = int(walked.size());
     Split whole;
     split_off(f, walked, walked_is_camera ? 0 : n, walked_is_camera, &whole);
@@ -194,32 +214,37 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
     const double slack = geometric_slack(x);
     bool any_delta = false;
     for (const PathVertex& v : x) any_delta = any_delta || v.delta;
-    for (int heuristic : {MIS_BALANCE, MIS_POWER})
-        for (int mask : {STRATEGY_ALL, STRATEGY_S0 | STRATEGY_S1, STRATEGY_T1, STRATEGY_S1 | STRATEGY_S2 | STRATEGY_T1, STRATEGY_S0 | STRATEGY_S2}) {
-            f.settings.bdpt.mis_heuristic = heuristic;
-            f.settings.bdpt.strategies = mask;
-            double sum = 0.0;
-            bool any = false;
-            for (int s = 0; s < n; ++s) {
-                const int t = n - s;
-                if (!can_make(f, x, s, t) || !bdpt_strategy_enabled(mask, s, t)) continue;
-                Split split;
-                split_off(f, walked, walked_is_camera ? t : s, walked_is_camera, &split);
-                // the connection's endpoints and their neighbours carry densities of their walk's own
-                // continuation, not of this connection: the weight must not read them
-                for (int i = std::max(0, s - 2); i < s; ++i) split.light[size_t(i)].pdf_rev = 123.0f;
-                for (int i = std::max(0, t - 2); i < t; ++i) split.cam[size_t(i)].pdf_rev = 321.0f;
-                PathVertex sampled = s == 1 ? split.light[0] : split.cam[0];
-                sum += bdpt_mis_weight(&f.settings, &f.camera, &f.scene, split.light.data(), split.cam.data(), &sampled, s, t);
-                any = true;
+    for (const kernel::RenderKernelSettings& with_counts : counts) {
+        for (int heuristic : {MIS_BALANCE, MIS_POWER})
+            for (int mask : {STRATEGY_ALL, STRATEGY_S0 | STRATEGY_S1, STRATEGY_T1, STRATEGY_S1 | STRATEGY_S2 | STRATEGY_T1, STRATEGY_S0 | STRATEGY_S2}) {
+                f.settings.bdpt.mis_heuristic = heuristic;
+                f.settings.bdpt.strategies = mask;
+                f.settings.bdpt.light_tracing_samples = with_counts.bdpt.light_tracing_samples;
+                f.settings.bdpt.connection_samples = with_counts.bdpt.connection_samples;
+                double sum = 0.0;
+                bool any = false;
+                for (int s = 0; s < n; ++s) {
+                    const int t = n - s;
+                    if (!can_make(f, x, s, t) || !bdpt_strategy_enabled(mask, s, t)) continue;
+                    Split split;
+                    split_off(f, walked, walked_is_camera ? t : s, walked_is_camera, &split);
+                    // the connection's endpoints and their neighbours carry densities of their walk's own
+                    // continuation, not of this connection: the weight must not read them
+                    for (int i = std::max(0, s - 2); i < s; ++i) split.light[size_t(i)].pdf_rev = 123.0f;
+                    for (int i = std::max(0, t - 2); i < t; ++i) split.cam[size_t(i)].pdf_rev = 321.0f;
+                    PathVertex sampled = s == 1 ? split.light[0] : split.cam[0];
+                    sum += bdpt_mis_weight(&f.settings, &f.camera, &f.scene, split.light.data(), split.cam.data(), &sampled, s, t);
+                    any = true;
+                }
+                if (!any) continue;
+                INFO((walked_is_camera ? "camera" : "light") << " subpath of " << n << " vertices, light type " << x[0].type
+                                                              << ", heuristic " << heuristic << ", mask " << mask << ", samples of t = 1 "
+                                                              << f.settings.bdpt.light_tracing_samples << " and of s >= 2 "
+                                                              << f.settings.bdpt.connection_samples << ": sum " << sum << ", slack " << slack);
+                // float rounding of the ratios' running products, plus what the recorded directions allow
+                CHECK(std::fabs(sum - 1.0) <= 1e-4 + slack);
             }
-            if (!any) continue;
-            INFO((walked_is_camera ? "camera" : "light") << " subpath of " << n << " vertices, light type " << x[0].type
-                                                          << ", heuristic " << heuristic << ", mask " << mask << ": sum " << sum
-                                                          << ", slack " << slack);
-            // float rounding of the ratios' running products, plus what the recorded directions allow
-            CHECK(std::fabs(sum - 1.0) <= 1e-4 + slack);
-        }
+    }
     totals->paths += 1;
     totals->delta += any_delta ? 1 : 0;
     if (x[0].type == VERTEX_ENVIRONMENT) {

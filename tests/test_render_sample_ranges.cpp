@@ -9,11 +9,12 @@
 // What n is, counted from the render's settings and never from its output:
 // - film.sum: a pixel's own samples, one term each, added by its work-item in sample order (a
 //   sample's strategies are summed before it is added): n = samples per pixel.
-// - film.splat (bdpt, lt): t = 1 connections, added by float atomics in the order they arrive from
-//   every work-item. A sample makes at most one per light-subpath vertex, max_vertices - 1, and
+// - film.splat (bdpt, lt, bdpt-cache): t = 1 connections, added by float atomics in the order they
+//   arrive from every work-item. A light subpath makes at most one per vertex, max_vertices - 1, and
 //   each may land on any pixel, so a pixel's splat is a sum of at most
-//   width x height x samples x (max_vertices - 1) terms (a loose count, but one that holds for
-//   every pixel whatever the arrival order). Every term is radiance, non-negative. The path tracer
+//   light subpaths per sample x samples x (max_vertices - 1) terms, the light subpaths per sample
+//   one per pixel for bdpt and lt, the cache's N_L for bdpt-cache (a loose count, but one that
+//   holds for every pixel whatever the arrival order). Every term is radiance, non-negative. The path tracer
 //   splats nothing: n = 0, and the splats must be equal.
 #include <catch2/catch.hpp>
 
@@ -28,6 +29,7 @@
 #include <unistd.h>
 
 #include "common/input_error.hpp"
+#include "render/light_cache.hpp"
 #include "opencl/runtime.hpp"
 #include "render/film_file.hpp"
 #include "render/film_resolve.hpp"
@@ -95,7 +97,9 @@ struct SumTerms {
 SumTerms sum_terms(const lab::render::RenderSettings& s, int samples) {
     SumTerms terms;
     terms.own = samples;
-    if (lab::render::integrator_descriptor(s.integrator).splats()) terms.splat = double(s.width) * s.height * samples * (lab::render::bdpt_max_vertices(s) - 1);
+    const lab::render::IntegratorDescriptor& integrator = lab::render::integrator_descriptor(s.integrator);
+    const double light_paths = integrator.light_cache ? double(lab::render::light_cache_paths(s)) : double(s.width) * s.height;
+    if (integrator.splats()) terms.splat = light_paths * samples * (lab::render::bdpt_max_vertices(s) - 1);
     return terms;
 }
 
@@ -287,7 +291,7 @@ TEST_CASE("Sample ranges on the OpenCL device: merged parts equal one run to flo
 
 TEST_CASE("Sample ranges with BDPT and light tracing on the host build: merged parts equal one run to float rounding, splats included",
           "[render][sample-ranges][bdpt][host]") {
-    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt}) {
+    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache}) {
         INFO(lab::render::integrator_name(integrator));
         check_split_and_resume([&] { return std::make_unique<lab::render::HostRenderer>(bidirectional_input(integrator), 2); });
     }
@@ -296,7 +300,7 @@ TEST_CASE("Sample ranges with BDPT and light tracing on the host build: merged p
 TEST_CASE("Sample ranges with BDPT and light tracing on the OpenCL device: merged parts equal one run to float rounding, splats included",
           "[render][sample-ranges][bdpt][opencl]") {
     lab::opencl::Runtime runtime("");
-    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt}) {
+    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache}) {
         INFO(lab::render::integrator_name(integrator));
         check_split_and_resume([&] { return std::make_unique<lab::render::OpenClRenderer>(runtime, bidirectional_input(integrator)); });
     }
@@ -329,6 +333,13 @@ TEST_CASE("Render metadata: BDPT's vertex limit, MIS heuristic and strategies ar
     CHECK(text(one_strategy, "strategy_t") == "1");
     CHECK(text(one_strategy, "mis_weighted") == "0");
     CHECK(metadata_of(bidirectional_input(Integrator::pt)).find("mis_heuristic") == nullptr);  // the path tracer has none
+    CHECK(bdpt.find("light_paths") == nullptr);  // the light-vertex cache's alone
+    lab::render::RenderInput cache_input = bidirectional_input(Integrator::bdpt_cache);
+    cache_input.settings.bdpt.light_paths = 0.5f;
+    cache_input.settings.bdpt.connections = 3;
+    const lab::film::ImageMetadata cache = metadata_of(cache_input);
+    CHECK(text(cache, "light_paths") == lab::film::metadata_text(lab::film::MetadataValue(0.5f)));
+    CHECK(text(cache, "connections") == "3");
 
     // merge and --resume compare every field but those that differ between parts of one render
     FilmFile part;
@@ -341,6 +352,12 @@ TEST_CASE("Render metadata: BDPT's vertex limit, MIS heuristic and strategies ar
         part.metadata = bdpt;
         part.metadata.values[key] = value;
         CHECK_THROWS_WITH(lab::render::check_same_render("a.exr", bdpt, 16, 16, part), Catch::StartsWith("b.exr: dtoadq:" + key + ": "));
+    }
+    for (const auto& [key, value] : std::vector<std::pair<std::string, lab::film::MetadataValue>>{{"light_paths", 2.0f}, {"connections", 1}}) {
+        INFO(key);
+        part.metadata = cache;
+        part.metadata.values[key] = value;
+        CHECK_THROWS_WITH(lab::render::check_same_render("a.exr", cache, 16, 16, part), Catch::StartsWith("b.exr: dtoadq:" + key + ": "));
     }
     part.metadata = bdpt;
     part.metadata.set("seconds", 99.0f);  // differs between parts: fine

@@ -322,7 +322,7 @@ cli_bad_input(NAME bench_breakdown.bad_repeats EXPECT "${E}--repeats: must be in
 set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_scene\\.json: cannot open"
               ARGS render ${D}/absent_scene.json --size 16x16 --spp 1 -o ${PNG})
-cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"vcm\" \\(pt, bdpt, lt\\)$"
+cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"vcm\" \\(pt, bdpt, lt, bdpt-cache\\)$"
               ARGS ${RENDER} --integrator vcm)
 cli_bad_input(NAME render.bdpt_max_depth ABSENT ${PNG} EXPECT "${E}--max-depth: bdpt takes at most 62 scattering events, got 63$"
               ARGS ${RENDER} --integrator bdpt --max-depth 63)
@@ -338,9 +338,18 @@ cli_bad_input(NAME render.lt_emissive_material ABSENT ${PNG}
 cli_bad_input(NAME render.lt_environment ABSENT ${PNG}
               EXPECT "${E}scenes/metaballs\\.json: --integrator: lt cannot render an environment light .*: use --integrator bdpt or pt$"
               ARGS ${RENDER} --integrator lt --env constant:1,1,1)
+cli_bad_input(NAME render.cache_light_paths ABSENT ${PNG}
+              EXPECT "${E}--light-paths: light subpaths per pixel must be in .0, 16., got 0$"
+              ARGS ${RENDER} --integrator bdpt-cache --light-paths 0)
+cli_bad_input(NAME render.cache_connections ABSENT ${PNG} EXPECT "${E}--connections: must be in \\[1, 64\\], got 65$"
+              ARGS ${RENDER} --integrator bdpt-cache --connections 65)
+cli_bad_input(NAME render.cache_too_large ABSENT ${PNG} EXPECT "${E}--light-paths: the light-vertex cache would take 2176 MiB .*"
+              ARGS render scenes/metaballs.json --size 1024x1024 --spp 1 -o ${PNG} --integrator bdpt-cache --light-paths 1)
+cli_bad_input(NAME render.connection_roulette ABSENT ${PNG} EXPECT "${E}--connection-roulette: must be a weight in .0, 1.$"
+              ARGS ${RENDER} --integrator bdpt --connection-roulette 1)
 cli_bad_input(NAME render.unknown_mis ABSENT ${PNG} EXPECT "${E}--mis: unknown value \"max\" \\(balance, power\\)$"
               ARGS ${RENDER} --integrator bdpt --mis max)
-cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt or lt"
+cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt, lt or bdpt-cache"
               ARGS ${RENDER} --strategies ${CLI_SCRATCH}/strategies_pt)
 # the --strategies folder is checked before the render (nothing is written), and a folder the check
 # made is removed when another input error stops the command
@@ -400,6 +409,10 @@ add_test(NAME cli.render.strategy_images
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/strategy_images -DSOURCE=${PROJECT_SOURCE_DIR}
                  -P ${CLI_TEST_DIR}/expect_strategy_images.cmake)
 set_tests_properties(cli.render.strategy_images PROPERTIES LABELS cli TIMEOUT 120)
+add_test(NAME cli.render.strategy_images_cache
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:dtoadq> -DWORK=${CLI_SCRATCH}/strategy_images_cache -DSOURCE=${PROJECT_SOURCE_DIR}
+                 -DINTEGRATOR=bdpt-cache -P ${CLI_TEST_DIR}/expect_strategy_images.cmake)
+set_tests_properties(cli.render.strategy_images_cache PROPERTIES LABELS cli TIMEOUT 120)
 
 # --- a render split by sample range (render --samples A:B), merged (dtoadq merge) and resumed ----
 add_test(NAME cli.render.split_merge_resume
