@@ -72,9 +72,10 @@ SS_FN float bdpt_strategy_samples(const BdptKernelSettings* bdpt, int s, int t) 
     return s >= 2 ? bdpt->connection_samples : 1.0f;
 }
 
-/* One number per strategy, s * 32 + t (t < 32: a path has at most BDPT_VERTEX_LIMIT vertices, and
- * t = 0 never runs): BdptKernelSettings.single_strategy names the one strategy a render adds
- * alone, and 1 + the code is the random-number stream of the strategy's own light and lens samples. */
-SS_FN int bdpt_strategy_code(int s, int t) { return s * 32 + t; }
+/* One number per strategy, s * (BDPT_VERTEX_LIMIT + 1) + t, distinct for every (s, t) a path can
+ * have (s + t <= BDPT_VERTEX_LIMIT, so t <= BDPT_VERTEX_LIMIT; t = 0 never runs):
+ * BdptKernelSettings.single_strategy names the one strategy a render adds alone, and 1 + the code
+ * is the random-number stream of the strategy's own light and lens samples. */
+SS_FN int bdpt_strategy_code(int s, int t) { return s * (BDPT_VERTEX_LIMIT + 1) + t; }
 
 #endif

@@ -32,7 +32,9 @@ TEST_CASE("Closed forms: BDPT on the host gives the exact pixel values", "[rende
 
 // The same with the light-vertex cache (bdpt-cache, its default counts: 36 light subpaths per sample
 // here), and with bdpt's connection roulette at W = 0.2 (connections of weight below 0.2 trace their
-// ray with probability w / 0.2 and count 1 / that): both are unbiased, so the exact values hold.
+// ray with probability w / 0.2 and count 1 / that): both are unbiased, so the exact values hold. The
+// roulette's variance takes 768 samples to meet the standard-error requirement on the black sphere's
+// scene (512 leave it within 1 % of the bound, on one side or the other with the random streams).
 TEST_CASE("Closed forms: bdpt-cache, and BDPT with connection roulette, on the host give the exact pixel values",
           "[render][closed-form][bdpt][host]") {
     for (const Case& c : cases()) {
@@ -45,7 +47,7 @@ TEST_CASE("Closed forms: bdpt-cache, and BDPT with connection roulette, on the h
         input.settings.bdpt.connection_roulette = 0.2f;
         lab::render::HostRenderer roulette(input);
         INFO("bdpt, connection roulette 0.2");
-        check_case(c, LightSelection::power, roulette, 512);
+        check_case(c, LightSelection::power, roulette, 768);
     }
 }
 

@@ -300,3 +300,11 @@ TEST_CASE("BDPT: the MIS weights of all strategies that can make a walked path s
 }
 
 }  // namespace bdpt_mis_test
+
+TEST_CASE("BDPT: every strategy a path can have gets a code of its own (its --strategies image and random stream)", "[render][bdpt][mis]") {
+    std::vector<int> codes;
+    for (int s = 0; s <= BDPT_VERTEX_LIMIT; ++s)
+        for (int t = 1; s + t <= BDPT_VERTEX_LIMIT; ++t) codes.push_back(kernel::bdpt_strategy_code(s, t));
+    std::sort(codes.begin(), codes.end());
+    CHECK(std::adjacent_find(codes.begin(), codes.end()) == codes.end());
+}
