@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 
 #include "common/input_error.hpp"
 
@@ -50,6 +51,12 @@ void check_image_claim(const std::string& path, const Header& header, uint64_t f
     if (memory_bytes > 0 && needed > memory_bytes / 2)
         throw InputError(path, "size",
                          size + " needs " + bytes_text(needed) + " to read, more than half of this machine's " + bytes_text(memory_bytes));
+}
+
+void check_image_file_claim(const std::string& path, const Header& header, int floats_per_pixel) {
+    std::error_code error;
+    const uintmax_t file_bytes = std::filesystem::file_size(path, error);
+    check_image_claim(path, header, error ? 0 : uint64_t(file_bytes), floats_per_pixel, physical_memory_bytes());
 }
 
 }  // namespace lab::codec

@@ -32,4 +32,8 @@ uint64_t physical_memory_bytes();
 // than half of `memory_bytes` (0: unbounded).
 void check_image_claim(const std::string& path, const Header& header, uint64_t file_bytes, int floats_per_pixel, uint64_t memory_bytes);
 
+// The same for the file at `path` as it is (its size, 0 when it cannot be told) on this machine
+// (physical_memory_bytes): what a reader calls between opening a file and allocating its pixels.
+void check_image_file_claim(const std::string& path, const Header& header, int floats_per_pixel);
+
 }  // namespace lab::codec

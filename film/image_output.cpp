@@ -121,9 +121,7 @@ int channel_index(const codec::Header& header, const std::string& name) {
 // from them, which the claim check (common/image_claim.hpp) counts before anything is allocated.
 std::vector<float> read_all_channels(const std::string& path, codec::ImageFile& in, size_t kept_per_pixel) {
     const codec::Header& h = in.header();
-    std::error_code ec;
-    const uintmax_t file_bytes = fs::file_size(path, ec);
-    codec::check_image_claim(path, h, ec ? 0 : uint64_t(file_bytes), h.channels + int(kept_per_pixel), codec::physical_memory_bytes());
+    codec::check_image_file_claim(path, h, h.channels + int(kept_per_pixel));
     std::vector<float> all(size_t(h.width) * size_t(h.height) * size_t(h.channels));
     std::string error;
     if (!in.read(h.channels, all.data(), &error)) throw InputError(path, "", "cannot read: " + error);

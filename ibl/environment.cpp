@@ -185,9 +185,7 @@ LatLongImage read_latlong_image(const std::string& path) {
 
     const int used = channels == 1 ? 1 : 3;
     // what is read, and for grey the RGB image made from it besides, before a pixel is allocated
-    std::error_code size_error;
-    const uintmax_t file_bytes = fs::file_size(path, size_error);
-    codec::check_image_claim(path, header, size_error ? 0 : uint64_t(file_bytes), used == 1 ? 4 : 3, codec::physical_memory_bytes());
+    codec::check_image_file_claim(path, header, used == 1 ? 4 : 3);
     std::vector<float> pixels(size_t(width) * height * used);
     if (!input->read(used, pixels.data(), &error)) throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
     std::vector<std::string> names(header.channel_names.begin(), header.channel_names.begin() + used);
