@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -13,6 +12,7 @@
 #include "common/image_claim.hpp"
 #include "common/image_codec.hpp"
 #include "common/input_error.hpp"
+#include "common/message_number.hpp"
 #include "ibl/distribution.hpp"
 
 namespace lab::ibl {
@@ -22,18 +22,12 @@ static_assert(int64_t(CUBEMAP_FACES) * kMaxFaceSize * (kMaxFaceSize + 1) <= INT3
 
 namespace {
 
-std::string number_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-
 void validate(const EnvironmentOptions& options) {
     if (!std::isfinite(options.rotation_degrees))
         throw InputError(options.origin, "rotation_degrees", "not a finite number");
     if (!(std::fabs(options.exposure_stops) <= kMaxExposureStops))
         throw InputError(options.origin, "exposure_stops",
-                         "must be a number in [-64, 64], got " + number_text(options.exposure_stops));
+                         "must be a number in [-64, 64], got " + message_number(options.exposure_stops));
     if (options.face_size < 0 || options.face_size > kMaxFaceSize)
         throw InputError(options.origin, "face_size",
                          "must be in [1, 4096] (0: automatic), got " + std::to_string(options.face_size));
@@ -136,8 +130,8 @@ void Environment::set_transform(float rotation_degrees, float exposure_stops) {
     float intensity = std::exp2(exposure_stops);
     // Radiance is texel x intensity in float (ibl/environment.h): it must stay finite.
     if (!std::isfinite(brightest_ * intensity))
-        throw InputError(source_, "exposure", "the brightest radiance, " + number_text(brightest_) + ", times 2^" +
-                                                  number_text(exposure_stops) + " overflows a 32-bit float");
+        throw InputError(source_, "exposure", "the brightest radiance, " + message_number(brightest_) + ", times 2^" +
+                                                  message_number(exposure_stops) + " overflows a 32-bit float");
     rotation(rotation_degrees, &map_.rotation_cos, &map_.rotation_sin);
     map_.intensity = intensity;
     rotation_degrees_ = rotation_degrees;

@@ -2,22 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "common/input_error.hpp"
+#include "common/message_number.hpp"
 
 namespace lab::render {
-
-namespace {
-
-std::string number_text(float value) {
-    std::ostringstream text;
-    text << value;
-    return text.str();
-}
-
-}  // namespace
 
 int light_cache_paths(const RenderSettings& settings) {
     const double pixels = double(settings.width) * double(settings.height);
@@ -40,7 +30,7 @@ void set_light_cache_weights(const RenderSettings& settings, uint64_t pilot_vert
 void check_light_cache_settings(const RenderSettings& settings) {
     const float ratio = settings.bdpt.light_paths;
     if (!(ratio > 0.0f && ratio <= kMaxLightPathsPerPixel))
-        throw InputError("--light-paths", "", "light subpaths per pixel must be in (0, 16], got " + number_text(ratio));
+        throw InputError("--light-paths", "", "light subpaths per pixel must be in (0, 16], got " + message_number(ratio));
     if (settings.bdpt.connections < 1 || settings.bdpt.connections > kMaxConnections)
         throw InputError("--connections", "", "must be in [1, 64], got " + std::to_string(settings.bdpt.connections));
     if (integrator_descriptor(settings.integrator).light_cache && light_cache_bytes(settings) > kMaxLightCacheBytes)
