@@ -167,13 +167,6 @@ SS_FN float3 bdpt_strategy_contribution(const RenderKernelSettings* settings, Ma
 /* The most vertices of this kernel's paths: the settings' max_vertices, within the private arrays. */
 SS_FN int bdpt_kernel_max_vertices(const RenderKernelSettings* settings) { return min(max(settings->bdpt.max_vertices, 2), BDPT_MAX_VERTICES); }
 
-SS_FN PathCounters bdpt_counters_zero(void) {
-    PathCounters counters;
-    counters.rays = 0u;
-    counters.lost_rays = 0u;
-    return counters;
-}
-
 /* A sample's own-pixel radiance l into the pixel's sums; a sample with a non-finite contribution
  * or weight only counted in sum.w (the film divides by the finite samples). */
 SS_FN void bdpt_add_sample(float4* sum, float4* square_sum, float3 l, bool finite) {
@@ -204,7 +197,7 @@ SS_FN void bdpt_pixel(const RenderKernelSettings* settings, const Camera* camera
                       GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
     float4 sum = accumulation[pixel], square_sum = squares[pixel];
-    PathCounters counters = bdpt_counters_zero();
+    PathCounters counters = path_counters_zero();
     int max_vertices = bdpt_kernel_max_vertices(settings);
     PathVertex cam[BDPT_MAX_VERTICES];
     PathVertex light[BDPT_MAX_VERTICES];

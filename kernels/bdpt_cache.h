@@ -42,7 +42,7 @@ SS_FN void bdpt_cache_light_path(const RenderKernelSettings* settings, const Cam
                                  GLOBAL_MEM PathVertex* cache, GLOBAL_MEM int* lengths, GLOBAL_MEM uint* offsets, GLOBAL_MEM uint* splat,
                                  int splats, GLOBAL_MEM uint* ray_counts, GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
-    PathCounters counters = bdpt_counters_zero();
+    PathCounters counters = path_counters_zero();
     int slots = bdpt_kernel_max_vertices(settings) - 1; /* a light subpath's most vertices */
     uint sample = (uint)settings->first_sample;
     PathVertex light[BDPT_MAX_VERTICES];
@@ -87,7 +87,7 @@ SS_FN void bdpt_cache_pixel(const RenderKernelSettings* settings, const Camera* 
                             int connections, GLOBAL_MEM float4* accumulation, GLOBAL_MEM float4* squares, GLOBAL_MEM uint* ray_counts,
                             GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
-    PathCounters counters = bdpt_counters_zero();
+    PathCounters counters = path_counters_zero();
     int max_vertices = bdpt_kernel_max_vertices(settings);
     int slots = max_vertices - 1;
     uint sample = (uint)settings->first_sample;

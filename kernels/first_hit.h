@@ -45,9 +45,7 @@ SS_FN FirstHit first_hit_sample(const RenderKernelSettings* settings, const Came
     Rng rng = rng_make((uint)pixel, (uint)sample, settings->seed_lo, settings->seed_hi);
     float3 origin, direction;
     camera_pixel_ray(camera, pixel, &rng, &origin, &direction);
-    PathCounters counters;
-    counters.rays = 0u;
-    counters.lost_rays = 0u;
+    PathCounters counters = path_counters_zero();
     MarchResult r = trace_ray(origin, direction, march_settings, &counters);
     if (r.status != MARCH_HIT) return h;
     SurfaceHit hit = surface_hit(settings, march_settings, origin, direction, r.t, scene_distance(origin) < 0.0f);

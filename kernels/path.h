@@ -19,6 +19,13 @@ typedef struct PathCounters {
     uint lost_rays; /* marches that ran out of steps (treated as escaping, or as shadowed) */
 } PathCounters;
 
+SS_FN PathCounters path_counters_zero(void) {
+    PathCounters counters;
+    counters.rays = 0u;
+    counters.lost_rays = 0u;
+    return counters;
+}
+
 /* A march in the per-pixel counters. */
 SS_FN void count_march(MarchResult r, PathCounters* counters) {
 #ifdef SCENE_COUNT_EVALUATIONS

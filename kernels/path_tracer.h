@@ -270,9 +270,7 @@ SS_FN void path_tracer_pixel(const RenderKernelSettings* settings, const Camera*
                              GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
     float4 sum = accumulation[pixel], square_sum = squares[pixel];
-    PathCounters counters;
-    counters.rays = 0u;
-    counters.lost_rays = 0u;
+    PathCounters counters = path_counters_zero();
     for (int i = 0; i < settings->sample_count; ++i) {
         Rng rng = rng_make((uint)pixel, (uint)(settings->first_sample + i), settings->seed_lo, settings->seed_hi);
         float3 origin, direction;

@@ -215,9 +215,7 @@ SS_FN SS_INLINE_ALWAYS void path_tracer_step(const RenderKernelSettings* setting
     prefetch_step_environment(settings, scene, states, camera_rngs, stride, ray_marches, path + WAVEFRONT_PREFETCH_AHEAD, paths, true, first);
     if (!first && !states[path].active && !states[path].shadow.pending) return; /* finished at an earlier step */
     MarchSettings march_settings = render_march_settings(settings);
-    PathCounters counters;
-    counters.rays = 0u;
-    counters.lost_rays = 0u;
+    PathCounters counters = path_counters_zero();
     PathState p;
     if (first) {
         float3 origin, direction;
