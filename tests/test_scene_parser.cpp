@@ -175,7 +175,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
         {"/emitters/0/center", "[0, 1]",
          "scenes/x.json: emitters[0].center: expected an array of 3 numbers"},
         {"/emitters/0/type", R"("spot")",
-         "scenes/x.json: emitters[0].type: unknown emitter type \"spot\" (expected one of: sphere, point)"},
+         "scenes/x.json: emitters[0].type: unknown emitter type \"spot\" (expected one of: sphere, rect, disk, point)"},
         {"/emitters/0/type", "1",
          "scenes/x.json: emitters[0].type: expected a string, got number"},
         {"/emitters/0/material", R"("silver")",
@@ -222,7 +222,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
     Json empty = base_scene();
     empty["objects"] = Json::array();
     empty["emitters"] = Json::array();
-    CHECK(error_of_text(empty.dump()) == "scenes/x.json: the scene has no objects and no emissive spheres (point lights are not geometry)");
+    CHECK(error_of_text(empty.dump()) == "scenes/x.json: the scene has no objects and no emitters (point lights are not geometry)");
 }
 
 TEST_CASE("scene parser: malformed JSON, overflow, NaN and duplicate keys", "[scene]") {
