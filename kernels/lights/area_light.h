@@ -46,6 +46,12 @@ SS_FN float3 area_light_sample_area(const Light* l, float2 u, float3* normal) {
     return area_light_center(l) + area_light_u(l) * xy.x + area_light_v(l) * xy.y;
 }
 
+/* A point this much (in its coordinates along U and V) outside the light still counts as on it: a
+ * sample drawn at the very edge, found again along its float direction, must find the density it was
+ * drawn with. It widens the density's support by a relative 1e-5 of the light's size, so the pdf
+ * integrates to at most 1 + 4e-5. */
+#define AREA_LIGHT_EDGE_TOLERANCE 1e-5f
+
 /* Whether the point q of the light's plane lies on it: its coordinates x, y along U and V (from the
  * dual vectors V x N / |N|^2 and N x U / |N|^2, N = U x V) within the rect or the unit disk. */
 SS_FN bool area_light_contains(const Light* l, float3 q) {
@@ -54,7 +60,8 @@ SS_FN bool area_light_contains(const Light* l, float3 q) {
     float3 d = q - area_light_center(l);
     float inv = 1.0f / dot(n, n);
     float x = dot(d, cross(v, n)) * inv, y = dot(d, cross(n, u)) * inv;
-    return l->type == LIGHT_DISK ? x * x + y * y <= 1.0f : fabs(x) <= 0.5f && fabs(y) <= 0.5f;
+    const float reach = 1.0f + AREA_LIGHT_EDGE_TOLERANCE;
+    return l->type == LIGHT_DISK ? x * x + y * y <= reach * reach : fabs(x) <= 0.5f * reach && fabs(y) <= 0.5f * reach;
 }
 
 /* The spherical rectangle the rect subtends from p, in the rect's frame (Urena et al. 2013, §3):
