@@ -106,6 +106,21 @@ struct ConeZoom {
     double jacobian() const { return active ? one_minus_cos_max : 1.0; }
 };
 
+// What every light sample from p promises beyond its point and normal: the pdf it carries is the
+// light's pdf of its direction (`pdf`, to 2e-4), distance is |position - p|, wi points at the point,
+// radiance is Le and it is no delta; the first broken promise, or empty. `scale` sets the tolerance
+// of lengths: the distance from p to the light's far side.
+std::string sample_promise_defect(const kernel::Light& l, const kernel::LightSample& ls, float3 p, float pdf, double scale, const std::string& what) {
+    const glm::dvec3 to_point = glm::dvec3(ls.position) - glm::dvec3(p);
+    if (!(std::fabs(pdf - ls.pdf) <= 2e-4f * ls.pdf)) return "sample pdf " + std::to_string(ls.pdf) + " but " + what + "_pdf " + std::to_string(pdf);
+    if (std::fabs(glm::length(to_point) - ls.distance) > 1e-5 * scale) return "distance is not |position - p|";
+    if (glm::length(glm::cross(glm::normalize(to_point), glm::dvec3(ls.wi))) * glm::length(to_point) > 1e-5 * scale)
+        return "wi does not point at the sampled point";
+    if (!(ls.radiance == float3(l.emission[0], l.emission[1], l.emission[2])) || ls.delta != 0)
+        return "radiance is not Le, or a " + what + " sample claims to be a delta";
+    return "";
+}
+
 // The sphere light's sampler as a direction sampler; each sample must keep the promises that
 // kernels/lights/light.h makes: the pdf it carries is sphere_light_pdf of its direction, its point
 // lies on the sphere with the outward normal, wi points at that point, distance is the distance.
@@ -116,22 +131,14 @@ validation::DirectionSampler sphere_sampler(const kernel::Light& l, float3 p, co
         if (!(ls.pdf > 0.0f)) return s;  // Failed
         s.kind = validation::SampleKind::Continuous;
         s.wi = zoom.forward(ls.wi);
-        const float pdf = kernel::sphere_light_pdf(&l, p, ls.wi);
         const glm::dvec3 c(l.position[0], l.position[1], l.position[2]);
-        const glm::dvec3 to_point = glm::dvec3(ls.position) - glm::dvec3(p);
         const double scale = glm::length(c - glm::dvec3(p)) + l.radius;
-        if (!(std::fabs(pdf - ls.pdf) <= 2e-4f * ls.pdf))
-            s.defect = "sample pdf " + std::to_string(ls.pdf) + " but sphere_light_pdf " + std::to_string(pdf);
-        else if (std::fabs(glm::length(glm::dvec3(ls.position) - c) - l.radius) > 1e-5 * scale)
+        if (std::fabs(glm::length(glm::dvec3(ls.position) - c) - l.radius) > 1e-5 * scale)
             s.defect = "sampled point off the sphere";
         else if (glm::length(glm::dvec3(ls.normal) - (glm::dvec3(ls.position) - c) / double(l.radius)) > 1e-3)
             s.defect = "normal is not the outward normal at the point";
-        else if (std::fabs(glm::length(to_point) - ls.distance) > 1e-5 * scale)
-            s.defect = "distance is not |position - p|";
-        else if (glm::length(glm::cross(glm::normalize(to_point), glm::dvec3(ls.wi))) * glm::length(to_point) > 1e-5 * scale)
-            s.defect = "wi does not point at the sampled point";
-        else if (!(ls.radiance == float3(l.emission[0], l.emission[1], l.emission[2])) || ls.delta != 0)
-            s.defect = "radiance is not Le, or a sphere sample claims to be a delta";
+        else
+            s.defect = sample_promise_defect(l, ls, p, kernel::sphere_light_pdf(&l, p, ls.wi), scale, "sphere_light");
         return s;
     };
 }
@@ -485,23 +492,15 @@ validation::DirectionSampler area_sampler(const kernel::Light& l, float3 p, cons
         if (!(ls.pdf > 0.0f)) return s;  // Failed
         s.kind = validation::SampleKind::Continuous;
         s.wi = zoom.forward(ls.wi);
-        const float pdf = kernel::area_light_pdf(&l, p, ls.wi);
-        const glm::dvec3 to_point = glm::dvec3(ls.position) - glm::dvec3(p);
         const double scale = glm::length(kAreaCenter - glm::dvec3(p)) + area_light_reach(l);
         const glm::dvec3 u_edge(l.edge_u[0], l.edge_u[1], l.edge_u[2]), v_edge(l.edge_v[0], l.edge_v[1], l.edge_v[2]);
         const glm::dvec3 n = glm::normalize(glm::cross(u_edge, v_edge));
-        if (!(std::fabs(pdf - ls.pdf) <= 2e-4f * ls.pdf))
-            s.defect = "sample pdf " + std::to_string(ls.pdf) + " but area_light_pdf " + std::to_string(pdf);
-        else if (std::fabs(glm::dot(glm::dvec3(ls.position) - kAreaCenter, n)) > 1e-5 * scale || !kernel::area_light_contains(&l, ls.position))
+        if (std::fabs(glm::dot(glm::dvec3(ls.position) - kAreaCenter, n)) > 1e-5 * scale || !kernel::area_light_contains(&l, ls.position))
             s.defect = "sampled point off the light";
         else if (glm::length(glm::dvec3(ls.normal) - n) > 1e-5)
             s.defect = "normal is not the emitting side's";
-        else if (std::fabs(glm::length(to_point) - ls.distance) > 1e-5 * scale)
-            s.defect = "distance is not |position - p|";
-        else if (glm::length(glm::cross(glm::normalize(to_point), glm::dvec3(ls.wi))) * glm::length(to_point) > 1e-5 * scale)
-            s.defect = "wi does not point at the sampled point";
-        else if (!(ls.radiance == float3(l.emission[0], l.emission[1], l.emission[2])) || ls.delta != 0)
-            s.defect = "radiance is not Le, or an area sample claims to be a delta";
+        else
+            s.defect = sample_promise_defect(l, ls, p, kernel::area_light_pdf(&l, p, ls.wi), scale, "area_light");
         return s;
     };
 }
