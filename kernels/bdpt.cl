@@ -54,6 +54,28 @@ __kernel void render_bdpt_cache(RenderKernelSettings settings, Camera camera, En
     int pixel = first_pixel + (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
     RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
-    bdpt_cache_pixel(&settings, &camera, &scene, pixel, cache, lengths, offsets, paths, connections, accumulation, squares, ray_counts,
-                     lost_ray_counts);
+    bdpt_cache_pixel(&settings, &camera, &scene, pixel, cache, lengths, offsets, paths, connections, 0, 0, 0u, accumulation, squares,
+                     ray_counts, lost_ray_counts);
+}
+
+/* vcm (kernels/vcm.h): the cache's passes, the hash grid built over the pool between the light and
+ * camera passes by one work-item (in the cache's order: the same entries on every device), then the
+ * camera pass with merging. */
+__kernel void render_vcm_grid(RenderKernelSettings settings, __global const PathVertex* cache, __global const int* lengths, int paths,
+                              __global uint* cells, __global uint* entries, uint size) {
+    if (get_global_id(0) == 0) vcm_build_grid(&settings, cache, lengths, paths, cells, entries, size);
+}
+
+__kernel void render_vcm(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
+                         __global const AliasEntry* env_alias, __global const Material* materials, __global const float* tables,
+                         __global const float4* emission, __global const Light* lights, __global const float* light_cdf,
+                         __global const int* light_of_slot, __global float4* accumulation, __global float4* squares,
+                         __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts,
+                         __global const PathVertex* cache, __global const int* lengths, __global const uint* offsets, int paths,
+                         int connections, __global const uint* cells, __global const uint* entries, uint size, int first_pixel) {
+    int pixel = first_pixel + (int)get_global_id(0);
+    if (pixel >= camera.width * camera.height) return;
+    RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
+    bdpt_cache_pixel(&settings, &camera, &scene, pixel, cache, lengths, offsets, paths, connections, cells, entries, size, accumulation, squares,
+                     ray_counts, lost_ray_counts);
 }
