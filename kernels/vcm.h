@@ -35,7 +35,8 @@ SS_FN float3 vcm_merge_vertex(const RenderKernelSettings* settings, const Camera
     float3 sum = float3_splat(0.0f);
     const PathVertex* z = &cam[t - 1];
     float r = settings->bdpt.merge_radius;
-    if (!(r > 0.0f) || size == 0u || !vertex_scatters(scene, z) || !bdpt_strategy_enabled(settings->bdpt.strategies, 2, t)) return sum;
+    /* merges are in every mask's weights; --strategies renders the connections alone */
+    if (!(r > 0.0f) || size == 0u || !vertex_scatters(scene, z) || settings->bdpt.single_strategy >= 0) return sum;
     uint buckets[8];
     int count = hash_grid_buckets(z->p, 2.0f * r, size, buckets);
     for (int b = 0; b < count; ++b)
