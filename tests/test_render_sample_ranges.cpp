@@ -205,6 +205,8 @@ lab::render::RenderInput bidirectional_input(lab::render::Integrator integrator)
     input.settings.integrator = integrator;
     input.settings.max_depth = 6;
     input.settings.seed = 11;
+    // vcm: a radius whose merges find light vertices among the 64 light subpaths of a 16 x 16 sample
+    if (integrator == lab::render::Integrator::vcm) input.settings.bdpt.merge_radius = 0.2f;
     return input;
 }
 
@@ -291,7 +293,8 @@ TEST_CASE("Sample ranges on the OpenCL device: merged parts equal one run to flo
 
 TEST_CASE("Sample ranges with BDPT and light tracing on the host build: merged parts equal one run to float rounding, splats included",
           "[render][sample-ranges][bdpt][host]") {
-    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache}) {
+    for (lab::render::Integrator integrator :
+         {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache, lab::render::Integrator::vcm}) {
         INFO(lab::render::integrator_name(integrator));
         check_split_and_resume([&] { return std::make_unique<lab::render::HostRenderer>(bidirectional_input(integrator), 2); });
     }
@@ -300,7 +303,8 @@ TEST_CASE("Sample ranges with BDPT and light tracing on the host build: merged p
 TEST_CASE("Sample ranges with BDPT and light tracing on the OpenCL device: merged parts equal one run to float rounding, splats included",
           "[render][sample-ranges][bdpt][opencl]") {
     lab::opencl::Runtime runtime("");
-    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache}) {
+    for (lab::render::Integrator integrator :
+         {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache, lab::render::Integrator::vcm}) {
         INFO(lab::render::integrator_name(integrator));
         check_split_and_resume([&] { return std::make_unique<lab::render::OpenClRenderer>(runtime, bidirectional_input(integrator)); });
     }
