@@ -15,6 +15,10 @@
 #include "kernels/bdpt.h"
 #include "kernels/hash_grid.h"
 
+/* The hash grid's cell side: 2 r, so that the 2 x 2 x 2 cells nearest a point hold its disk of
+ * radius r (hash_grid_buckets). */
+SS_FN float vcm_cell_size(const RenderKernelSettings* settings) { return 2.0f * settings->bdpt.merge_radius; }
+
 /* The MIS weight of merging light vertex light[s - 1] (s >= 2) with camera vertex cam[t - 1]
  * (t >= 2): bdpt_mis_ratio_sum of the path as connection (s, t - 1), whose own 1 counts only where
  * that connection is a strategy of the render (it joins light[s - 1] to a vertex no delta lobe left). */
@@ -38,7 +42,7 @@ SS_FN float3 vcm_merge_vertex(const RenderKernelSettings* settings, const Camera
     /* merges are in every mask's weights; --strategies renders the connections alone */
     if (!(r > 0.0f) || size == 0u || !vertex_scatters(scene, z) || settings->bdpt.single_strategy >= 0) return sum;
     uint buckets[8];
-    int count = hash_grid_buckets(z->p, 2.0f * r, size, buckets);
+    int count = hash_grid_buckets(z->p, vcm_cell_size(settings), size, buckets);
     for (int b = 0; b < count; ++b)
         for (uint e = cells[buckets[b]]; e < cells[buckets[b] + 1u]; ++e) {
             uint index = entries[e];
@@ -57,10 +61,10 @@ SS_FN float3 vcm_merge_vertex(const RenderKernelSettings* settings, const Camera
     return sum * (1.0f / (SS_PI * r * r * (float)paths));
 }
 
-/* The grid over one sample index's cache, cells of side 2 r (kernels/hash_grid.h). */
+/* The grid over one sample index's cache (kernels/hash_grid.h). */
 SS_FN void vcm_build_grid(const RenderKernelSettings* settings, GLOBAL_MEM const PathVertex* cache, GLOBAL_MEM const int* lengths, int paths,
                           GLOBAL_MEM uint* cells, GLOBAL_MEM uint* entries, uint size) {
-    hash_grid_build(cache, lengths, paths, bdpt_kernel_max_vertices(settings) - 1, 2.0f * settings->bdpt.merge_radius, cells, entries, size);
+    hash_grid_build(cache, lengths, paths, bdpt_kernel_max_vertices(settings) - 1, vcm_cell_size(settings), cells, entries, size);
 }
 
 #endif

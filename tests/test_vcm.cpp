@@ -137,7 +137,10 @@ TEST_CASE("VCM: the hash grid finds exactly the cache's surface vertices within 
     const uint32_t size = uint32_t(paths * slots);
     std::vector<uint32_t> cells(size + 1), entries(size);
     for (float r : {0.1f, 0.25f}) {
-        hash_grid_build(cache.data(), lengths.data(), paths, slots, 2.0f * r, cells.data(), entries.data(), size);
+        kernel::RenderKernelSettings settings{};
+        settings.bdpt.merge_radius = r;
+        const float cell = vcm_cell_size(&settings);  // the grid's cell for radius r, as vcm builds and searches it
+        hash_grid_build(cache.data(), lengths.data(), paths, slots, cell, cells.data(), entries.data(), size);
         int found = 0;
         for (int q = 0; q < 400; ++q) {
             const brdf::float3 p(uniform() * 2.2f - 1.1f, uniform() * 2.2f - 1.1f, uniform() * 1.2f - 3.1f);
@@ -146,7 +149,7 @@ TEST_CASE("VCM: the hash grid finds exactly the cache's surface vertices within 
                 for (int k = 1; k < lengths[size_t(j)]; ++k)
                     if (glm::dot(cache[size_t(j * slots + k)].p - p, cache[size_t(j * slots + k)].p - p) <= r * r) brute.insert(uint32_t(j * slots + k));
             uint32_t buckets[8];
-            const int count = hash_grid_buckets(p, 2.0f * r, size, buckets);
+            const int count = hash_grid_buckets(p, cell, size, buckets);
             for (int b = 0; b < count; ++b)
                 for (uint32_t e = cells[buckets[b]]; e < cells[buckets[b] + 1]; ++e) {
                     const uint32_t index = entries[e];
@@ -178,8 +181,10 @@ TEST_CASE("VCM agrees with the path tracer on the Cornell box at a small radius 
         std::printf("vcm, r_0 %.2g: %d of %zu regions rejected, largest difference %.2f %%\n", radii[i], c.rejected,
                     c.regions.size(), 100.0 * worst[i]);
     }
-    // the bias grows with the radius: none detectable at the default, the light's blur at r = 1
+    // the bias grows with the radius: none detectable at the default nor at 0.3 with this budget,
+    // the light's blur at r = 1 (a merge estimate without its 1 / pi fails at 0.3: 27 regions)
     CHECK(rejected[0] == 0);
+    CHECK(rejected[1] == 0);
     CHECK(rejected[2] > 0);
     CHECK(worst[0] < worst[2]);
 }
