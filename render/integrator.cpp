@@ -31,7 +31,7 @@ constexpr IntegratorDescriptor kIntegrators[] = {
      "bidirectional path tracing with a light-vertex cache", "kernels/bdpt.cl", "render_bdpt_cache", STRATEGY_ALL, false, nullptr, true},
     // bdpt-cache's estimator and vertex merging, with MIS over both (Georgiev et al. 2012)
     {Integrator::vcm, "vcm", "vertex connection and merging: bdpt-cache, its light vertices also merged within a shrinking radius",
-     "vertex connection and merging", "kernels/bdpt.cl", "render_vcm", STRATEGY_ALL, false, nullptr, true, true},
+     "vertex connection and merging", "kernels/bdpt.cl", "render_bdpt_cache", STRATEGY_ALL, false, nullptr, true, true},
 };
 constexpr size_t kIntegratorCount = std::size(kIntegrators);
 

@@ -226,10 +226,10 @@ void OpenClRenderer::launch_light_cache(const kernel::RenderKernelSettings& laun
         for (const opencl::BufferHandle* b : {&cache_, &cache_lengths_, &cache_offsets_}) opencl::set_kernel_arg(kernel_, a++, *b);
         opencl::set_kernel_arg(kernel_, a++, paths);
         opencl::set_kernel_arg(kernel_, a++, cl_int(input_.settings.bdpt.connections));
-        if (merges) {
-            for (const opencl::BufferHandle* b : {&grid_cells_, &grid_entries_}) opencl::set_kernel_arg(kernel_, a++, *b);
-            opencl::set_kernel_arg(kernel_, a++, grid_size);
-        }
+        // without merging the grid's arguments are any buffers, never read (size 0)
+        for (const opencl::BufferHandle* b : {merges ? &grid_cells_ : &cache_offsets_, merges ? &grid_entries_ : &cache_offsets_})
+            opencl::set_kernel_arg(kernel_, a++, *b);
+        opencl::set_kernel_arg(kernel_, a++, grid_size);
         launch_range(runtime_, kernel_, pixels, local_size_, size_t(image));
     };
     launch_light_cache_samples(input_.settings, launch_settings, kernel_settings(kLightCachePilotSample, 1), pixels.first == 0, &pilot_vertices_,
