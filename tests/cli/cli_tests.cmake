@@ -345,6 +345,10 @@ cli_bad_input(NAME render.cache_connections ABSENT ${PNG} EXPECT "${E}--connecti
               ARGS ${RENDER} --integrator bdpt-cache --connections 65)
 cli_bad_input(NAME render.cache_too_large ABSENT ${PNG} EXPECT "${E}--light-paths: the light-vertex cache would take 2176 MiB .*"
               ARGS render scenes/metaballs.json --size 1024x1024 --spp 1 -o ${PNG} --integrator bdpt-cache --light-paths 1)
+cli_bad_input(NAME render.merge_radius_zero ABSENT ${PNG} EXPECT "${E}--merge-radius: must be a positive length, got 0$"
+              ARGS ${RENDER} --integrator vcm --merge-radius 0)
+cli_bad_input(NAME render.merge_radius_nan ABSENT ${PNG} EXPECT "${E}--merge-radius: must be a positive length, got nan$"
+              ARGS ${RENDER} --integrator vcm --merge-radius nan)
 cli_bad_input(NAME render.connection_roulette ABSENT ${PNG} EXPECT "${E}--connection-roulette: must be a weight in .0, 1.$"
               ARGS ${RENDER} --integrator bdpt --connection-roulette 1)
 cli_bad_input(NAME render.unknown_mis ABSENT ${PNG} EXPECT "${E}--mis: unknown value \"max\" \\(balance, power\\)$"
