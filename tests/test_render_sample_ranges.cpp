@@ -36,6 +36,7 @@
 #include "render/host_renderer.hpp"
 #include "render/opencl_renderer.hpp"
 #include "render/progressive.hpp"
+#include "render/vcm.hpp"
 #include "scene/load_scene.hpp"
 #include "tests/render_inputs.hpp"
 #include "tests/worst_difference.hpp"
@@ -366,4 +367,15 @@ TEST_CASE("Render metadata: BDPT's vertex limit, MIS heuristic and strategies ar
     part.metadata = bdpt;
     part.metadata.set("seconds", 99.0f);  // differs between parts: fine
     CHECK_NOTHROW(lab::render::check_same_render("a.exr", bdpt, 16, 16, part));
+    // vcm: its first radius (0: the scene's share) and the radius's shrinking
+    CHECK(cache.find("merge_radius") == nullptr);
+    const lab::film::ImageMetadata vcm = metadata_of(bidirectional_input(Integrator::vcm));
+    CHECK(text(vcm, "merge_radius") == lab::film::metadata_text(lab::film::MetadataValue(0.2f)));
+    CHECK(text(vcm, "merge_alpha") == lab::film::metadata_text(lab::film::MetadataValue(lab::render::kMergeRadiusAlpha)));
+    for (const char* key : {"merge_radius", "merge_alpha"}) {
+        INFO(key);
+        part.metadata = vcm;
+        part.metadata.values[key] = 0.5f;
+        CHECK_THROWS_WITH(lab::render::check_same_render("a.exr", vcm, 16, 16, part), Catch::StartsWith(std::string("b.exr: dtoadq:") + key + ": "));
+    }
 }
