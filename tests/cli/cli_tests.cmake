@@ -322,8 +322,8 @@ cli_bad_input(NAME bench_breakdown.bad_repeats EXPECT "${E}--repeats: must be in
 set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_scene\\.json: cannot open"
               ARGS render ${D}/absent_scene.json --size 16x16 --spp 1 -o ${PNG})
-cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"vcm\" \\(pt, bdpt, lt, bdpt-cache\\)$"
-              ARGS ${RENDER} --integrator vcm)
+cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"ppm\" \\(pt, bdpt, lt, bdpt-cache, vcm\\)$"
+              ARGS ${RENDER} --integrator ppm)
 cli_bad_input(NAME render.bdpt_max_depth ABSENT ${PNG} EXPECT "${E}--max-depth: bdpt takes at most 62 scattering events, got 63$"
               ARGS ${RENDER} --integrator bdpt --max-depth 63)
 cli_bad_input(NAME render.bdpt_no_light ABSENT ${PNG}
@@ -353,7 +353,7 @@ cli_bad_input(NAME render.connection_roulette ABSENT ${PNG} EXPECT "${E}--connec
               ARGS ${RENDER} --integrator bdpt --connection-roulette 1)
 cli_bad_input(NAME render.unknown_mis ABSENT ${PNG} EXPECT "${E}--mis: unknown value \"max\" \\(balance, power\\)$"
               ARGS ${RENDER} --integrator bdpt --mis max)
-cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt, lt or bdpt-cache"
+cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt, lt, bdpt-cache or vcm"
               ARGS ${RENDER} --strategies ${CLI_SCRATCH}/strategies_pt)
 # the --strategies folder is checked before the render (nothing is written), and a folder the check
 # made is removed when another input error stops the command
