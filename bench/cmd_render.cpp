@@ -42,6 +42,9 @@ struct BenchRenderCommand {
     double throughput_seconds = 2.0;
     double seconds = 4.0;
     double reference_seconds = 40.0;
+    // the integrator of the --integrators references: pt, or vcm where only merging samples the
+    // scene's light (scenes/caustic_mirror.json)
+    std::string reference_integrator = "pt";
     std::string chart, csv;
 };
 
@@ -106,13 +109,14 @@ void run_bench_render(const BenchRenderCommand& c) {
     if (!(c.reference_seconds >= c.seconds && c.reference_seconds <= 36000.0))
         throw InputError("--reference-seconds", "", "must be at least --seconds and at most 36000");
     if (!c.chart.empty()) film::check_output_path(c.chart);
+    const render::Integrator reference_integrator = render::parse_integrator(c.reference_integrator, "--reference-integrator");
     opencl::Runtime runtime(c.job.device);
     report::RendererFactory on_device = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
     std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());
 
     std::printf("(a scene with no light of its own is lit by envmaps/courtyard.exr)\n");
-    std::printf("%-28s %12s %12s %10s %10s %10s %14s %12s %12s %12s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "steps/ray", "evals/step",
-                "host paths/s", "device/host", "bdpt paths/s", "lt paths/s", "cache paths/s");
+    std::printf("%-28s %12s %12s %10s %10s %10s %14s %12s %12s %12s %12s %12s\n", "scene", "paths/s", "rays/s", "rays/path", "steps/ray", "evals/step",
+                "host paths/s", "device/host", "bdpt paths/s", "lt paths/s", "cache paths/s", "vcm paths/s");
     for (const std::string& file : c.scenes) {
         RenderJob job = scene_job(c.job, file);
         std::unique_ptr<render::Renderer> device = on_device(job.input);
@@ -120,9 +124,10 @@ void run_bench_render(const BenchRenderCommand& c) {
         bench::MarchCost work = bench::measure_march_cost(runtime, job.input, 1);
         render::HostRenderer host(job.input);
         render::RenderStatistics h = measure(host, c.throughput_seconds);
-        const render::Integrator kBidirectional[] = {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::bdpt_cache};
-        double bidirectional[3] = {0.0, 0.0, 0.0};
-        for (int i = 0; i < 3; ++i) {
+        const render::Integrator kBidirectional[] = {render::Integrator::bdpt, render::Integrator::lt, render::Integrator::bdpt_cache,
+                                                     render::Integrator::vcm};
+        double bidirectional[4] = {0.0, 0.0, 0.0, 0.0};
+        for (int i = 0; i < 4; ++i) {
             if (!render::integrator_descriptor(kBidirectional[i]).renders_environment() && job.input.environment) continue;
             render::RenderInput input = job.input;
             input.settings.integrator = kBidirectional[i];
@@ -131,10 +136,10 @@ void run_bench_render(const BenchRenderCommand& c) {
         }
         char lt[32] = "-";  // not under an environment
         if (bidirectional[1] > 0.0) std::snprintf(lt, sizeof(lt), "%.3g", bidirectional[1]);
-        std::printf("%-28s %12.3g %12.3g %10.2f %10.1f %10.2f %14.3g %11.2fx %12.3g %12s %12.3g\n", fs::path(file).filename().string().c_str(),
+        std::printf("%-28s %12.3g %12.3g %10.2f %10.1f %10.2f %14.3g %11.2fx %12.3g %12s %12.3g %12.3g\n", fs::path(file).filename().string().c_str(),
                     d.paths_per_second(), d.rays_per_second(), double(d.rays) / double(d.paths), work.steps_per_ray,
                     work.evaluations_per_step, h.paths_per_second(),
-                    d.paths_per_second() / h.paths_per_second(), bidirectional[0], lt, bidirectional[2]);
+                    d.paths_per_second() / h.paths_per_second(), bidirectional[0], lt, bidirectional[2], bidirectional[3]);
         std::fflush(stdout);
     }
 
@@ -155,7 +160,7 @@ void run_bench_render(const BenchRenderCommand& c) {
         std::string name = fs::path(file).stem().string();
         std::vector<report::EqualTimeRun> runs;
         for (render::Integrator integrator :
-             {render::Integrator::bdpt, render::Integrator::bdpt_cache, render::Integrator::lt, render::Integrator::pt}) {
+             {render::Integrator::bdpt, render::Integrator::bdpt_cache, render::Integrator::vcm, render::Integrator::lt, render::Integrator::pt}) {
             if (!render::integrator_descriptor(integrator).renders_environment() && job.input.environment) continue;
             report::EqualTimeRun run{name + " " + render::integrator_name(integrator), job.input};
             run.input.settings.integrator = integrator;
@@ -170,8 +175,11 @@ void run_bench_render(const BenchRenderCommand& c) {
             }
             runs.push_back(std::move(run));
         }
-        compare_at_equal_time(on_device, c, name + ": reference (pt, max depth " + std::to_string(job.input.settings.max_depth) + ")",
-                              job.input, runs, "pt", &series);
+        render::RenderInput reference = job.input;
+        reference.settings.integrator = reference_integrator;
+        compare_at_equal_time(on_device, c,
+                              name + ": reference (" + c.reference_integrator + ", max depth " + std::to_string(job.input.settings.max_depth) + ")",
+                              reference, runs, "pt", &series);
     }
     if (!c.chart.empty() && !series.empty()) {
         plots::write_speed_accuracy_chart(series, "Render core: RMSE against render time, by light-sampling strategy and integrator", c.chart,
@@ -186,18 +194,21 @@ void register_bench_render(CLI::App& bench) {
     auto c = std::make_shared<BenchRenderCommand>();
     c->job.size = "128x128";
     auto* cmd = bench.add_subcommand(
-        "render", "Paths/s and rays/s per bundled scene (pt on the device and the host build, bdpt, lt, bdpt-cache), and the equal-time error of "
-        "each light-sampling strategy and of bdpt, bdpt-cache and lt against pt");
+        "render", "Paths/s and rays/s per bundled scene (pt on the device and the host build, bdpt, lt, bdpt-cache, vcm), and the equal-time error of "
+        "each light-sampling strategy and of bdpt, bdpt-cache, vcm and lt against pt");
     add_render_options(*cmd, &c->job);
     cmd->add_option("--scenes", c->scenes, "Scenes to measure throughput on")->capture_default_str();
     cmd->add_option("--compare", c->compare, "Scenes to compare light-sampling strategies on at equal time")->capture_default_str();
-    cmd->add_option("--integrators", c->integrators, "Scenes to compare bdpt, bdpt-cache, lt and pt on at equal time")->capture_default_str();
+    cmd->add_option("--integrators", c->integrators, "Scenes to compare bdpt, bdpt-cache, vcm, lt and pt on at equal time")->capture_default_str();
     cmd->add_option("--cache-counts", c->cache_counts,
                     "bdpt-cache at equal time with each of these light paths per pixel and connections, R:M (default: one run with "
                     "--light-paths and --connections)");
     cmd->add_option("--throughput-seconds", c->throughput_seconds, "Render time of each throughput figure")->capture_default_str();
     cmd->add_option("--seconds", c->seconds, "Render time of each strategy")->capture_default_str();
     cmd->add_option("--reference-seconds", c->reference_seconds, "Render time of each reference (MIS)")->capture_default_str();
+    cmd->add_option("--reference-integrator", c->reference_integrator,
+                    "The integrator of the --integrators references (vcm where only merging samples the light, as in scenes/caustic_mirror.json)")
+        ->capture_default_str();
     cmd->add_option("-o,--chart", c->chart, "Speed-against-accuracy chart (PNG): RMSE against time per scene and strategy");
     cmd->add_option("--csv", c->csv, "The chart's data as CSV");
     cmd->callback([c] { run_bench_render(*c); });

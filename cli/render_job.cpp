@@ -11,6 +11,7 @@
 #include "render/film_file.hpp"
 #include "render/host_renderer.hpp"
 #include "render/interrupt.hpp"
+#include "render/vcm.hpp"
 #include "render/opencl_renderer.hpp"
 #include "render/scene_environment.hpp"
 #include "scene/look_dev_references.hpp"
@@ -44,6 +45,10 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
         ->capture_default_str();
     cmd.add_option("--connections", o->connections, "bdpt-cache: light-cache vertices each camera vertex is joined to, in [1, 64]")
         ->capture_default_str();
+    cmd.add_option("--merge-radius", o->merge_radius,
+                   "vcm: the first sample's merge radius r_0 in scene units, > 0 (it shrinks as r_0 (i + 1)^-0.125 with the sample index "
+                   "i); without it 1 % of the scene's bounding radius")
+        ->each([o](const std::string&) { o->merge_radius_given = true; });
     cmd.add_option("--connection-roulette", o->connection_roulette,
                    "bdpt, lt, bdpt-cache: a connection of MIS weight w below this traces its shadow ray with probability w / this, and "
                    "counts 1 / that probability (0: always)")
@@ -113,6 +118,8 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     settings.bdpt.light_paths = o.light_paths;
     settings.bdpt.connections = o.connections;
     settings.bdpt.connection_roulette = o.connection_roulette;
+    settings.bdpt.merge_radius = o.merge_radius;
+    if (o.merge_radius_given) render::check_merge_radius(o.merge_radius);  // 0 means the scene's share only when not given
     settings.max_steps = o.max_steps;
     settings.over_relaxation = o.over_relaxation;
     render::check_render_settings(settings);

@@ -44,6 +44,8 @@ struct RenderJobOptions {
     float light_paths = render::BdptSettings{}.light_paths;  // bdpt-cache
     int connections = render::BdptSettings{}.connections;    // bdpt-cache
     float connection_roulette = render::BdptSettings{}.connection_roulette;  // bdpt, lt, bdpt-cache
+    float merge_radius = render::BdptSettings{}.merge_radius;  // vcm: 0 the scene's share; given, it must be > 0
+    bool merge_radius_given = false;
     int max_steps = 1024;
     float over_relaxation = render::RenderSettings{}.over_relaxation;
     unsigned long long seed = 0;

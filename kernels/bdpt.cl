@@ -3,8 +3,9 @@
  * connections splatted anywhere on it; the arguments are the path tracer's (kernels/path_tracer.cl),
  * bound the same way. The light-vertex cache's kernels (kernels/bdpt_cache.h, `bdpt-cache`), per
  * sample index: the light pass (one work-item per light subpath), the offsets (one work-item), then
- * the camera pass (one work-item per pixel, the path tracer's arguments, then the cache's). One
- * program for the three integrators: PoCL builds it once for all of them. */
+ * the camera pass (one work-item per pixel, the path tracer's arguments, then the cache's); vcm's
+ * grid (kernels/vcm.h) between the last two. One program for the four integrators: PoCL builds it
+ * once for all of them. */
 #pragma OPENCL FP_CONTRACT OFF
 
 #include "scene/materials.h" /* the feature switches, before any brdf/ header */
@@ -44,16 +45,24 @@ __kernel void render_bdpt_cache_offsets(__global uint* offsets, int paths) {
     if (get_global_id(0) == 0) bdpt_cache_offsets(offsets, paths);
 }
 
+/* The camera pass of bdpt-cache and vcm (kernels/vcm.h): vcm's hash grid over the pool (built
+ * between the light and camera passes by render_vcm_grid, one work-item, in the cache's order: the
+ * same entries on every device) in cells and entries; bdpt-cache passes size 0 and merges nothing. */
 __kernel void render_bdpt_cache(RenderKernelSettings settings, Camera camera, EnvironmentMap env, __global const float4* env_texels,
                                 __global const AliasEntry* env_alias, __global const Material* materials, __global const float* tables,
                                 __global const float4* emission, __global const Light* lights, __global const float* light_cdf,
                                 __global const int* light_of_slot, __global float4* accumulation, __global float4* squares,
                                 __global uint* splat, __global uint* ray_counts, __global uint* lost_ray_counts,
                                 __global const PathVertex* cache, __global const int* lengths, __global const uint* offsets, int paths,
-                                int connections, int first_pixel) {
+                                int connections, __global const uint* cells, __global const uint* entries, uint size, int first_pixel) {
     int pixel = first_pixel + (int)get_global_id(0);
     if (pixel >= camera.width * camera.height) return;
     RenderScene scene = render_scene_make(materials, tables, emission, lights, light_cdf, light_of_slot, env, env_texels, env_alias);
-    bdpt_cache_pixel(&settings, &camera, &scene, pixel, cache, lengths, offsets, paths, connections, accumulation, squares, ray_counts,
-                     lost_ray_counts);
+    bdpt_cache_pixel(&settings, &camera, &scene, pixel, cache, lengths, offsets, paths, connections, cells, entries, size, accumulation, squares,
+                     ray_counts, lost_ray_counts);
+}
+
+__kernel void render_vcm_grid(RenderKernelSettings settings, __global const PathVertex* cache, __global const int* lengths, int paths,
+                              __global uint* cells, __global uint* entries, uint size) {
+    if (get_global_id(0) == 0) vcm_build_grid(&settings, cache, lengths, paths, cells, entries, size);
 }

@@ -19,7 +19,7 @@
 #ifndef KERNELS_BDPT_CACHE_H
 #define KERNELS_BDPT_CACHE_H
 
-#include "kernels/bdpt.h"
+#include "kernels/vcm.h" /* merging (vcm): the same pass with a hash grid */
 
 /* The random-number streams of the cache's passes, apart from the per-pixel kernel's (stream 0 the
  * camera subpath, 1 + a strategy's code its connection's): a light subpath's walk, and above it its
@@ -81,10 +81,13 @@ SS_FN void bdpt_cache_offsets(GLOBAL_MEM uint* offsets, int paths) {
 }
 
 /* Pass 3: settings->first_sample (one sample per launch: the cache holds that sample's light
- * subpaths) of one pixel, its own part to the accumulation buffer as bdpt_pixel's. */
+ * subpaths) of one pixel, its own part to the accumulation buffer as bdpt_pixel's. With a hash grid
+ * over the cache (grid_size > 0: vcm, kernels/vcm.h) each camera vertex also merges with the cache
+ * vertices near it. */
 SS_FN void bdpt_cache_pixel(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, int pixel,
                             GLOBAL_MEM const PathVertex* cache, GLOBAL_MEM const int* lengths, GLOBAL_MEM const uint* offsets, int paths,
-                            int connections, GLOBAL_MEM float4* accumulation, GLOBAL_MEM float4* squares, GLOBAL_MEM uint* ray_counts,
+                            int connections, GLOBAL_MEM const uint* grid_cells, GLOBAL_MEM const uint* grid_entries, uint grid_size,
+                            GLOBAL_MEM float4* accumulation, GLOBAL_MEM float4* squares, GLOBAL_MEM uint* ray_counts,
                             GLOBAL_MEM uint* lost_ray_counts) {
     MarchSettings march_settings = render_march_settings(settings);
     PathCounters counters = path_counters_zero();
@@ -105,6 +108,11 @@ SS_FN void bdpt_cache_pixel(const RenderKernelSettings* settings, const Camera* 
             float2 raster;
             float3 c = bdpt_strategy_contribution(settings, march_settings, camera, scene, cam, cam, s, t, max_vertices, (uint)pixel, sample,
                                                   (uint)(1 + bdpt_strategy_code(s, t)), &raster, &counters);
+            if (!finite3(c)) finite = false;
+            else l += c;
+        }
+        if (grid_size > 0u) {
+            float3 c = vcm_merge_vertex(settings, camera, scene, cam, t, max_vertices, cache, slots, paths, grid_cells, grid_entries, grid_size, light);
             if (!finite3(c)) finite = false;
             else l += c;
         }

@@ -48,11 +48,21 @@ SS_FN float bdpt_light_sample_ratio(const RenderKernelSettings* settings, const 
     return q1 > 0.0f ? q1 / q : 1.0f;
 }
 
-/* `sampled` stands in for light[0] when s = 1 (a light sample) and for camera[0] when t = 1 (a
- * lens sample); it is ignored otherwise. */
-SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, const PathVertex* light,
-                            const PathVertex* cam, const PathVertex* sampled, int s, int t) {
-    if (s + t == 2) return 1.0f;
+/* Whether vertex merging (kernels/vcm.h) can make a path at vertex v: a scattering surface whose
+ * walk left it by a lobe that is no delta (the flags' rule for connections). */
+SS_FN bool bdpt_merges_at(const RenderScene* scene, const PathVertex* v) { return vertex_scatters(scene, v) && !v->delta; }
+
+/* The sum of the other strategies' (heuristic) ratios to strategy (s, t), the weight's denominator
+ * less its own 1. With settings->bdpt.merge_samples > 0 (vcm) the vertex merging strategies count
+ * too: merging at path vertex x is connection (s', t') whose light subpath ends just before x, times
+ * merge_samples (N_L pi r^2) times the light side's density of x (Georgiev et al. 2012), and it
+ * cannot merge at the light's own vertex, the lens, or a delta vertex. `merging` set: the path is
+ * light vertex light[s - 1] merged with camera vertex cam[t] (kernels/vcm.h), described as
+ * connection (s, t) of light[s - 1] to cam[t - 1]; the camera side's density of light[s - 1] is
+ * then cam[t]'s, cam[t - 1] may be a delta vertex, and *merge_ratio receives the merge's own ratio
+ * (with the connection's 1 only where the connection itself is a strategy: bdpt_mis_reference). */
+SS_FN float bdpt_mis_ratio_sum(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, const PathVertex* light,
+                               const PathVertex* cam, const PathVertex* sampled, int s, int t, int merging, float* merge_ratio) {
     const PathVertex* qs = s == 1 ? sampled : (s > 1 ? &light[s - 1] : 0);
     const PathVertex* pt = t == 1 ? sampled : &cam[t - 1];
     const PathVertex* qs_minus = s > 1 ? &light[s - 2] : 0;
@@ -62,6 +72,11 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* 
     float pt_minus_rev = 0.0f;
     if (t > 1) pt_minus_rev = s > 0 ? vertex_pdf(settings, camera, scene, qs, pt, pt_minus) : vertex_pdf_light(settings, scene, pt, pt_minus);
     float qs_rev = s > 0 ? vertex_pdf(settings, camera, scene, pt_minus, pt, qs) : 0.0f;
+    if (merging) { /* the camera walk sampled the merged vertex itself, possibly through a delta lobe at pt */
+        qs_rev = bdpt_remap0(cam[t].pdf_fwd);
+        pt_minus_rev = bdpt_remap_reverse(pt_minus_rev, pt->delta != 0);
+    }
+    float eta = settings->bdpt.merge_samples;
     float qs_minus_rev = s > 1 ? vertex_pdf(settings, camera, scene, pt, qs, qs_minus) : 0.0f;
 
     /* s = 1's own density of x0 against the light subpath's (bdpt_light_sample_ratio): a factor on
@@ -81,8 +96,12 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* 
     for (int i = t - 1; i > 0; --i) { /* strategy (s + t - i, i) */
         /* the connection's own densities are real ones; the walk's may follow a delta lobe */
         float rev = i == t - 1 ? pt_rev : (i == t - 2 ? pt_minus_rev : cam[i].pdf_rev);
-        r *= bdpt_remap_reverse(rev, i < t - 2 && cam[i + 1].delta) / bdpt_remap0(cam[i].pdf_fwd);
-        bool delta = i != t - 1 && cam[i].delta;
+        float rev_remapped = bdpt_remap_reverse(rev, i < t - 2 && cam[i + 1].delta);
+        /* merging at cam[i]: the connection that ends the camera subpath there, r so far */
+        if (eta > 0.0f && (s > 0 || i < t - 1) && bdpt_merges_at(scene, &cam[i]))
+            sum += bdpt_heuristic(settings->bdpt.mis_heuristic, r * rev_remapped * eta * own);
+        r *= rev_remapped / bdpt_remap0(cam[i].pdf_fwd);
+        bool delta = (i != t - 1 || merging) && cam[i].delta;
         float q = (s + t - i == 1 ? q_ratio_s1 : own) * bdpt_strategy_samples(&settings->bdpt, s + t - i, i);
         if (!delta && !cam[i - 1].delta && bdpt_strategy_enabled(settings->bdpt.strategies, s + t - i, i)) sum += bdpt_heuristic(settings->bdpt.mis_heuristic, r * q);
     }
@@ -90,13 +109,28 @@ SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* 
     for (int i = s - 1; i >= 0; --i) { /* strategy (i, s + t - i) */
         const PathVertex* v = i == s - 1 ? qs : &light[i];
         float rev = i == s - 1 ? qs_rev : (i == s - 2 ? qs_minus_rev : v->pdf_rev);
-        r *= bdpt_remap_reverse(rev, i < s - 2 && light[i + 1].delta) / bdpt_remap0(v->pdf_fwd);
+        float rev_remapped = bdpt_remap_reverse(rev, i < s - 2 && light[i + 1].delta);
+        /* merging at light[i]: the connection that ends the light subpath there, r so far */
+        if (eta > 0.0f && i >= 1 && vertex_scatters(scene, v) && (!v->delta || (merging && i == s - 1))) {
+            float m = bdpt_heuristic(settings->bdpt.mis_heuristic, r * rev_remapped * eta * own);
+            sum += m;
+            if (merging && i == s - 1) *merge_ratio = m;
+        }
+        r *= rev_remapped / bdpt_remap0(v->pdf_fwd);
         bool delta = i != s - 1 && v->delta;
         bool delta_before = i > 0 ? light[i - 1].delta != 0 : vertex_is_delta_light(scene, i == s - 1 ? qs : &light[0]);
         float q = (i == 1 ? q_ratio_s1 : own) * bdpt_strategy_samples(&settings->bdpt, i, s + t - i);
         if (!delta && !delta_before && bdpt_strategy_enabled(settings->bdpt.strategies, i, s + t - i)) sum += bdpt_heuristic(settings->bdpt.mis_heuristic, r * q);
     }
-    return 1.0f / (1.0f + sum);
+    return sum;
+}
+
+/* `sampled` stands in for light[0] when s = 1 (a light sample) and for camera[0] when t = 1 (a
+ * lens sample); it is ignored otherwise. */
+SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, const PathVertex* light,
+                            const PathVertex* cam, const PathVertex* sampled, int s, int t) {
+    if (s + t == 2) return 1.0f;
+    return 1.0f / (1.0f + bdpt_mis_ratio_sum(settings, camera, scene, light, cam, sampled, s, t, 0, 0));
 }
 
 #endif

@@ -47,6 +47,12 @@ typedef struct BdptKernelSettings {
      * with probability w / connection_roulette and counts 1 / that probability (bdpt_connect);
      * 0: every connection of nonzero weight traces it. */
     float connection_roulette;
+    /* Vertex merging (vcm, kernels/vcm.h): this sample index's merge radius r_i (0: no merging),
+     * the first sample's r_0 it shrinks from (render/vcm.cpp), and merge_samples = N_L pi r_i^2,
+     * the merging strategy's count n_VM p_VM / p of the MIS weights (kernels/bdpt_mis.h). */
+    float merge_radius;
+    float merge_radius0;
+    float merge_samples;
 } BdptKernelSettings;
 
 /* Whether strategy (s, t) belongs to the mask. */

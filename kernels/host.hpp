@@ -35,4 +35,4 @@ using namespace ::ibl;
 static_assert(sizeof(kernel::Camera) == 64, "Camera must match its OpenCL layout: 16 four-byte words");
 static_assert(sizeof(kernel::Light) == 64, "Light must match its OpenCL layout: 16 four-byte words");
 static_assert(sizeof(kernel::RayMarch) == 12, "RayMarch must match its OpenCL layout: 3 four-byte words");
-static_assert(sizeof(kernel::RenderKernelSettings) == 140, "RenderKernelSettings must match its OpenCL layout: 35 four-byte words");
+static_assert(sizeof(kernel::RenderKernelSettings) == 152, "RenderKernelSettings must match its OpenCL layout: 38 four-byte words");

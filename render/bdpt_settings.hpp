@@ -18,6 +18,9 @@ struct BdptSettings {
     // with probability weight / connection_roulette (--connection-roulette; 0: always). Measured in
     // docs/bdpt.md, "Connection roulette".
     float connection_roulette = 0.0f;
+    // vcm (kernels/vcm.h, render/vcm.hpp): the first sample's merge radius r_0, in scene units
+    // (--merge-radius); 0: a share of the scene's bounding radius.
+    float merge_radius = 0.0f;
 };
 
 // The strategies apart (--strategies DIR, the tests of the estimator): other masks than the

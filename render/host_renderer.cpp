@@ -5,6 +5,7 @@
 
 #include "render/host_kernels.hpp"
 #include "render/light_cache.hpp"
+#include "render/vcm.hpp"
 
 namespace lab::render {
 
@@ -35,6 +36,14 @@ void HostRenderer::clear_film() {
         cache_offsets_.assign(paths + 1, 0u);
         cache_rays_.assign(paths, 0u);
         cache_lost_.assign(paths, 0u);
+        if (integrator_descriptor(input_.settings.integrator).merges) {
+            grid_cells_.assign(vcm_grid_buckets(input_.settings) + 1, 0u);
+            grid_entries_.assign(vcm_grid_buckets(input_.settings), 0u);
+        }
+    }
+    if (!integrator_descriptor(input_.settings.integrator).merges) {
+        grid_cells_.clear();
+        grid_entries_.clear();
     }
     pilot_vertices_ = -1;  // the scene, camera or settings may have changed
 }
@@ -79,6 +88,7 @@ void HostRenderer::launch_light_cache(const kernel::RenderKernelSettings& launch
     auto* splat = reinterpret_cast<unsigned*>(film_.splat.data());
     const int paths = light_cache_paths(input_.settings);
     const int chunk = 64;
+    const auto grid_size = uint32_t(grid_entries_.size());  // 0 without merging
     // one sample index's pool: its light subpaths, their t = 1 splats when `splats`, the offsets
     auto light_pass = [&](const kernel::RenderKernelSettings& settings, int splats, uint32_t* rays, uint32_t* lost) {
         parallel_for(0, paths, chunk, [&](int path) {
@@ -86,6 +96,8 @@ void HostRenderer::launch_light_cache(const kernel::RenderKernelSettings& launch
                                                 splat, splats, rays, lost);
         });
         host_kernels::bdpt_cache_offsets(cache_offsets_.data(), paths);
+        if (settings.bdpt.merge_radius > 0.0f)  // vcm: the pool's hash grid
+            host_kernels::vcm_build_grid(&settings, cache_.data(), cache_lengths_.data(), paths, grid_cells_.data(), grid_entries_.data(), grid_size);
     };
     LightCachePasses passes;
     passes.pilot = [&](const kernel::RenderKernelSettings& settings) {
@@ -99,7 +111,8 @@ void HostRenderer::launch_light_cache(const kernel::RenderKernelSettings& launch
     passes.pixels = [&](const kernel::RenderKernelSettings& settings) {
         parallel_for(range.first, range.first + range.count, std::max(1, input_.settings.width), [&](int pixel) {
             host_kernels::bdpt_cache_pixel(&settings, &camera_, &scene, pixel, cache_.data(), cache_lengths_.data(), cache_offsets_.data(), paths,
-                                           input_.settings.bdpt.connections, accumulation, squares, rays_.data(), lost_.data());
+                                           input_.settings.bdpt.connections, grid_cells_.data(), grid_entries_.data(),
+                                           grid_size, accumulation, squares, rays_.data(), lost_.data());
         });
     };
     launch_light_cache_samples(input_.settings, launch_settings, kernel_settings(kLightCachePilotSample, 1), range.first == 0, &pilot_vertices_,

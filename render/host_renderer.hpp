@@ -49,6 +49,8 @@ private:
     std::vector<host_kernels::PathVertex> cache_;
     std::vector<int> cache_lengths_;
     std::vector<uint32_t> cache_offsets_, cache_rays_, cache_lost_;
+    // vcm: the hash grid over one sample's light vertices (kernels/hash_grid.h); empty without merging
+    std::vector<uint32_t> grid_cells_, grid_entries_;
     int64_t pilot_vertices_ = -1;
 };
 

@@ -29,6 +29,9 @@ constexpr IntegratorDescriptor kIntegrators[] = {
     // bdpt's strategies and weights, its light subpaths traced once per sample index for all pixels
     {Integrator::bdpt_cache, "bdpt-cache", "bidirectional, light subpaths shared by all pixels through a light-vertex cache",
      "bidirectional path tracing with a light-vertex cache", "kernels/bdpt.cl", "render_bdpt_cache", STRATEGY_ALL, false, nullptr, true},
+    // bdpt-cache's estimator and vertex merging, with MIS over both (Georgiev et al. 2012)
+    {Integrator::vcm, "vcm", "vertex connection and merging: bdpt-cache, its light vertices also merged within a shrinking radius",
+     "vertex connection and merging", "kernels/bdpt.cl", "render_bdpt_cache", STRATEGY_ALL, false, nullptr, true, true},
 };
 constexpr size_t kIntegratorCount = std::size(kIntegrators);
 

@@ -12,7 +12,8 @@ namespace lab::render {
 // (kernels/path_tracer.h); `bdpt`: bidirectional path tracing, every strategy (kernels/bdpt.h);
 // `lt`: light tracing, the same code with only its t = 1 strategies (docs/bdpt.md); `bdpt-cache`:
 // every strategy, the light subpaths shared by all pixels in a light-vertex cache (kernels/bdpt_cache.h).
-enum class Integrator { pt, bdpt, lt, bdpt_cache };
+// `vcm`: bdpt-cache with its light vertices also merged with the camera vertices near them (kernels/vcm.h).
+enum class Integrator { pt, bdpt, lt, bdpt_cache, vcm };
 
 struct IntegratorDescriptor {
     Integrator integrator;
@@ -32,6 +33,9 @@ struct IntegratorDescriptor {
     // Its light subpaths are a pool per sample index that every pixel shares (kernels/bdpt_cache.h):
     // the program's light pass and offsets kernels run before `kernel`, the camera pass.
     bool light_cache = false;
+    // With light_cache: a hash grid over each pool (the program's render_vcm_grid kernel) and camera
+    // vertices merged with the light vertices near them (kernels/vcm.h, render/vcm.hpp).
+    bool merges = false;
 
     // Subpaths from the lens and from the lights (kernels/bdpt.h): the lights start its light
     // subpaths, its vertex arrays bound the depth (kBdptMaxDepth), and it has an MIS heuristic.

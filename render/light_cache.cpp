@@ -6,6 +6,7 @@
 
 #include "common/input_error.hpp"
 #include "common/message_number.hpp"
+#include "render/vcm.hpp"
 
 namespace lab::render {
 
@@ -36,6 +37,7 @@ void launch_light_cache_samples(const RenderSettings& settings, const kernel::Re
         sample_settings.first_sample = launch_settings.first_sample + i;
         sample_settings.sample_count = 1;
         set_light_cache_weights(settings, uint64_t(*pilot_vertices), &sample_settings);
+        if (sample_settings.bdpt.merge_radius0 > 0.0f) set_vcm_sample_radius(settings, sample_settings.first_sample, &sample_settings);
         passes.light(sample_settings, first_range);
         passes.pixels(sample_settings);
     }

@@ -9,6 +9,7 @@
 #include "kernels/host/material_layout.hpp"
 #include "kernels/host/scene_kernel_source.hpp"
 #include "render/light_cache.hpp"
+#include "render/vcm.hpp"
 #include "render/opencl_launch.hpp"
 
 namespace lab::render {
@@ -77,6 +78,7 @@ void OpenClRenderer::build_kernel() {
     if (integrator.light_cache) {
         cache_light_kernel_ = program_->kernel("render_bdpt_cache_light");
         cache_offsets_kernel_ = program_->kernel("render_bdpt_cache_offsets");
+        if (integrator.merges) grid_kernel_ = program_->kernel("render_vcm_grid");
     }
     kernel_ = std::move(kernel);
     if (wavefront()) wavefront_driver_.build(*program_, compiled_, options);
@@ -141,6 +143,10 @@ void OpenClRenderer::clear_film() {
         runtime_.write(cache_offsets_, path_zeros.data(), (paths + 1) * sizeof(cl_uint));
         runtime_.write(cache_rays_, path_zeros.data(), paths * sizeof(cl_uint));
         runtime_.write(cache_lost_, path_zeros.data(), paths * sizeof(cl_uint));
+        if (integrator_descriptor(input_.settings.integrator).merges) {
+            grid_cells_ = runtime_.buffer((vcm_grid_buckets(input_.settings) + 1) * sizeof(cl_uint), CL_MEM_READ_WRITE);
+            grid_entries_ = runtime_.buffer(vcm_grid_buckets(input_.settings) * sizeof(cl_uint), CL_MEM_READ_WRITE);
+        }
     }
     pilot_vertices_ = -1;  // the scene, camera or settings may have changed
 }
@@ -179,6 +185,8 @@ void OpenClRenderer::launch(const kernel::RenderKernelSettings& launch_settings,
 void OpenClRenderer::launch_light_cache(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels) {
     const int image = input_.settings.width * input_.settings.height;
     const cl_int paths = light_cache_paths(input_.settings);
+    const bool merges = integrator_descriptor(input_.settings.integrator).merges;
+    const cl_uint grid_size = merges ? cl_uint(vcm_grid_buckets(input_.settings)) : 0u;
     // one sample index's pool: its light subpaths, their t = 1 splats when `splats`, the offsets
     auto light_pass = [&](const kernel::RenderKernelSettings& settings, cl_int splats) {
         cl_uint a = bind_render_arguments(cache_light_kernel_, settings);
@@ -192,6 +200,15 @@ void OpenClRenderer::launch_light_cache(const kernel::RenderKernelSettings& laun
         opencl::set_kernel_arg(cache_offsets_kernel_, 0, cache_offsets_);
         opencl::set_kernel_arg(cache_offsets_kernel_, 1, paths);
         runtime_.launch_1d(cache_offsets_kernel_, 1, 1);
+        if (merges && settings.bdpt.merge_radius > 0.0f) {  // vcm: the pool's hash grid
+            cl_uint g = 0;
+            opencl::set_kernel_arg(grid_kernel_, g++, settings);
+            for (const opencl::BufferHandle* b : {&cache_, &cache_lengths_}) opencl::set_kernel_arg(grid_kernel_, g++, *b);
+            opencl::set_kernel_arg(grid_kernel_, g++, paths);
+            for (const opencl::BufferHandle* b : {&grid_cells_, &grid_entries_}) opencl::set_kernel_arg(grid_kernel_, g++, *b);
+            opencl::set_kernel_arg(grid_kernel_, g++, grid_size);
+            runtime_.launch_1d(grid_kernel_, 1, 1);
+        }
     };
     LightCachePasses passes;
     passes.pilot = [&](const kernel::RenderKernelSettings& settings) {
@@ -209,6 +226,10 @@ void OpenClRenderer::launch_light_cache(const kernel::RenderKernelSettings& laun
         for (const opencl::BufferHandle* b : {&cache_, &cache_lengths_, &cache_offsets_}) opencl::set_kernel_arg(kernel_, a++, *b);
         opencl::set_kernel_arg(kernel_, a++, paths);
         opencl::set_kernel_arg(kernel_, a++, cl_int(input_.settings.bdpt.connections));
+        // without merging the grid's arguments are any buffers, never read (size 0)
+        for (const opencl::BufferHandle* b : {merges ? &grid_cells_ : &cache_offsets_, merges ? &grid_entries_ : &cache_offsets_})
+            opencl::set_kernel_arg(kernel_, a++, *b);
+        opencl::set_kernel_arg(kernel_, a++, grid_size);
         launch_range(runtime_, kernel_, pixels, local_size_, size_t(image));
     };
     launch_light_cache_samples(input_.settings, launch_settings, kernel_settings(kLightCachePilotSample, 1), pixels.first == 0, &pilot_vertices_,

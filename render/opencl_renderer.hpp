@@ -68,6 +68,9 @@ private:
     void launch_light_cache(const kernel::RenderKernelSettings& launch_settings, PixelRange pixels);
     opencl::KernelHandle cache_light_kernel_, cache_offsets_kernel_;
     opencl::BufferHandle cache_, cache_lengths_, cache_offsets_, cache_rays_, cache_lost_;
+    // vcm: the hash grid's kernel and buffers (kernels/hash_grid.h)
+    opencl::KernelHandle grid_kernel_;
+    opencl::BufferHandle grid_cells_, grid_entries_;
     int64_t pilot_vertices_ = -1;
     const brdf::float4* uploaded_texels_ = nullptr;  // the environment texels texels_ holds
     uint64_t uploaded_texels_version_ = 0;           // and Renderer::texels_version() when uploaded

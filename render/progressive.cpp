@@ -13,6 +13,7 @@
 #include "film/progress_bar.hpp"
 #include "render/film_file.hpp"
 #include "render/interrupt.hpp"
+#include "render/vcm.hpp"
 
 namespace lab::render {
 
@@ -78,6 +79,10 @@ film::ImageMetadata render_metadata(const Renderer& renderer, const RenderStatis
         if (integrator_descriptor(s.integrator).light_cache) {  // the cache's sizes change its estimator's noise, not its mean
             m.set("light_paths", s.bdpt.light_paths);
             m.set("connections", s.bdpt.connections);
+        }
+        if (integrator_descriptor(s.integrator).merges) {  // r_0 (0: the scene's share) and its shrinking
+            m.set("merge_radius", s.bdpt.merge_radius);
+            m.set("merge_alpha", kMergeRadiusAlpha);
         }
         if (s.strategy_debug.strategies != 0) m.set("strategies", s.strategy_debug.strategies);  // a STRATEGY_* mask other than the integrator's own
         if (s.strategy_debug.strategy_s >= 0) {  // one strategy alone (--strategies DIR)

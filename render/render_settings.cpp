@@ -7,6 +7,7 @@
 #include "ibl/background_blur.hpp"
 #include "kernels/host.hpp"
 #include "render/light_cache.hpp"
+#include "render/vcm.hpp"
 #include "render/option_words.hpp"
 
 namespace lab::render {
@@ -48,6 +49,7 @@ void check_render_settings(const RenderSettings& settings) {
         throw InputError("--max-depth", "", std::string(integrator_name(settings.integrator)) + " takes at most " +
                                                 std::to_string(kBdptMaxDepth) + " scattering events, got " + std::to_string(settings.max_depth));
     check_light_cache_settings(settings);
+    check_vcm_settings(settings);
     if (!(settings.bdpt.connection_roulette >= 0.0f && settings.bdpt.connection_roulette < 1.0f))
         throw InputError("--connection-roulette", "", "must be a weight in [0, 1)");
     if (settings.opencl.local_size < 0 || settings.opencl.local_size > 4096)

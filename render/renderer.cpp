@@ -13,6 +13,7 @@
 #include "render/camera_setup.hpp"
 #include "render/film_resolve.hpp"
 #include "render/integrator.hpp"
+#include "render/vcm.hpp"
 
 namespace lab::render {
 
@@ -153,6 +154,10 @@ kernel::RenderKernelSettings Renderer::kernel_settings(int first_sample, int cou
     launch_settings.bdpt.light_tracing_samples = 1.0f;
     launch_settings.bdpt.connection_samples = 1.0f;
     launch_settings.bdpt.connection_roulette = s.bdpt.connection_roulette;
+    // vcm: r_0; each sample's own radius is set per sample index (render/vcm.hpp), 0 merges nothing
+    launch_settings.bdpt.merge_radius0 = integrator_descriptor(s.integrator).merges ? vcm_base_radius(s, launch_settings.bdpt.scene_radius) : 0.0f;
+    launch_settings.bdpt.merge_radius = 0.0f;
+    launch_settings.bdpt.merge_samples = 0.0f;
     for (int i = 0; i < 3; ++i) {
         launch_settings.surface_lo[i] = compiled_.surface_lo[i];
         launch_settings.surface_hi[i] = compiled_.surface_hi[i];

@@ -3,7 +3,9 @@
 // that can make it sum to 1, with the balance and the power heuristic, over every strategy mask,
 // and with the light-vertex cache's sample counts (kernels/bdpt_cache.h: N_L / N_pixels light
 // subpaths per camera subpath for t = 1, M / (connectable vertices per light subpath) connections
-// to a given light vertex for s >= 2, t >= 2) as render/light_cache.cpp sets them.
+// to a given light vertex for s >= 2, t >= 2) as render/light_cache.cpp sets them, and with vertex
+// merging (vcm, kernels/vcm.h): the merges at every vertex that can merge join the sum, each weighed
+// by vcm_merge_weight from the light subpath and camera subpath that meet there.
 //
 // The paths come from the walks themselves, with the densities the walks recorded:
 //  - camera subpaths that reach a light (an emissive sphere or the environment): the path is the
@@ -29,6 +31,7 @@
 #include "render/host_renderer.hpp"
 #include "render/light_cache.hpp"
 #include "render/light_set.hpp"
+#include "render/vcm.hpp"
 #include "tests/render_inputs.hpp"
 
 
@@ -163,6 +166,15 @@ bool can_make(const Fixture& f, const std::vector<PathVertex>& x, int s, int t) 
     return !(s >= 2 && x[size_t(s - 1)].delta) && !x[size_t(s)].delta;
 }
 
+// Whether merging at x_m can make path x: its light subpath reaches x_m (the environment's disk
+// reaches x_1), x_m is neither the light's vertex nor the lens, and it scatters by a lobe no delta.
+bool can_merge(const Fixture& f, const std::vector<PathVertex>& x, int m) {
+    if (m < 1 || m > int(x.size()) - 2) return false;
+    if (x[0].type == VERTEX_ENVIRONMENT && !disk_reaches(f.settings, x[0].p, x[1].p)) return false;
+    const PathVertex& v = x[size_t(m)];
+    return v.type == VERTEX_SURFACE && vertex_scatters(&f.scene, &v) && !v.delta;
+}
+
 // How far the weights may sum from 1 on this path, from its geometry. A walk records each density
 // for the direction it sampled, and the weight computes the connection's from the stored points;
 // the two directions differ by the ray origin's offset off the surface (2 epsilon) and the march's
@@ -185,15 +197,17 @@ double geometric_slack(const std::vector<PathVertex>& x) {
 }
 
 struct Totals {
-    int paths = 0, environment_unreached = 0, delta = 0, point = 0, sphere = 0, environment = 0;
+    int paths = 0, environment_unreached = 0, delta = 0, point = 0, sphere = 0, environment = 0, merges = 0;
 };
 
 // The weights of every strategy of the mask that can make the path `walked` (one walk's subpath that
 // is a whole path) sum to 1, with bdpt's sample counts (one of each strategy) and the light-vertex
 // cache's: a pool of a quarter of the pixels with 3 connections, and of 4 times the pixels with 1,
-// over pilots of 0.6 and 2.5 connectable vertices per light subpath.
+// over pilots of 0.6 and 2.5 connectable vertices per light subpath; and vcm's, the first pool with
+// its merges at two radii (N_L pi r^2 of 0.03 and 7: merges weighed from far below to far above
+// the connections on this scene's densities).
 void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_is_camera, Totals* totals) {
-    kernel::RenderKernelSettings counts[3] = {f.settings, f.settings, f.settings};
+    kernel::RenderKernelSettings counts[5] = {f.settings, f.settings, f.settings, f.settings, f.settings};
     const struct {
         float light_paths;
         int connections;
@@ -206,6 +220,10 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
         cache.bdpt.connections = kCaches[c].connections;
         const double paths = lab::render::light_cache_paths(cache);
         lab::render::set_light_cache_weights(cache, uint64_t(kCaches[c].vertices_per_path * paths), &counts[c + 1]);
+    }
+    for (int c = 0; c < 2; ++c) {
+        counts[c + 3] = counts[1];
+        counts[c + 3].bdpt.merge_samples = c == 0 ? 0.03f : 7.0f;
     }
     const int n = int(walked.size());
     Split whole;
@@ -221,6 +239,7 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
                 f.settings.bdpt.strategies = mask;
                 f.settings.bdpt.light_tracing_samples = with_counts.bdpt.light_tracing_samples;
                 f.settings.bdpt.connection_samples = with_counts.bdpt.connection_samples;
+                f.settings.bdpt.merge_samples = with_counts.bdpt.merge_samples;
                 double sum = 0.0;
                 bool any = false;
                 for (int s = 0; s < n; ++s) {
@@ -234,6 +253,21 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
                     for (int i = std::max(0, t - 2); i < t; ++i) split.cam[size_t(i)].pdf_rev = 321.0f;
                     PathVertex sampled = s == 1 ? split.light[0] : split.cam[0];
                     sum += bdpt_mis_weight(&f.settings, &f.camera, &f.scene, split.light.data(), split.cam.data(), &sampled, s, t);
+                    any = true;
+                }
+                // the merges: x_0 .. x_m walked from the light, x_m .. x_{n-1} from the lens
+                for (int m = 1; f.settings.bdpt.merge_samples > 0.0f && m < n - 1; ++m) {
+                    if (!can_merge(f, x, m)) continue;
+                    const int s = m + 1, t = n - m;
+                    Split from_light, from_camera;
+                    split_off(f, walked, walked_is_camera ? t - 1 : s, walked_is_camera, &from_light);
+                    split_off(f, walked, walked_is_camera ? t : s - 1, walked_is_camera, &from_camera);
+                    std::vector<PathVertex>& light = from_light.light;
+                    std::vector<PathVertex>& cam = from_camera.cam;
+                    for (int i = std::max(0, s - 2); i < s; ++i) light[size_t(i)].pdf_rev = 123.0f;
+                    for (int i = std::max(0, t - 3); i < t; ++i) cam[size_t(i)].pdf_rev = 321.0f;
+                    sum += vcm_merge_weight(&f.settings, &f.camera, &f.scene, light.data(), cam.data(), s, t);
+                    totals->merges += 1;
                     any = true;
                 }
                 if (!any) continue;
@@ -291,12 +325,13 @@ TEST_CASE("BDPT: the MIS weights of all strategies that can make a walked path s
     }
     INFO("paths " << totals.paths << ": from a sphere " << totals.sphere << ", a point light " << totals.point << ", the environment "
                   << totals.environment << " (" << totals.environment_unreached << " where its disk does not reach), through a mirror "
-                  << totals.delta);
+                  << totals.delta << "; merges weighed " << totals.merges);
     CHECK(totals.sphere > 100);
     CHECK(totals.point > 100);
     CHECK(totals.environment > 100);
     CHECK(totals.environment_unreached > 20);
     CHECK(totals.delta > 50);
+    CHECK(totals.merges > 1000);
 }
 
 }  // namespace bdpt_mis_test

@@ -106,7 +106,8 @@ TEST_CASE("BDPT: the same seed gives the same image", "[render][bdpt][seed]") {
     // (and on OpenCL) the splat buffer's sums round in the order splats arrive: equal to rounding.
     // The light-vertex cache is keyed by the sample index alone: a pass split into launches of 64
     // pixels (each tracing the sample's pool again, the first splatting it) gives the same bits.
-    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::bdpt_cache}) {
+    // vcm's merges add in the hash grid's order, built by one work-item in the cache's order.
+    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::bdpt_cache, lab::render::Integrator::vcm}) {
         INFO(lab::render::integrator_name(integrator));
         std::vector<float> images[4];
         for (int run = 0; run < 4; ++run) {

@@ -65,6 +65,7 @@ struct SceneCase {
 
 const std::vector<SceneCase> kScenes = {
     {"caustic", 0.05, 1, lab::render::LightSampling::lights},
+    {"caustic_mirror", 0.05},
     {"cornell_box", 0.05},
     {"cornell_box_rect", 0.05},
     {"depth_of_field", 0.05},

@@ -36,6 +36,7 @@
 #include "render/host_renderer.hpp"
 #include "render/opencl_renderer.hpp"
 #include "render/progressive.hpp"
+#include "render/vcm.hpp"
 #include "scene/load_scene.hpp"
 #include "tests/render_inputs.hpp"
 #include "tests/worst_difference.hpp"
@@ -205,6 +206,8 @@ lab::render::RenderInput bidirectional_input(lab::render::Integrator integrator)
     input.settings.integrator = integrator;
     input.settings.max_depth = 6;
     input.settings.seed = 11;
+    // vcm: a radius whose merges find light vertices among the 64 light subpaths of a 16 x 16 sample
+    if (integrator == lab::render::Integrator::vcm) input.settings.bdpt.merge_radius = 0.2f;
     return input;
 }
 
@@ -291,7 +294,8 @@ TEST_CASE("Sample ranges on the OpenCL device: merged parts equal one run to flo
 
 TEST_CASE("Sample ranges with BDPT and light tracing on the host build: merged parts equal one run to float rounding, splats included",
           "[render][sample-ranges][bdpt][host]") {
-    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache}) {
+    for (lab::render::Integrator integrator :
+         {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache, lab::render::Integrator::vcm}) {
         INFO(lab::render::integrator_name(integrator));
         check_split_and_resume([&] { return std::make_unique<lab::render::HostRenderer>(bidirectional_input(integrator), 2); });
     }
@@ -300,7 +304,8 @@ TEST_CASE("Sample ranges with BDPT and light tracing on the host build: merged p
 TEST_CASE("Sample ranges with BDPT and light tracing on the OpenCL device: merged parts equal one run to float rounding, splats included",
           "[render][sample-ranges][bdpt][opencl]") {
     lab::opencl::Runtime runtime("");
-    for (lab::render::Integrator integrator : {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache}) {
+    for (lab::render::Integrator integrator :
+         {lab::render::Integrator::bdpt, lab::render::Integrator::lt, lab::render::Integrator::bdpt_cache, lab::render::Integrator::vcm}) {
         INFO(lab::render::integrator_name(integrator));
         check_split_and_resume([&] { return std::make_unique<lab::render::OpenClRenderer>(runtime, bidirectional_input(integrator)); });
     }
@@ -362,4 +367,15 @@ TEST_CASE("Render metadata: BDPT's vertex limit, MIS heuristic and strategies ar
     part.metadata = bdpt;
     part.metadata.set("seconds", 99.0f);  // differs between parts: fine
     CHECK_NOTHROW(lab::render::check_same_render("a.exr", bdpt, 16, 16, part));
+    // vcm: its first radius (0: the scene's share) and the radius's shrinking
+    CHECK(cache.find("merge_radius") == nullptr);
+    const lab::film::ImageMetadata vcm = metadata_of(bidirectional_input(Integrator::vcm));
+    CHECK(text(vcm, "merge_radius") == lab::film::metadata_text(lab::film::MetadataValue(0.2f)));
+    CHECK(text(vcm, "merge_alpha") == lab::film::metadata_text(lab::film::MetadataValue(lab::render::kMergeRadiusAlpha)));
+    for (const char* key : {"merge_radius", "merge_alpha"}) {
+        INFO(key);
+        part.metadata = vcm;
+        part.metadata.values[key] = 0.5f;
+        CHECK_THROWS_WITH(lab::render::check_same_render("a.exr", vcm, 16, 16, part), Catch::StartsWith(std::string("b.exr: dtoadq:") + key + ": "));
+    }
 }

@@ -323,8 +323,8 @@ cli_bad_input(NAME bench_breakdown.bad_repeats EXPECT "${E}--repeats: must be in
 set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_scene\\.json: cannot open"
               ARGS render ${D}/absent_scene.json --size 16x16 --spp 1 -o ${PNG})
-cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"vcm\" \\(pt, bdpt, lt, bdpt-cache\\)$"
-              ARGS ${RENDER} --integrator vcm)
+cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"ppm\" \\(pt, bdpt, lt, bdpt-cache, vcm\\)$"
+              ARGS ${RENDER} --integrator ppm)
 cli_bad_input(NAME render.bdpt_max_depth ABSENT ${PNG} EXPECT "${E}--max-depth: bdpt takes at most 62 scattering events, got 63$"
               ARGS ${RENDER} --integrator bdpt --max-depth 63)
 cli_bad_input(NAME render.bdpt_no_light ABSENT ${PNG}
@@ -346,11 +346,15 @@ cli_bad_input(NAME render.cache_connections ABSENT ${PNG} EXPECT "${E}--connecti
               ARGS ${RENDER} --integrator bdpt-cache --connections 65)
 cli_bad_input(NAME render.cache_too_large ABSENT ${PNG} EXPECT "${E}--light-paths: the light-vertex cache would take 2176 MiB .*"
               ARGS render scenes/metaballs.json --size 1024x1024 --spp 1 -o ${PNG} --integrator bdpt-cache --light-paths 1)
+cli_bad_input(NAME render.merge_radius_zero ABSENT ${PNG} EXPECT "${E}--merge-radius: must be a positive length, got 0$"
+              ARGS ${RENDER} --integrator vcm --merge-radius 0)
+cli_bad_input(NAME render.merge_radius_nan ABSENT ${PNG} EXPECT "${E}--merge-radius: must be a positive length, got nan$"
+              ARGS ${RENDER} --integrator vcm --merge-radius nan)
 cli_bad_input(NAME render.connection_roulette ABSENT ${PNG} EXPECT "${E}--connection-roulette: must be a weight in .0, 1.$"
               ARGS ${RENDER} --integrator bdpt --connection-roulette 1)
 cli_bad_input(NAME render.unknown_mis ABSENT ${PNG} EXPECT "${E}--mis: unknown value \"max\" \\(balance, power\\)$"
               ARGS ${RENDER} --integrator bdpt --mis max)
-cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt, lt or bdpt-cache"
+cli_bad_input(NAME render.strategies_with_pt ABSENT ${PNG} EXPECT "${E}--strategies: needs --integrator bdpt, lt, bdpt-cache or vcm"
               ARGS ${RENDER} --strategies ${CLI_SCRATCH}/strategies_pt)
 # the --strategies folder is checked before the render (nothing is written), and a folder the check
 # made is removed when another input error stops the command
