@@ -15,6 +15,7 @@
 #include "render/scene_environment.hpp"
 #include "scene/look_dev_references.hpp"
 #include "scene/load_scene.hpp"
+#include "scene/scene_time.hpp"
 #include "scene/test_model.hpp"
 
 namespace lab::cli {
@@ -29,6 +30,9 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
     cmd.add_option("--background-blur", o->background_blur,
                    "Blur of the background camera rays see, degrees in [0, 90] (a spherical Gaussian's sigma; 0: sharp); the lighting is "
                    "unchanged (default: the scene's, else 0)");
+    cmd.add_option("--scene-time", o->scene_time,
+                   "The scene time in seconds: where the scene's camera and environment keyframes are (docs/scenes.md, Time)")
+        ->capture_default_str();
     cmd.add_option("--size", o->size, "Image size WxH")->capture_default_str();
     cmd.add_option("--light-selection", o->light_selection, "How a light is chosen for next-event estimation: power or uniform")
         ->capture_default_str();
@@ -119,6 +123,7 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     *selection = render::parse_light_selection(o.light_selection);
     require_within(o.env_rotation, "--env-rotation", -36000.0f, 36000.0f);
     require_within(o.env_exposure, "--env-exposure", -64.0f, 64.0f);
+    if (!(std::fabs(o.scene_time) <= 1e9)) throw InputError("--scene-time", "", "must be a number of seconds in [-1e9, 1e9]");
     parse_on_off(o.ground, "--ground");
     scene::parse_look_dev_references(o.references, "--references");
     settings.object_bounds = parse_on_off(o.object_bounds, "--object-bounds");
@@ -144,7 +149,8 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     }
     if (!parse_on_off(o.ground, "--ground")) compile.disabled_objects.push_back(scene::kGroundObject);
     compile.march_everything = settings.march_everything;  // the scene as the renderer has it (the viewer's probe reads it)
-    scene::Scene scene = scene::apply_options(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), compile);
+    scene::Scene scene =
+        scene::apply_options(scene::scene_at_time(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), o.scene_time), compile);
     scene::Scene base_scene = scene;
     scene::LookDevReferences references = scene::parse_look_dev_references(o.references, "--references");
     references.shadow_catcher = references.shadow_catcher || o.shadow_catcher;  // the catcher takes the ground's place
@@ -162,6 +168,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     job.environment_name = env_name;
     job.env_rotation = o.env_rotation;
     job.env_exposure = o.env_exposure;
+    job.scene_time = o.scene_time;
     job.ground = parse_on_off(o.ground, "--ground");
     job.references = scene::look_dev_references_text(references);
     job.base_scene = std::move(base_scene);
@@ -192,6 +199,9 @@ film::ImageMetadata job_metadata(const RenderJob& job, const render::Renderer& r
     m.set("env_exposure", job.env_exposure);
     m.set("ground", job.ground ? "on" : "off");
     m.set("references", job.references);
+    char seconds[40];
+    std::snprintf(seconds, sizeof seconds, "%.17g", job.scene_time);  // every digit: a resume or merge at another time is refused
+    m.set("scene_time", seconds);
     return m;
 }
 

@@ -23,6 +23,7 @@ struct RenderJobOptions {
     std::string material;  // preset for the "sample" slot; empty: the scene's own
     std::string env;       // file or constant:R,G,B; empty: the scene's (else see default_env)
     std::string default_env;  // when neither --env nor the scene gives one; empty: no environment
+    double scene_time = 0.0;  // seconds: the scene's keyframes at this time (scene/scene_time.hpp)
     float env_rotation = 0.0f;
     float env_exposure = 0.0f;
     // What camera rays see of the environment (render::RenderSettings); unset: the scene's, else 1 and 0
@@ -59,6 +60,7 @@ struct RenderJob {
     render::RenderInput input;
     std::string scene_name, material_name, environment_name;
     float env_rotation = 0.0f, env_exposure = 0.0f;  // the options' (a scene's own are in its file)
+    double scene_time = 0.0;
     bool ground = true;
     std::string references = "none";  // the references' words, the shadow catcher's ("catcher") among them
     scene::Scene base_scene;  // input.scene without the look-dev references (the viewer adds and removes them)
