@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
@@ -87,21 +88,38 @@ void require_within(float value, const std::string& option, float lo, float hi) 
         throw InputError(option, "", "value " + std::to_string(value) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
+// The environment of `source` loaded with `options` by `load`, or the cache's copy of it turned and scaled.
+ibl::Environment cached_environment(EnvironmentCache* cache, const std::string& source, const ibl::EnvironmentOptions& options,
+                                    const std::function<ibl::Environment()>& load) {
+    if (cache && cache->environment && cache->environment->source() == source) {
+        ibl::Environment environment = *cache->environment;
+        environment.set_transform(options.rotation_degrees, options.exposure_stops);
+        return environment;
+    }
+    ibl::Environment environment = load();
+    if (cache) cache->environment = environment;
+    return environment;
+}
+
 std::optional<ibl::Environment> load_job_environment(const RenderJobOptions& o, const scene::Scene& scene, std::string* name) {
     ibl::EnvironmentOptions env_options;
     env_options.rotation_degrees = o.env_rotation;
     env_options.exposure_stops = o.env_exposure;
+    EnvironmentCache* cache = o.environment_cache.get();
     if (!o.env.empty()) {
         *name = o.env;
-        return ibl::load_environment(o.env, env_options);
+        return cached_environment(cache, o.env, env_options, [&] { return ibl::load_environment(o.env, env_options); });
     }
-    if (scene.environment) return render::load_scene_environment(scene, env_options, name);  // its rotation and exposure, the options' on top
+    if (scene.environment) {  // its rotation and exposure, the options' on top
+        const ibl::EnvironmentOptions options = render::scene_environment_options(scene, env_options, name);
+        return cached_environment(cache, *name, options, [&] { return *render::load_scene_environment(scene, env_options); });
+    }
     if (o.default_env.empty()) {
         *name = "none";
         return std::nullopt;
     }
     *name = o.default_env;
-    return ibl::load_environment(o.default_env, env_options);
+    return cached_environment(cache, o.default_env, env_options, [&] { return ibl::load_environment(o.default_env, env_options); });
 }
 
 }  // namespace
@@ -241,6 +259,10 @@ render::RenderLimits run_limits(const RenderRunOptions& run, const std::optional
     }
     if (resumed) {
         int held = int(resumed->ranges.count());
+        if (run.skip_finished && held >= run.spp) {
+            limits.samples = 0;  // a finished frame
+            return limits;
+        }
         if (!run.time_seconds && held >= run.spp)
             throw InputError("--spp", "", std::to_string(run.spp) + " samples per pixel in all, but " + resumed->path + " already holds " +
                                               std::to_string(held) + ": ask for more to resume");
@@ -252,7 +274,8 @@ render::RenderLimits run_limits(const RenderRunOptions& run, const std::optional
 
 }  // namespace
 
-void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra) {
+bool run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra,
+                    std::optional<opencl::Runtime>* shared_runtime) {
     // Everything that can be wrong with the input is found before the first sample.
     render::check_render_output(run.output);
     const render::AovSelection aov_selection = render::parse_aov_selection(run.aov, run.output);
@@ -271,8 +294,8 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (!run.resume.empty()) resumed = render::read_film_file(run.resume);
     render::RenderLimits limits = run_limits(run, range, resumed);
     RenderJob job = prepare_render_job(options);
-    std::optional<opencl::Runtime> runtime;
-    std::unique_ptr<render::Renderer> renderer = make_renderer(job, options.device, &runtime);
+    std::optional<opencl::Runtime> own_runtime;
+    std::unique_ptr<render::Renderer> renderer = make_renderer(job, options.device, shared_runtime ? shared_runtime : &own_runtime);
     auto metadata_now = [&] {
         film::ImageMetadata m = job_metadata(job, *renderer, renderer->statistics());
         for (const auto& [key, value] : extra.values) m.values[key] = value;
@@ -284,6 +307,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (resumed) {
         render::check_same_render("this render", metadata_now(), renderer->settings().width, renderer->settings().height, *resumed);
         renderer->restore_film(resumed->film, resumed->ranges);
+        if (limits.samples == 0) return false;  // finished (skip_finished), and a part of this render
     }
     if (!run.quiet)
         std::printf("%s on %s: kernel built in %.2f s\n", job.description.c_str(), renderer->device_description().c_str(),
@@ -301,6 +325,11 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     render::ProgressiveOutcome outcome = render::render_progressively(*renderer, limits);
     render::RenderStatistics stats = renderer->statistics();
     if (!outcome.failure.empty() && stats.samples_per_pixel == 0) render::fail_after_writing(outcome, 0, "");
+    if (stats.samples_per_pixel == 0 && (outcome.interrupted || render::interrupt_requested())) {
+        // a file without samples could be neither resumed nor merged (render/film_file.hpp)
+        std::fprintf(stderr, "dtoadq: interrupted before the first sample; nothing was written\n");
+        throw CLI::RuntimeError(render::kInterruptedExitStatus);
+    }
     film::ImageMetadata metadata = metadata_now();
     metadata.set("denoise", denoise ? "on" : "off");
     const render::FilmReadback film = renderer->film();
@@ -329,6 +358,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
         std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);
         throw CLI::RuntimeError(render::kInterruptedExitStatus);
     }
+    return true;
 }
 
 }  // namespace lab::cli

@@ -582,6 +582,37 @@ cli_bad_input(NAME view.turntable_turn EXPECT "${E}--turn: expected model or env
 cli_bad_input(NAME view.turntable_output EXPECT "${E}${CLI_SCRATCH}/turn\\.gif: expected a video \\(\\.mp4\\) or a frame pattern with one %d"
               ARGS view --turntable 4 -o ${CLI_SCRATCH}/turn.gif)
 
+# --- sequences (render --frames A:B --fps N, cli/render_sequence.hpp) on the host renderer: frame k is
+# the single render at k / N bit for bit, a sequence resumes, --video has every frame (skipped, exit
+# 77, without ffmpeg once the missing-ffmpeg error is checked) ------------------------------------
+foreach(sequence_case identity resume video)
+  add_test(NAME cli.render.sequence_${sequence_case}
+           COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/sequence_test.py $<TARGET_FILE:dtoadq> ${PROJECT_SOURCE_DIR}/tests/scene_data/animated.json
+                   ${CLI_SCRATCH}/sequence_${sequence_case} ${sequence_case})
+  set_tests_properties(cli.render.sequence_${sequence_case} PROPERTIES LABELS cli TIMEOUT 120 SKIP_RETURN_CODE 77)
+endforeach()
+set(SEQUENCE render tests/scene_data/animated.json --device host --size 8x8 --quiet)
+cli_bad_input(NAME render.frames_backwards EXPECT "${E}--frames: expected A:B, frame numbers with 0 <= A < B \\(frames A to B-1\\), got \"3:1\"$"
+              ARGS ${SEQUENCE} --frames 3:1 --fps 24 -o ${CLI_SCRATCH}/s_%04d.exr)
+cli_bad_input(NAME render.frames_no_fps EXPECT "${E}--fps: --frames needs the frames per second of scene time, in \\(0, 1000\\]$"
+              ARGS ${SEQUENCE} --frames 0:2 -o ${CLI_SCRATCH}/s_%04d.exr)
+cli_bad_input(NAME render.fps_without_frames EXPECT "${E}--fps: needs --frames A:B$" ARGS ${SEQUENCE} --fps 24 -o ${PNG})
+cli_bad_input(NAME render.frames_no_conversion ABSENT ${CLI_SCRATCH}/s.exr
+              EXPECT "${E}${CLI_SCRATCH}/s\\.exr: the output of --frames needs one %d or %0Nd for the frame number \\(frame_%04d\\.exr\\), and this has no %d$"
+              ARGS ${SEQUENCE} --frames 0:2 --fps 24 -o ${CLI_SCRATCH}/s.exr)
+cli_bad_input(NAME render.frames_two_conversions
+              EXPECT "${E}${CLI_SCRATCH}/s_%d_%04d\\.exr: the output of --frames needs one %d or %0Nd for the frame number \\(frame_%04d\\.exr\\), and this has 2 of them$"
+              ARGS ${SEQUENCE} --frames 0:2 --fps 24 -o ${CLI_SCRATCH}/s_%d_%04d.exr)
+cli_bad_input(NAME render.frames_with_time EXPECT "${E}--time: a sequence renders --spp samples per frame"
+              ARGS ${SEQUENCE} --frames 0:2 --fps 24 --time 5 -o ${CLI_SCRATCH}/s_%04d.exr)
+cli_bad_input(NAME render.frames_video_extension EXPECT "${E}${CLI_SCRATCH}/s\\.gif: --video writes an H\\.264 video: expected an \\.mp4$"
+              ARGS ${SEQUENCE} --frames 0:2 --fps 24 --video ${CLI_SCRATCH}/s.gif -o ${CLI_SCRATCH}/s_%04d.exr)
+cli_bad_input(NAME render.scene_time_not_a_number ABSENT ${PNG} EXPECT "${E}.*--scene-time.*soon"
+              ARGS ${SEQUENCE} --scene-time soon -o ${PNG})
+cli_bad_input(NAME render.bad_keyframes ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_bad_keyframes\\.json: camera\\.keyframes\\.times\\[2\\]: time 1 is not after the one before it \\(2\\): times must increase strictly$"
+              ARGS render ${D}/scene_bad_keyframes.json --device host --size 8x8 --quiet -o ${PNG})
+
 # --- fit (docs/fitting.md): a bad measured file and bad options, each one line, no preset written --
 set(FIT fit -o ${PNG}.json --quiet --measured)
 cli_bad_input(NAME fit.missing_file ABSENT ${PNG}.json EXPECT "${E}${D}/absent\\.binary: cannot open the measured BRDF file$"
