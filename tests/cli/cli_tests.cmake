@@ -479,6 +479,12 @@ foreach(device cpu host)
                      EXPECT "interrupted after [1-9][0-9]* samples per pixel; the image so far was written"
                      ARGS render ${SRC}/scenes/cornell_box.json --device ${device} --size 48x48 --spp 16777216 -o out.exr)
 endforeach()
+# Ctrl-C in a sequence's first frame: that frame is written with its samples so far (the next run
+# continues it, tests/cli/sequence_test.py) and the sequence stops there.
+cli_interrupt_test(NAME render.sequence_ctrl_c TRIGGER "kernel built in" DELAY 0.3
+                   EXRS f_0001.exr MIN_SPP 1 MAX_SPP 16777215 ABSENT f_0002.exr
+                   EXPECT "interrupted after [1-9][0-9]* samples per pixel; the image so far was written"
+                   ARGS render ${SRC}/tests/scene_data/animated.json --device host --size 24x16 --spp 16777216 --frames 1:3 --fps 4 -o f_%04d.exr)
 # A second Ctrl-C right after the first stops at once, during the write if it comes then: the EXR is
 # absent or complete, never truncated (writes are atomic).
 cli_interrupt_test(NAME preview.second_ctrl_c TRIGGER "kernel built in" DELAY 2 ACTION int,0.02
