@@ -12,6 +12,9 @@
 #include "render/interrupt.hpp"
 #include "render/progressive.hpp"
 #include "render/sample_ranges.hpp"
+#include "scene/load_scene.hpp"
+#include "scene/scene_time.hpp"
+#include "scene/test_model.hpp"
 
 namespace lab::cli {
 
@@ -57,6 +60,9 @@ void run_render_sequence(const RenderJobOptions& job, const RenderRunOptions& ru
                                             "written are kept, and without --video the sequence renders");
     }
     render::check_render_output(frame_path(run.output, first));  // and the PNG beside it
+    // a time where a spline takes the camera out of its range stops the sequence before its first frame
+    const scene::Scene scene = job.scene.empty() ? scene::load_test_model() : scene::load_scene(job.scene);
+    for (int64_t k = first; k < end; ++k) scene::scene_at_time(scene, double(k) / sequence.fps);
 
     render::InterruptScope interrupt_scope;  // a Ctrl-C between two frames stops the sequence too
     std::optional<opencl::Runtime> runtime;  // one program for every frame

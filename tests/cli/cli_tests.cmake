@@ -600,7 +600,7 @@ endforeach()
 set(SEQUENCE render tests/scene_data/animated.json --device host --size 8x8 --quiet)
 cli_bad_input(NAME render.frames_backwards EXPECT "${E}--frames: expected A:B, frame numbers with 0 <= A < B \\(frames A to B-1\\), got \"3:1\"$"
               ARGS ${SEQUENCE} --frames 3:1 --fps 24 -o ${CLI_SCRATCH}/s_%04d.exr)
-cli_bad_input(NAME render.frames_no_fps EXPECT "${E}--fps: --frames needs the frames per second of scene time, in \\(0, 1000\\]$"
+cli_bad_input(NAME render.frames_no_fps EXPECT "${E}--fps: --frames needs the frames per second of scene time, in .0, 1000.$"
               ARGS ${SEQUENCE} --frames 0:2 -o ${CLI_SCRATCH}/s_%04d.exr)
 cli_bad_input(NAME render.fps_without_frames EXPECT "${E}--fps: needs --frames A:B$" ARGS ${SEQUENCE} --fps 24 -o ${PNG})
 cli_bad_input(NAME render.frames_no_conversion ABSENT ${CLI_SCRATCH}/s.exr
@@ -615,6 +615,10 @@ cli_bad_input(NAME render.frames_video_extension EXPECT "${E}${CLI_SCRATCH}/s\\.
               ARGS ${SEQUENCE} --frames 0:2 --fps 24 --video ${CLI_SCRATCH}/s.gif -o ${CLI_SCRATCH}/s_%04d.exr)
 cli_bad_input(NAME render.scene_time_not_a_number ABSENT ${PNG} EXPECT "${E}.*--scene-time.*soon"
               ARGS ${SEQUENCE} --scene-time soon -o ${PNG})
+# every frame's camera is checked before the first is rendered: fov 179, 179, 1 (Catmull-Rom) overshoots at t = 0.5
+cli_bad_input(NAME render.frames_camera_overshoots ABSENT ${CLI_SCRATCH}/o_0000.exr
+              EXPECT "${E}${D}/scene_keyframes_overshoot\\.json: camera\\.keyframes: at t = 0\\.5 s the camera's fov_degrees value 190\\.125 is out of range \\(0, 180\\)$"
+              ARGS render ${D}/scene_keyframes_overshoot.json --device host --size 8x8 --quiet --frames 0:3 --fps 2 -o ${CLI_SCRATCH}/o_%04d.exr)
 cli_bad_input(NAME render.bad_keyframes ABSENT ${PNG}
               EXPECT "${E}${D}/scene_bad_keyframes\\.json: camera\\.keyframes\\.times\\[2\\]: time 1 is not after the one before it \\(2\\): times must increase strictly$"
               ARGS render ${D}/scene_bad_keyframes.json --device host --size 8x8 --quiet -o ${PNG})
