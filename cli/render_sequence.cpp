@@ -1,6 +1,5 @@
 #include "cli/render_sequence.hpp"
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -56,8 +55,8 @@ void run_render_sequence(const RenderJobOptions& job, const RenderRunOptions& ru
     if (!sequence.video.empty()) {
         if (fs::path(sequence.video).extension() != ".mp4") throw InputError(sequence.video, "", "--video writes an H.264 video: expected an .mp4");
         if (!ffmpeg_available())
-            throw InputError("--video", "", "needs the ffmpeg program, which did not run (sh tools/install-deps.sh installs it); frame files already "
-                                            "written are kept, and without --video the sequence renders");
+            throw InputError("--video", "", "needs the ffmpeg program, which did not run (sh tools/install-deps.sh installs it): nothing was "
+                                            "rendered and the frame files are as they were; without --video the frames render alone");
     }
     render::check_render_output(frame_path(run.output, first));  // and the PNG beside it
     // a time where a spline takes the camera out of its range stops the sequence before its first frame
