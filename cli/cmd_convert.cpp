@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "common/input_error.hpp"
+#include "fit/fit_optimizer.hpp"
 #include "interchange/export_material.hpp"
 #include "interchange/formats.hpp"
 
@@ -31,15 +31,14 @@ void print_notes(const std::string& file, const interchange::Notes& notes) {
 }
 
 void run_convert(const ConvertOptions& o) {
+    lab::fit::FitOptions options;
+    options.starts = o.fit_starts;
+    options.max_evaluations = o.fit_evaluations;
+    lab::fit::check_fit_options(options, "--fit-starts", "--fit-evaluations");
     const interchange::Format from = interchange::format_of_file(o.input);
     const interchange::Format to = o.to.empty() ? interchange::format_of_file(o.output) : interchange::format_named(o.to, "command line", "--to");
     const interchange::Imported imported = interchange::read_material(o.input, from, o.material);
     print_notes(o.input, imported.notes);
-    if (o.fit_starts < 1 || o.fit_evaluations < 10)
-        throw InputError("command line", "--fit-starts", "needs at least 1 start of at least 10 evaluations");
-    lab::fit::FitOptions options;
-    options.starts = o.fit_starts;
-    options.max_evaluations = o.fit_evaluations;
     const interchange::Notes written = interchange::export_material(imported.preset, to, o.output, options);
     print_notes(o.output, written);
     if (!o.quiet)

@@ -118,9 +118,10 @@ void run_fit(const FitCommandOptions& o) {
     fit::parse_lobes(o.lobes, &space);
     space.anisotropic = o.anisotropic;
     if (space.anisotropic && !space.glossy) throw InputError("command line", "--anisotropic", "needs the glossy lobe in --lobes");
-    if (o.starts < 1 || o.starts > 1000) throw InputError("command line", "--starts", "must be in [1, 1000], got " + std::to_string(o.starts));
-    if (o.max_evaluations < 10 || o.max_evaluations > 1000000)
-        throw InputError("command line", "--max-evaluations", "must be in [10, 1000000], got " + std::to_string(o.max_evaluations));
+    fit::FitOptions options;
+    options.starts = o.starts;
+    options.max_evaluations = o.max_evaluations;
+    fit::check_fit_options(options, "--starts", "--max-evaluations");
     fit::PairGrid grid = parse_stride(o.stride);
     grid.phi_h_count = space.anisotropic ? 4 : 1;
     const std::string report_path = o.report.empty() ? default_report_path(o.output) : o.report;
@@ -133,9 +134,6 @@ void run_fit(const FitCommandOptions& o) {
     const std::vector<fit::FitPair> pairs = fit::fit_pairs(table, grid);
     if (pairs.empty()) throw InputError(o.measured, "", "no table entry above the horizon at these strides");
 
-    fit::FitOptions options;
-    options.starts = o.starts;
-    options.max_evaluations = o.max_evaluations;
     FitProgressLine line(o.starts, o.quiet);
     const fit::FitResult result = fit::fit_material(pairs, space, options, [&line](int s, int n, double e, double best) {
         line.update(s, n, e, best);

@@ -8,6 +8,7 @@
 
 #include <nlopt.h>
 
+#include "common/input_error.hpp"
 #include "fit/fit_metric.hpp"
 
 namespace lab::fit {
@@ -54,6 +55,13 @@ double objective(unsigned n, const double* x, double*, void* data) {
 }
 
 }  // namespace
+
+void check_fit_options(const FitOptions& options, const std::string& starts_field, const std::string& evaluations_field) {
+    if (options.starts < 1 || options.starts > 1000)
+        throw InputError("command line", starts_field, "must be in [1, 1000], got " + std::to_string(options.starts));
+    if (options.max_evaluations < 10 || options.max_evaluations > 1000000)
+        throw InputError("command line", evaluations_field, "must be in [10, 1000000], got " + std::to_string(options.max_evaluations));
+}
 
 FitResult fit_material(const std::vector<FitPair>& pairs, const FitSpace& space, const FitOptions& options,
                        const FitProgress& progress) {

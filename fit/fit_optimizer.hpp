@@ -21,6 +21,11 @@ struct FitOptions {
     double relative_tolerance = 1e-7;    // BOBYQA stops when the parameters move less than this
 };
 
+// The ranges a user may ask for (starts in [1, 1000], evaluations per start in [10, 1000000]):
+// throws InputError("command line", FIELD, ...) naming the option that is out of range, so every
+// command that fits checks them before reading its input.
+void check_fit_options(const FitOptions& options, const std::string& starts_field, const std::string& evaluations_field);
+
 struct FitStart {
     std::vector<double> x;  // where it ended
     double error;

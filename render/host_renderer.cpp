@@ -87,23 +87,23 @@ void HostRenderer::launch_light_cache(const kernel::RenderKernelSettings& launch
         });
         host_kernels::bdpt_cache_offsets(cache_offsets_.data(), paths);
     };
-    if (pilot_vertices_ < 0) {
+    LightCachePasses passes;
+    passes.pilot = [&](const kernel::RenderKernelSettings& settings) {
         std::vector<uint32_t> rays(size_t(paths), 0u), lost(size_t(paths), 0u);  // the pilot's rays are no render's
-        light_pass(kernel_settings(kLightCachePilotSample, 1), 0, rays.data(), lost.data());
-        pilot_vertices_ = int64_t(cache_offsets_[size_t(paths)]);
-    }
-    for (int i = 0; i < launch_settings.sample_count; ++i) {
-        kernel::RenderKernelSettings settings = launch_settings;
-        settings.first_sample = launch_settings.first_sample + i;
-        settings.sample_count = 1;
-        set_light_cache_weights(input_.settings, uint64_t(pilot_vertices_), &settings);
-        // a pass split into pixel ranges traces the pool for each; the first range splats it
-        light_pass(settings, range.first == 0 ? 1 : 0, cache_rays_.data(), cache_lost_.data());
+        light_pass(settings, 0, rays.data(), lost.data());
+        return int64_t(cache_offsets_[size_t(paths)]);
+    };
+    passes.light = [&](const kernel::RenderKernelSettings& settings, bool splats) {
+        light_pass(settings, splats ? 1 : 0, cache_rays_.data(), cache_lost_.data());
+    };
+    passes.pixels = [&](const kernel::RenderKernelSettings& settings) {
         parallel_for(range.first, range.first + range.count, std::max(1, input_.settings.width), [&](int pixel) {
             host_kernels::bdpt_cache_pixel(&settings, &camera_, &scene, pixel, cache_.data(), cache_lengths_.data(), cache_offsets_.data(), paths,
                                            input_.settings.bdpt.connections, accumulation, squares, rays_.data(), lost_.data());
         });
-    }
+    };
+    launch_light_cache_samples(input_.settings, launch_settings, kernel_settings(kLightCachePilotSample, 1), range.first == 0, &pilot_vertices_,
+                               passes);
 }
 
 FilmReadback HostRenderer::read_film() const { return film_; }

@@ -27,6 +27,20 @@ void set_light_cache_weights(const RenderSettings& settings, uint64_t pilot_vert
     launch_settings->bdpt.connection_samples = float(double(settings.bdpt.connections) / mean);
 }
 
+void launch_light_cache_samples(const RenderSettings& settings, const kernel::RenderKernelSettings& launch_settings,
+                                const kernel::RenderKernelSettings& pilot_settings, bool first_range, int64_t* pilot_vertices,
+                                const LightCachePasses& passes) {
+    if (*pilot_vertices < 0) *pilot_vertices = passes.pilot(pilot_settings);
+    for (int i = 0; i < launch_settings.sample_count; ++i) {
+        kernel::RenderKernelSettings sample_settings = launch_settings;
+        sample_settings.first_sample = launch_settings.first_sample + i;
+        sample_settings.sample_count = 1;
+        set_light_cache_weights(settings, uint64_t(*pilot_vertices), &sample_settings);
+        passes.light(sample_settings, first_range);
+        passes.pixels(sample_settings);
+    }
+}
+
 void check_light_cache_settings(const RenderSettings& settings) {
     const float ratio = settings.bdpt.light_paths;
     if (!(ratio > 0.0f && ratio <= kMaxLightPathsPerPixel))

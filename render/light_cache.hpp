@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "kernels/host.hpp"
 #include "render/render_settings.hpp"
@@ -38,6 +39,23 @@ constexpr int kLightCachePilotSample = -1;
 // choice). A pilot without connectable vertices leaves their mean at 1: the weights only need to
 // sum to 1, and no sample's pool is likely to hold any either.
 void set_light_cache_weights(const RenderSettings& settings, uint64_t pilot_vertices, kernel::RenderKernelSettings* launch_settings);
+
+// What a renderer does for the cache, on its own device: trace the pilot pool (no splats, its rays
+// counted in no render) and return its connectable vertices; trace one sample index's pool,
+// splatting its t = 1 strategies when `splats`; join the launch's pixels to that pool.
+struct LightCachePasses {
+    std::function<int64_t(const kernel::RenderKernelSettings&)> pilot;
+    std::function<void(const kernel::RenderKernelSettings&, bool splats)> light;
+    std::function<void(const kernel::RenderKernelSettings&)> pixels;
+};
+
+// One launch of the cache over a pixel range, the same for every renderer: the pilot once per
+// state (*pilot_vertices < 0 until then, from `pilot_settings`), then for each sample index of
+// `launch_settings` its pool and its pixels. A pass split into pixel ranges traces each pool for
+// every range and splats it from the range that starts the image only (`first_range`).
+void launch_light_cache_samples(const RenderSettings& settings, const kernel::RenderKernelSettings& launch_settings,
+                                const kernel::RenderKernelSettings& pilot_settings, bool first_range, int64_t* pilot_vertices,
+                                const LightCachePasses& passes);
 
 // Throws lab::InputError naming --light-paths or --connections when out of range, or --light-paths
 // when the cache would take more than kMaxLightCacheBytes. Called by check_render_settings.

@@ -193,28 +193,26 @@ void OpenClRenderer::launch_light_cache(const kernel::RenderKernelSettings& laun
         opencl::set_kernel_arg(cache_offsets_kernel_, 1, paths);
         runtime_.launch_1d(cache_offsets_kernel_, 1, 1);
     };
-    if (pilot_vertices_ < 0) {
-        light_pass(kernel_settings(kLightCachePilotSample, 1), 0);
+    LightCachePasses passes;
+    passes.pilot = [&](const kernel::RenderKernelSettings& settings) {
+        light_pass(settings, 0);
         std::vector<cl_uint> offsets(size_t(paths) + 1);
         runtime_.read(cache_offsets_, offsets.data(), offsets.size() * sizeof(cl_uint));
-        pilot_vertices_ = int64_t(offsets.back());
         std::vector<cl_uint> zeros(size_t(paths), 0u);  // the pilot's rays are no render's
         runtime_.write(cache_rays_, zeros.data(), zeros.size() * sizeof(cl_uint));
         runtime_.write(cache_lost_, zeros.data(), zeros.size() * sizeof(cl_uint));
-    }
-    for (int i = 0; i < launch_settings.sample_count; ++i) {
-        kernel::RenderKernelSettings settings = launch_settings;
-        settings.first_sample = launch_settings.first_sample + i;
-        settings.sample_count = 1;
-        set_light_cache_weights(input_.settings, uint64_t(pilot_vertices_), &settings);
-        // a pass split into pixel ranges traces the pool for each; the first range splats it
-        light_pass(settings, pixels.first == 0 ? 1 : 0);
+        return int64_t(offsets.back());
+    };
+    passes.light = [&](const kernel::RenderKernelSettings& settings, bool splats) { light_pass(settings, splats ? 1 : 0); };
+    passes.pixels = [&](const kernel::RenderKernelSettings& settings) {
         cl_uint a = bind_render_arguments(kernel_, settings);
         for (const opencl::BufferHandle* b : {&cache_, &cache_lengths_, &cache_offsets_}) opencl::set_kernel_arg(kernel_, a++, *b);
         opencl::set_kernel_arg(kernel_, a++, paths);
         opencl::set_kernel_arg(kernel_, a++, cl_int(input_.settings.bdpt.connections));
         launch_range(runtime_, kernel_, pixels, local_size_, size_t(image));
-    }
+    };
+    launch_light_cache_samples(input_.settings, launch_settings, kernel_settings(kLightCachePilotSample, 1), pixels.first == 0, &pilot_vertices_,
+                               passes);
     runtime_.finish();
 }
 

@@ -654,6 +654,13 @@ cli_bad_input(NAME convert.gltf_out_of_range ABSENT ${PNG}
 cli_bad_input(NAME convert.gltf_missing_material ABSENT ${PNG}
               EXPECT "${E}${D}/no_material\\.gltf: materials: missing material: the document holds no materials$"
               ARGS convert ${D}/no_material.gltf --to mtlx -o ${PNG})
+# the fit's options are checked before the input is read (the input here does not exist)
+cli_bad_input(NAME convert.fit_evaluations_out_of_range ABSENT ${PNG}
+              EXPECT "${E}command line: --fit-evaluations: must be in \\[10, 1000000\\], got 5$"
+              ARGS convert ${D}/no_such_material.json --fit-evaluations 5 -o ${PNG})
+cli_bad_input(NAME convert.fit_starts_out_of_range ABSENT ${PNG}
+              EXPECT "${E}command line: --fit-starts: must be in \\[1, 1000\\], got 0$"
+              ARGS convert ${D}/no_such_material.json --fit-starts 0 -o ${PNG})
 # a lab preset is fitted to openpbr first; one with a transmission lobe cannot be
 cli_bad_input(NAME convert.lab_glass_not_fitted ABSENT ${PNG}
               EXPECT "${E}presets/glass\\.json: lobes: a mirror or transmission lobe cannot be fitted from reflectance at direction pairs"
