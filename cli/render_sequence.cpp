@@ -70,8 +70,11 @@ void run_render_sequence(const RenderJobOptions& job, const RenderRunOptions& ru
     int rendered = 0, continued = 0, finished = 0;
     for (int64_t k = first; k < end; ++k) {
         if (render::interrupt_requested()) {
-            std::fprintf(stderr, "dtoadq: interrupted before frame %lld; frames %lld to %lld are written\n", (long long)k, (long long)first,
-                         (long long)k - 1);
+            if (k == first)
+                std::fprintf(stderr, "dtoadq: interrupted before the first frame; nothing was written\n");
+            else
+                std::fprintf(stderr, "dtoadq: interrupted before frame %lld; frames %lld to %lld are written\n", (long long)k, (long long)first,
+                             (long long)k - 1);
             throw CLI::RuntimeError(render::kInterruptedExitStatus);
         }
         frame_job.scene_time = double(k) / sequence.fps;
