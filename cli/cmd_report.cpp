@@ -55,6 +55,8 @@ struct ReportOptions {
     std::string scene = "scenes/cornell_box.json";  // rendered by BDPT on the render core
     std::string scene_integrator = "bdpt";
     int scene_spp = 32;
+    std::string studio_scene = "scenes/studio.json";  // the look-dev studio's area lights, by the path tracer
+    std::string studio_integrator = "pt";
     std::string device;
     // the speed-against-accuracy study (cli/report_study.hpp)
     bool study = true;
@@ -134,22 +136,24 @@ ReportPreviews write_previews(const ReportOptions& o, const std::vector<brdf::Pr
     return previews;
 }
 
-// The scene, rendered by --scene-integrator (bdpt) at the previews' size, written as scene_<stem>.exr/.png.
-std::optional<ReportScene> write_scene_render(const ReportOptions& o, const fs::path& out, ReportProgress* progress, std::string* device) {
+// A scene (--scene by --scene-integrator, --studio-scene by --studio-integrator) rendered at the
+// previews' size with --scene-spp, written as scene_<stem>.exr/.png.
+std::optional<ReportScene> write_scene_render(const ReportOptions& o, const std::string& file, const std::string& integrator, const fs::path& out,
+                                              ReportProgress* progress, std::string* device) {
     RenderJobOptions job_options;
-    job_options.scene = o.scene;
+    job_options.scene = file;
     job_options.size = o.preview_size;
-    job_options.integrator = o.scene_integrator;
+    job_options.integrator = integrator;
     RenderJob job = prepare_render_job(job_options);
-    std::string name = "scene_" + fs::path(o.scene).stem().string();
-    std::printf("report: render of %s -> %s.png\n", o.scene.c_str(), (out / name).c_str());
+    std::string name = "scene_" + fs::path(file).stem().string();
+    std::printf("report: render of %s -> %s.png\n", file.c_str(), (out / name).c_str());
     std::fflush(stdout);
     std::optional<opencl::Runtime> runtime;
     std::unique_ptr<render::Renderer> renderer = make_renderer(job, o.device, &runtime);
     *device = renderer->device_description();
-    ReportScene scene{o.scene_integrator, o.preview_size, {fs::path(o.scene).filename().string(), name + ".png", {}}};
-    if (!render_report_image(*renderer, job, o.scene_spp, out / (name + ".exr"), "the render of " + fs::path(o.scene).filename().string(),
-                             progress, &scene.render.stats))
+    ReportScene scene{integrator, o.preview_size, {fs::path(file).filename().string(), name + ".png", {}}};
+    if (!render_report_image(*renderer, job, o.scene_spp, out / (name + ".exr"), "the render of " + fs::path(file).filename().string(), progress,
+                             &scene.render.stats))
         return std::nullopt;
     return scene;
 }
@@ -196,6 +200,8 @@ void run_report(const ReportOptions& o) {
         throw InputError(o.env, "", "no such file (--env; run from the repository root, or pass --env)");
     if (o.preview && !o.scene.empty() && !fs::exists(o.scene))
         throw InputError(o.scene, "", "no such file (--scene; run from the repository root, or pass --scene)");
+    if (o.preview && !o.studio_scene.empty() && !fs::exists(o.studio_scene))
+        throw InputError(o.studio_scene, "", "no such file (--studio-scene; run from the repository root, or pass --studio-scene)");
     if (o.scene_spp < 1 || o.scene_spp > 1 << 20) throw InputError("--scene-spp", "", "must be in [1, 1048576]");
     if (o.study) {
         // 0: the budget's; else in (0, 3600] (NaN is refused)
@@ -224,6 +230,7 @@ void run_report(const ReportOptions& o) {
     std::vector<std::string> stages{"lobe plots", "albedo chart"};
     if (o.preview) stages.push_back("previews");
     if (o.preview && !o.scene.empty()) stages.push_back("scene render");
+    if (o.preview && !o.studio_scene.empty()) stages.push_back("studio render");
     if (o.study) stages.push_back("speed against accuracy");
     stages.push_back("stability atlas");
     stages.push_back("validation");
@@ -278,7 +285,7 @@ void run_report(const ReportOptions& o) {
 
     std::string device;
     ReportPreviews previews;
-    std::optional<ReportScene> scene;
+    std::vector<ReportScene> scenes;
     if (o.preview) {
         begin_stage("previews");
         previews = write_previews(o, presets, out, &progress, &device);
@@ -286,8 +293,15 @@ void run_report(const ReportOptions& o) {
         stop_if_interrupted(progress, presets);
         if (!o.scene.empty()) {
             begin_stage("scene render");
-            scene = write_scene_render(o, out, &progress, &device);
+            if (std::optional<ReportScene> scene = write_scene_render(o, o.scene, o.scene_integrator, out, &progress, &device)) scenes.push_back(*scene);
             end_stage("scene render");
+            stop_if_interrupted(progress, presets);
+        }
+        if (!o.studio_scene.empty()) {
+            begin_stage("studio render");
+            if (std::optional<ReportScene> scene = write_scene_render(o, o.studio_scene, o.studio_integrator, out, &progress, &device))
+                scenes.push_back(*scene);
+            end_stage("studio render");
             stop_if_interrupted(progress, presets);
         }
     }
@@ -348,7 +362,7 @@ void run_report(const ReportOptions& o) {
     page.sections.push_back(lobes_section(lobes, out));
     page.sections.push_back(albedo_section(presets, albedo_curves, albedo_options, "albedo.png", "albedo.csv"));
     page.sections.push_back(validation_section(results, options, out));
-    if (scene) page.sections.push_back(scene_section(*scene, out));
+    if (!scenes.empty()) page.sections.push_back(scene_section(scenes, out));
     if (o.study) page.sections.push_back(speed_section(study, budget, o.study_size, out));
     page.sections.push_back(atlas_section(atlas, out));
     page.sections.push_back(machine_section(device, stage_seconds, out));
@@ -380,7 +394,10 @@ void register_report(CLI::App& app) {
     cmd->add_option("--preview-spp", options->preview_spp, "Preview samples per pixel")->capture_default_str();
     cmd->add_option("--scene", options->scene, "Scene rendered after the previews (empty: none)")->capture_default_str();
     cmd->add_option("--scene-integrator", options->scene_integrator, "Integrator of the scene render: bdpt, pt or lt")->capture_default_str();
-    cmd->add_option("--scene-spp", options->scene_spp, "Samples per pixel of the scene render")->capture_default_str();
+    cmd->add_option("--scene-spp", options->scene_spp, "Samples per pixel of the scene renders (--scene and --studio-scene)")->capture_default_str();
+    cmd->add_option("--studio-scene", options->studio_scene, "Look-dev studio rendered after --scene: area lights, no environment (empty: none)")
+        ->capture_default_str();
+    cmd->add_option("--studio-integrator", options->studio_integrator, "Integrator of the studio render: pt, bdpt or lt")->capture_default_str();
     cmd->add_flag("!--no-preview", options->preview, "Skip the path-traced previews and the scene render");
     auto* quick = cmd->add_flag("--quick", "The speed-against-accuracy study's quick budget: 2 s per run, 16 s references (the default)");
     auto* full = cmd->add_flag("--full", options->full, "The study's full budget: 10 s per run, 160 s references");

@@ -177,17 +177,22 @@ report::Section validation_section(const std::vector<validation::MaterialValidat
     return s;
 }
 
-report::Section scene_section(const ReportScene& scene, const fs::path& folder) {
-    report::Section s{"scene", "Scene render", "", {}};
-    report::Table table;
-    table.header = kRenderHeader;
-    table.rows.push_back(render_row(scene.render));
-    s.figures.push_back({scene.render.image, "render of " + scene.render.name,
-                         scene.render.name + " rendered by " + scene.integrator + " at " + scene.size + ", " +
-                             std::to_string(scene.render.stats.samples_per_pixel) +
-                             " samples per pixel, ACES tone map; its EXR lies beside the PNG. Seconds are the device's time for the "
-                             "samples (the kernel build excluded).",
-                         with_csv(std::move(table), folder, "scene.csv")});
+report::Section scene_section(const std::vector<ReportScene>& scenes, const fs::path& folder) {
+    report::Section s{"scene", "Scene renders", "", {}};
+    report::Table all;
+    all.header = kRenderHeader;
+    for (const ReportScene& scene : scenes) all.rows.push_back(render_row(scene.render));
+    all = with_csv(std::move(all), folder, "scene.csv");
+    for (const ReportScene& scene : scenes) {
+        report::Table table = all;
+        table.rows = {render_row(scene.render)};
+        s.figures.push_back({scene.render.image, "render of " + scene.render.name,
+                             scene.render.name + " rendered by " + scene.integrator + " at " + scene.size + ", " +
+                                 std::to_string(scene.render.stats.samples_per_pixel) +
+                                 " samples per pixel, ACES tone map; its EXR lies beside the PNG. Seconds are the device's time for the "
+                                 "samples (the kernel build excluded).",
+                             table});
+    }
     return s;
 }
 

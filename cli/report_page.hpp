@@ -53,7 +53,8 @@ report::Section albedo_section(const std::vector<brdf::Preset>& presets, const s
                                const analysis::AlbedoCurveOptions& options, const std::string& image, const std::string& csv);
 report::Section validation_section(const std::vector<validation::MaterialValidation>& results, const validation::ValidationOptions& options,
                                    const std::filesystem::path& folder);
-report::Section scene_section(const ReportScene& scene, const std::filesystem::path& folder);
+// The scene renders, a figure each; writes scene.csv (one row per render).
+report::Section scene_section(const std::vector<ReportScene>& scenes, const std::filesystem::path& folder);
 // The speed-against-accuracy study: a chart per preset or scene, with the runs' figures; writes their tables' CSV.
 report::Section speed_section(const StudyResults& study, const StudyBudget& budget, const std::string& size, const std::filesystem::path& folder);
 // The stability atlas: an entry per chart, its finding first; writes its tables' CSV.

@@ -103,7 +103,7 @@ SS_FN float3 bdpt_connect(const RenderKernelSettings* settings, MarchSettings ma
         sampled.type = l.type == LIGHT_ENVIRONMENT ? VERTEX_ENVIRONMENT : VERTEX_LIGHT;
         sampled.p = l.type == LIGHT_ENVIRONMENT ? ls.wi : ls.position;
         sampled.frame = frame_from_normal(ls.normal);
-        sampled.on_surface = l.type == LIGHT_SPHERE;
+        sampled.on_surface = light_is_surface(l.type);
         sampled.index = index;
         sampled.delta = 0;
         sampled.epsilon = 0.0f;

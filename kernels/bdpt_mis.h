@@ -28,8 +28,9 @@ SS_FN float bdpt_remap_reverse(float pdf, bool next_is_delta) { return pdf != 0.
 SS_FN float bdpt_heuristic(int heuristic, float r) { return heuristic == MIS_POWER ? r * r : r; }
 
 /* q1 / q for light vertex x0 and its neighbour x1: the density with which s = 1 samples x0 from x1
- * (sample_light: a sphere seen from outside is sampled uniformly in its cone of directions), over
- * the density with which a light subpath starts there (uniform by area), both per unit area at x0.
+ * (sample_light: a sphere seen from outside is sampled uniformly in its cone of directions, a
+ * rectangle in its spherical rectangle), over the density with which a light subpath starts there
+ * (uniform by area), both per unit area at x0.
  * pbrt-v4 uses q for both; with the sphere's cone sampler that makes s = 1's weight too large near
  * the cap's rim, where its real density vanishes (fireflies). 1 for point lights and the
  * environment, and for a sphere seen from inside, whose sampler is the area sampler. */
@@ -37,13 +38,13 @@ SS_FN float bdpt_light_sample_ratio(const RenderKernelSettings* settings, const 
     int index = vertex_light_index(scene, x0);
     if (index < 0 || index >= settings->light_count) return 1.0f;
     Light light = scene->lights[index];
-    if (light.type != LIGHT_SPHERE) return 1.0f;
+    if (!light_is_surface(light.type)) return 1.0f;
     float3 w = x0->p - x1->p;
     float d2 = dot(w, w);
     if (!(d2 > 0.0f)) return 1.0f;
     w = w * (1.0f / sqrt(d2));
-    float q1 = sphere_light_pdf(&light, x1->p, w) * fabs(dot(x0->frame.n, w)) / d2;
-    float q = sphere_light_area_pdf(&light);
+    float q1 = light_pdf(&light, &scene->env, scene->env_buffers, x1->p, w) * fabs(dot(x0->frame.n, w)) / d2;
+    float q = light_area_pdf(&light);
     return q1 > 0.0f ? q1 / q : 1.0f;
 }
 

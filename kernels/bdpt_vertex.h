@@ -94,7 +94,7 @@ SS_FN float vertex_convert_density(float pdf, const PathVertex* from, const Path
     return pdf * inv_d * inv_d;
 }
 
-/* pmf times the density with which a light subpath starts at v: per unit area on a sphere light,
+/* pmf times the density with which a light subpath starts at v: per unit area on an emitter,
  * 1 for a point light (a delta position), per unit solid angle of the direction for the environment
  * (pbrt-v4's PdfLightOrigin). */
 SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* settings, const RenderScene* scene, const PathVertex* v) {
@@ -103,7 +103,7 @@ SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* settings, const 
     float pmf = light_selection_pmf(scene->light_cdf, settings->light_count, index);
     if (!(pmf > 0.0f)) return 0.0f;
     Light light = scene->lights[index];
-    if (light.type == LIGHT_SPHERE) return pmf * sphere_light_area_pdf(&light);
+    if (light_is_surface(light.type)) return pmf * light_area_pdf(&light);
     if (light.type == LIGHT_POINT) return pmf;
     return pmf * environment_light_pdf(&scene->env, scene->env_buffers, v->p);
 }
@@ -124,7 +124,8 @@ SS_FN float environment_disk_pdf(const RenderKernelSettings* settings, float3 w,
 }
 
 /* The density at `next` of a light subpath leaving light vertex v towards it (pbrt-v4's
- * PdfLight): a sphere emits from both sides, cosine-distributed on each; a point light uniformly;
+ * PdfLight): a sphere emits from both sides, cosine-distributed on each, a rect or disk from its
+ * emitting side, cosine-distributed; a point light uniformly;
  * the environment from a disk of the scene's radius, uniform by area where its rays reach. */
 SS_FN float vertex_pdf_light(const RenderKernelSettings* settings, const RenderScene* scene, const PathVertex* v, const PathVertex* next) {
     int index = vertex_light_index(scene, v);
@@ -135,7 +136,9 @@ SS_FN float vertex_pdf_light(const RenderKernelSettings* settings, const RenderS
         return next->on_surface ? pdf * fabs(dot(next->frame.n, v->p)) : pdf;
     }
     float3 w = vertex_direction(v, next);
-    float pdf_dir = light.type == LIGHT_SPHERE ? fabs(dot(v->frame.n, w)) * (0.5f * SS_INV_PI) : SS_INV_4PI;
+    float pdf_dir = SS_INV_4PI; /* a point light */
+    if (light.type == LIGHT_SPHERE) pdf_dir = fabs(dot(v->frame.n, w)) * (0.5f * SS_INV_PI);
+    else if (light_is_surface(light.type)) pdf_dir = fmax(dot(area_light_normal(&light), w), 0.0f) * SS_INV_PI;
     return vertex_convert_density(pdf_dir, v, next);
 }
 
@@ -163,9 +166,9 @@ SS_FN float3 vertex_f(const RenderScene* scene, const PathVertex* v, float3 w, i
     return bsdf_eval_mode(&m, scene->tables, v->wo, frame_to_local(v->frame, w), mode);
 }
 
-/* Radiance emitted by light or emitter vertex v towards `to`: a sphere's Le from both sides, a
- * material's emission towards wo on its outer side, the environment's along the direction (the
- * filtered lookup where the eye sees it directly). */
+/* Radiance emitted by light or emitter vertex v towards its wo: a sphere's Le from both sides, a
+ * rect's or disk's on its emitting side only, a material's emission towards wo on its outer side,
+ * the environment's along the direction (the filtered lookup where the eye sees it directly). */
 SS_FN float3 vertex_le(const RenderScene* scene, const PathVertex* v, bool seen_directly) {
     if (v->type == VERTEX_ENVIRONMENT)
         return seen_directly ? environment_radiance_filtered(&scene->env, scene->env_buffers.texels, v->p)
@@ -178,7 +181,10 @@ SS_FN float3 vertex_le(const RenderScene* scene, const PathVertex* v, bool seen_
             return material_emission_clamped(&m, v->wo);
         }
 #endif
-        return make_float3(e.x, e.y, e.z);
+        int index = scene->light_of_slot[v->index];
+        if (index < 0) return make_float3(e.x, e.y, e.z);
+        Light light = scene->lights[index];
+        return light_surface_radiance(&light, frame_to_world(v->frame, v->wo));
     }
     Light light = scene->lights[v->index]; /* float3_from_array takes a private pointer */
     return float3_from_array(light.emission);

@@ -38,7 +38,7 @@ SS_FN int bdpt_random_walk(const RenderKernelSettings* settings, MarchSettings m
             break;
         }
         SurfaceHit hit = surface_hit(settings, march_settings, origin, direction, r.t, inside);
-        /* an emissive sphere scatters on the side the ray arrives from, outside or in (kernels/path_tracer.h) */
+        /* an emitter scatters on the side the ray arrives from, outside or in (kernels/path_tracer.h) */
         if (scene->emission[hit.slot].w > 0.0f && scene->emission[hit.slot].w != EMISSION_SURFACE) hit = facing_side(hit);
         v.type = VERTEX_SURFACE;
         v.p = hit.p;
@@ -96,6 +96,8 @@ SS_FN int bdpt_camera_subpath(const RenderKernelSettings* settings, MarchSetting
  * then the walk in importance mode.
  *   sphere: a point uniform by area, a cosine-distributed direction on a side chosen with
  *           probability 1/2 (it emits from both), pdf_dir = |cos| / (2 pi);
+ *   rect, disk: a point uniform by area, a cosine-distributed direction on its emitting side,
+ *           pdf_dir = cos / pi;
  *   point:  a direction uniform on the sphere;
  *   environment: a direction from its importance sampler, the origin uniform on a disk of the
  *           scene's radius facing it (pbrt-v4's ImageInfiniteLight::SampleLe). */
@@ -117,18 +119,23 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* settings, MarchSettings
     v.epsilon = march_epsilon(march_settings, 0.0f);
     float3 origin, direction, le;
     float pdf_position, pdf_dir, cos_out = 1.0f;
-    if (light.type == LIGHT_SPHERE) {
+    if (light_is_surface(light.type)) {
         float3 n;
-        v.p = sphere_light_sample_area(&light, make_float2(u.y, u.z), &n);
+        v.p = light_sample_area(&light, make_float2(u.y, u.z), &n);
         v.frame = frame_from_normal(n);
         v.on_surface = 1;
-        ShadingFrame side = frame_from_normal(u_dir.z < 0.5f ? n : -n);
+        /* a sphere emits from both sides, each chosen with probability 1/2; a rect or disk from its
+         * emitting side */
+        bool two_sided = light.type == LIGHT_SPHERE;
+        ShadingFrame side = frame_from_normal(two_sided && u_dir.z >= 0.5f ? -n : n);
         float3 w_local = square_to_cosine_hemisphere(u_dir.x, u_dir.y);
         direction = frame_to_world(side, w_local);
         cos_out = w_local.z;
-        pdf_dir = w_local.z * (0.5f * SS_INV_PI);
-        pdf_position = sphere_light_area_pdf(&light);
-        origin = offset_origin(v.p, side.n, fmax(v.epsilon, 1e-5f * light.radius), 1.0f);
+        pdf_dir = w_local.z * (two_sided ? 0.5f * SS_INV_PI : SS_INV_PI);
+        pdf_position = light_area_pdf(&light);
+        /* the offset's floor: a relative 1e-5 of the light's size (its radius, or a rect's edge) */
+        float size = light.type == LIGHT_RECT ? fmin(length(area_light_u(&light)), length(area_light_v(&light))) : light.radius;
+        origin = offset_origin(v.p, side.n, fmax(v.epsilon, 1e-5f * size), 1.0f);
         le = float3_from_array(light.emission);
     } else if (light.type == LIGHT_POINT) {
         v.p = float3_from_array(light.position);

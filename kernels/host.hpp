@@ -21,6 +21,7 @@ using namespace ::ibl;
 #include "kernels/camera.h"
 #include "kernels/lights/light.h"
 #include "kernels/lights/sphere_light.h"
+#include "kernels/lights/area_light.h"
 #include "kernels/lights/point_light.h"
 #include "kernels/lights/environment_light.h"
 #include "kernels/lights/light_selection.h"
@@ -32,6 +33,6 @@ using namespace ::ibl;
 }  // namespace kernel
 
 static_assert(sizeof(kernel::Camera) == 64, "Camera must match its OpenCL layout: 16 four-byte words");
-static_assert(sizeof(kernel::Light) == 48, "Light must match its OpenCL layout: 12 four-byte words");
+static_assert(sizeof(kernel::Light) == 64, "Light must match its OpenCL layout: 16 four-byte words");
 static_assert(sizeof(kernel::RayMarch) == 12, "RayMarch must match its OpenCL layout: 3 four-byte words");
 static_assert(sizeof(kernel::RenderKernelSettings) == 140, "RenderKernelSettings must match its OpenCL layout: 35 four-byte words");

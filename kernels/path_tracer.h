@@ -183,13 +183,18 @@ SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings marc
         radiance += throughput * material_emission_clamped(&em, hit.wo);
         float3_to_array(radiance, p->radiance);
 #endif
-    } else if (emitted.w > 0.0f) { /* an emissive sphere, seen from either side */
-        float weight = light_hit_weight(settings, scene, scene->light_of_slot[hit.slot], previous_p, direction, p->previous_pdf, p->previous_delta);
-        radiance += throughput * (weight * make_float3(emitted.x, emitted.y, emitted.z));
-        float3_to_array(radiance, p->radiance);
+    } else if (emitted.w > 0.0f) { /* an emitter: a sphere from either side, a rect or disk from its emitting side */
+        int index = scene->light_of_slot[hit.slot];
+        Light light = scene->lights[index];
+        float3 le = light_surface_radiance(&light, -direction);
+        if (max_component(le) > 0.0f) {
+            float weight = light_hit_weight(settings, scene, index, previous_p, direction, p->previous_pdf, p->previous_delta);
+            radiance += throughput * (weight * le);
+            float3_to_array(radiance, p->radiance);
+        }
         if (emitted.w < EMISSION_SCATTERS) return; /* a black emitter scatters nothing */
-        /* An emissive sphere's material scatters on the side the ray arrives from, outside or in:
-         * a sphere light is a surface, not a solid the path enters. */
+        /* An emitter's material scatters on the side the ray arrives from, outside or in: a sphere
+         * light is a surface, not a solid the path enters (and a rect or disk has no inside). */
         hit = facing_side(hit);
     }
     bool catcher = emitted.w == EMISSION_CATCHER && p->depth == 0;

@@ -28,6 +28,8 @@ double sphere_light_power(const kernel::Light& light) {
     return kPi * luminance_of(light.emission) * 4.0 * kPi * double(light.radius) * double(light.radius);
 }
 
+double area_light_power(const kernel::Light& light) { return kPi * luminance_of(light.emission) * double(kernel::area_light_area(&light)); }
+
 double point_light_power(const kernel::Light& light) { return 4.0 * kPi * luminance_of(light.emission); }
 
 double environment_light_power(const ibl::Environment& environment, double scene_radius) {
@@ -51,16 +53,18 @@ LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environme
         set.lights.push_back(l);
         set.power.push_back(environment_light_power(*environment, scene.bounds_radius));
     }
-    for (const scene::EmitterSphere& e : scene.emitters) {
+    for (const scene::Emitter& e : scene.emitters) {
         kernel::Light l{};
-        l.type = LIGHT_SPHERE;
+        l.type = e.shape == scene::EmitterShape::sphere ? LIGHT_SPHERE : (e.shape == scene::EmitterShape::rect ? LIGHT_RECT : LIGHT_DISK);
         kernel::float3_to_array(e.center, l.position);
         l.radius = e.radius;
         kernel::float3_to_array(e.radiance, l.emission);
+        kernel::float3_to_array(e.edge_u, l.edge_u);
+        kernel::float3_to_array(e.edge_v, l.edge_v);
         l.material_slot = e.material;
         if (e.material >= 0 && size_t(e.material) < set.light_of_slot.size()) set.light_of_slot[size_t(e.material)] = int(set.lights.size());
         set.lights.push_back(l);
-        set.power.push_back(sphere_light_power(l));
+        set.power.push_back(l.type == LIGHT_SPHERE ? sphere_light_power(l) : area_light_power(l));
     }
     for (const scene::PointLight& p : scene.point_lights) {
         kernel::Light l{};

@@ -19,12 +19,12 @@ LightSelection parse_light_selection(const std::string& text, const std::string&
 const char* light_selection_name(LightSelection selection);
 
 struct LightSet {
-    // The environment first (index 0) when there is one, then the emissive spheres in file order,
-    // then the point lights in file order.
+    // The environment first (index 0) when there is one, then the emitters (spheres, rects, disks)
+    // in file order, then the point lights in file order.
     std::vector<kernel::Light> lights;
     // lights.size() + 1 entries for kernels/lights/light_selection.h: 0, ..., 1 (empty without lights).
     std::vector<float> selection_cdf;
-    // Per material slot: the index in `lights` of the emissive sphere with that slot, -1 otherwise.
+    // Per material slot: the index in `lights` of the emitter with that slot, -1 otherwise.
     std::vector<int> light_of_slot;
     // Per light: its power as luminance, W (docs/lights.md), whatever the selection.
     std::vector<double> power;
@@ -32,6 +32,7 @@ struct LightSet {
 
 // Power of each kind of light, in luminance (lab::luminance of the RGB radiometric quantity).
 double sphere_light_power(const kernel::Light& light);   // pi Le 4 pi r^2: the flux leaving its outside
+double area_light_power(const kernel::Light& light);     // pi Le A: a rect or disk, one side
 double point_light_power(const kernel::Light& light);    // 4 pi I
 // pi R^2 times the integral of L over the sphere: the flux through a disk of radius R facing each
 // direction, R the radius of the sphere that holds the scene (CompiledScene::bounds_radius).

@@ -28,7 +28,7 @@ struct CompiledScene {
     std::vector<std::string> material_names;     // per slot
     std::vector<Vec3> emission;                  // per slot: an emitter's radiance, else 0
     std::vector<bool> shadow_catcher;            // per slot: a shadow catcher's (Object::shadow_catcher)
-    std::vector<EmitterSphere> emitters;         // emissive spheres; emitters[k].material is its slot
+    std::vector<Emitter> emitters;         // spheres, rects and disks; emitters[k].material is its slot
     std::vector<PointLight> point_lights;        // lights only: not in the source
     // A sphere that holds the camera, the lights and every bounded part of the objects (the axes
     // along which an object is unbounded, a plane or an endless repetition, are left out) and, in a

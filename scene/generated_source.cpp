@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "brdf/host/features.hpp"
+#include "scene/emitter_geometry.hpp"
 #include "scene/geometry_paths.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/nearest_writer.hpp"
@@ -109,29 +110,54 @@ std::string generate_source(const Scene& scene, const SceneAnalysis& analysis, b
         slot_cases << "    case " << index << ": return " << object.material << ";\n";
         ++index;
     }
-    const bool exact_emitters = emitters_are_exact(scene);
-    const bool split = std::find(marched.begin(), marched.end(), false) != marched.end() || (exact_emitters && !scene.emitters.empty());
+    const bool split = std::find(marched.begin(), marched.end(), false) != marched.end() ||
+                       std::any_of(scene.emitters.begin(), scene.emitters.end(), [&](const Emitter& e) { return emitter_is_exact(scene, e); });
     NearestWriter nearest(scene, object_bounds, false, &headers);
     NearestWriter march(scene, object_bounds, false, &headers, marched), packet(scene, object_bounds, true, &headers, marched);
     for (size_t i = 0; i < scene.emitters.size(); ++i) {
-        const EmitterSphere& e = scene.emitters[i];
-        headers.insert("sdf/primitives/sphere.h");
-        std::string local = "p - " + vec3_literal(e.center);
-        std::string distance = "fSphere_xyz(" + offset_components(e.center) + ", " + float_literal(e.radius) + ")";
-        nearest.candidate(distance, int(index), "    ");
-        std::string normal = "    case " + std::to_string(index) + ": *n = nSphere(" + local + ", " + float_literal(e.radius) + "); return 1;\n";
-        if (exact_emitters) {
+        const Emitter& e = scene.emitters[i];
+        const std::string k = std::to_string(index);
+        const std::string local = "p - " + vec3_literal(e.center);
+        const std::string origin = "o - " + vec3_literal(e.center);
+        const std::string lane_origin = "ox - " + float_literal(e.center.x) + ", oy - " + float_literal(e.center.y) + ", oz - " + float_literal(e.center.z);
+        std::string distance, normal, hit, lane_hit;
+        if (e.shape == EmitterShape::sphere) {
+            headers.insert("sdf/primitives/sphere.h");
             headers.insert("sdf/exact/sphere.h");
-            exact_hits << "    t = fmin(t, xSphere(o - " << vec3_literal(e.center) << ", v, " << float_literal(e.radius) << ", fmin(t, t_max)));\n";
-            exact_lane_hits << "    t = fmin(t, xSphere_lanes(ox - " << float_literal(e.center.x) << ", oy - " << float_literal(e.center.y) << ", oz - "
-                            << float_literal(e.center.z) << ", vx, vy, vz, " << float_literal(e.radius) << ", fmin(t, t_max)));\n";
-            exact_normal_cases << normal;
+            distance = "fSphere_xyz(" + offset_components(e.center) + ", " + float_literal(e.radius) + ")";
+            normal = "nSphere(" + local + ", " + float_literal(e.radius) + ")";
+            hit = "xSphere(" + origin + ", v, " + float_literal(e.radius) + ", fmin(t, t_max))";
+            lane_hit = "xSphere_lanes(" + lane_origin + ", vx, vy, vz, " + float_literal(e.radius) + ", fmin(t, t_max))";
+        } else if (e.shape == EmitterShape::rect) {
+            headers.insert("sdf/primitives/rect.h");
+            headers.insert("sdf/exact/rect.h");
+            const std::string n = vec3_literal(e.normal), du = vec3_literal(rect_dual_u(e)), dv = vec3_literal(rect_dual_v(e));
+            distance = "fRect_xyz(" + offset_components(e.center) + ", " + vec3_literal(e.edge_u) + ", " + vec3_literal(e.edge_v) + ", " + n + ", " + du +
+                       ", " + dv + ")";
+            normal = "nRect(" + n + ")";
+            hit = "xRect(" + origin + ", v, " + n + ", " + du + ", " + dv + ", fmin(t, t_max))";
+            lane_hit = "xRect_lanes(" + lane_origin + ", vx, vy, vz, " + n + ", " + du + ", " + dv + ", fmin(t, t_max))";
+        } else {
+            headers.insert("sdf/primitives/disk.h");
+            headers.insert("sdf/exact/disk.h");
+            const std::string n = vec3_literal(e.normal), r = float_literal(e.radius);
+            distance = "fDisk_xyz(" + offset_components(e.center) + ", " + n + ", " + r + ")";
+            normal = "nDisk(" + n + ")";
+            hit = "xDisk(" + origin + ", v, " + n + ", " + r + ", fmin(t, t_max))";
+            lane_hit = "xDisk_lanes(" + lane_origin + ", vx, vy, vz, " + n + ", " + r + ", fmin(t, t_max))";
+        }
+        nearest.candidate(distance, int(index), "    ");
+        const std::string normal_case = "    case " + k + ": *n = " + normal + "; return 1;\n";
+        if (emitter_is_exact(scene, e)) {
+            exact_hits << "    t = fmin(t, " << hit << ");\n";
+            exact_lane_hits << "    t = fmin(t, " << lane_hit << ");\n";
+            exact_normal_cases << normal_case;
         } else {
             march.candidate(distance, int(index), "    ");
             packet.candidate(distance, int(index), "    ");
         }
         slot_cases << "    case " << index << ": return " << e.material << ";\n";
-        normal_cases << normal;
+        normal_cases << normal_case;
         ++index;
     }
 

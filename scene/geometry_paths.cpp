@@ -24,10 +24,11 @@ const char* field_reason(const Node& node) {
 
 bool object_is_exact(const Scene& scene, const Object& object) { return !scene.march_everything && has_analytic_normal(object.shape); }
 
-bool emitters_are_exact(const Scene& scene) { return !scene.march_everything; }
+bool emitter_is_exact(const Scene& scene, const Emitter& emitter) { return !scene.march_everything || emitter.shape != EmitterShape::sphere; }
 
 int marched_count(const Scene& scene) {
-    int n = emitters_are_exact(scene) ? 0 : int(scene.emitters.size());
+    int n = 0;
+    for (const Emitter& e : scene.emitters) n += emitter_is_exact(scene, e) ? 0 : 1;
     for (const Object& o : scene.objects) n += object_is_exact(scene, o) ? 0 : 1;
     return n;
 }
@@ -44,9 +45,14 @@ std::vector<std::string> geometry_paths(const Scene& scene) {
             line += std::string("sphere-traced: ") + first_field_node(o.shape)->path + " is " + field_reason(*first_field_node(o.shape));
         lines.push_back(line);
     }
-    for (size_t k = 0; k < scene.emitters.size(); ++k)
-        lines.push_back("emissive sphere " + std::to_string(k) + ": " +
-                        (emitters_are_exact(scene) ? "exact intersection" : "sphere-traced (--geometry march)"));
+    static const char* const kShapes[] = {"sphere", "rect", "disk"};
+    for (size_t k = 0; k < scene.emitters.size(); ++k) {
+        const Emitter& e = scene.emitters[k];
+        std::string line = std::string("emissive ") + kShapes[int(e.shape)] + " " + std::to_string(k) + ": ";
+        if (!emitter_is_exact(scene, e)) line += "sphere-traced (--geometry march)";
+        else line += e.shape == EmitterShape::sphere || !scene.march_everything ? "exact intersection" : "exact intersection (it has no volume to march)";
+        lines.push_back(line);
+    }
     return lines;
 }
 

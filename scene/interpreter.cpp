@@ -1,5 +1,6 @@
 #include "scene/interpreter.hpp"
 
+#include "scene/emitter_geometry.hpp"
 #include "scene/geometry_paths.hpp"
 #include "scene/rotation.hpp"
 #include "sdf/sdf.hpp"
@@ -88,6 +89,27 @@ bool shape_normal(const Node& node, Vec3 p, Vec3* n) {
     return false;
 }
 
+// An emitter's distance, exact hit and normal, as the generated scene calls them
+// (scene/generated_source.cpp): the same functions on the same floats.
+float emitter_distance(const Emitter& e, Vec3 p) {
+    const Vec3 q = p - e.center;
+    if (e.shape == EmitterShape::rect) return sdf::fRect_xyz(q.x, q.y, q.z, e.edge_u, e.edge_v, e.normal, rect_dual_u(e), rect_dual_v(e));
+    if (e.shape == EmitterShape::disk) return sdf::fDisk_xyz(q.x, q.y, q.z, e.normal, e.radius);
+    return sdf::fSphere(q, e.radius);
+}
+
+float emitter_exact_hit(const Emitter& e, Vec3 o, Vec3 v, float t_max) {
+    if (e.shape == EmitterShape::rect) return sdf::xRect(o - e.center, v, e.normal, rect_dual_u(e), rect_dual_v(e), t_max);
+    if (e.shape == EmitterShape::disk) return sdf::xDisk(o - e.center, v, e.normal, e.radius, t_max);
+    return sdf::xSphere(o - e.center, v, e.radius, t_max);
+}
+
+Vec3 emitter_normal(const Emitter& e, Vec3 p) {
+    if (e.shape == EmitterShape::rect) return sdf::nRect(e.normal);
+    if (e.shape == EmitterShape::disk) return sdf::nDisk(e.normal);
+    return sdf::nSphere(p - e.center, e.radius);
+}
+
 // Objects in file order, then emitters; a tie keeps the earlier (as the generated scene_nearest).
 // march_only: the march's field, without what is intersected exactly (INFINITY when empty).
 float nearest_surface(const Scene& scene, Vec3 p, int* nearest, bool march_only = false) {
@@ -106,9 +128,9 @@ float nearest_surface(const Scene& scene, Vec3 p, int* nearest, bool march_only 
         if (march_only && object_is_exact(scene, o)) ++index;
         else consider(shape_distance(o.shape, p));
     }
-    for (const EmitterSphere& e : scene.emitters) {
-        if (march_only && emitters_are_exact(scene)) ++index;
-        else consider(sdf::fSphere(p - e.center, e.radius));
+    for (const Emitter& e : scene.emitters) {
+        if (march_only && emitter_is_exact(scene, e)) ++index;
+        else consider(emitter_distance(e, p));
     }
     *nearest = k;
     return d;
@@ -156,8 +178,8 @@ float scene_exact_hit(const Scene& scene, Vec3 o, Vec3 v, float t_max) {
     float t = EXACT_MISS;
     for (const Object& object : scene.objects)
         if (object_is_exact(scene, object)) t = std::fmin(t, shape_exact_hit(object.shape, o, v, std::fmin(t, t_max)));
-    if (emitters_are_exact(scene))
-        for (const EmitterSphere& e : scene.emitters) t = std::fmin(t, sdf::xSphere(o - e.center, v, e.radius, std::fmin(t, t_max)));
+    for (const Emitter& e : scene.emitters)
+        if (emitter_is_exact(scene, e)) t = std::fmin(t, emitter_exact_hit(e, o, v, std::fmin(t, t_max)));
     return t;
 }
 
@@ -166,7 +188,7 @@ int scene_surface(const Scene& scene, Vec3 p, int* slot, Vec3* n) {
     nearest_surface(scene, p, &k);
     int objects = int(scene.objects.size());
     *slot = k < objects ? scene.objects[size_t(k)].material : scene.emitters[size_t(k - objects)].material;
-    if (k < objects ? !object_is_exact(scene, scene.objects[size_t(k)]) : !emitters_are_exact(scene)) return 0;
+    if (k < objects ? !object_is_exact(scene, scene.objects[size_t(k)]) : !emitter_is_exact(scene, scene.emitters[size_t(k - objects)])) return 0;
     return scene_analytic_normal(scene, p, n);
 }
 
@@ -175,8 +197,7 @@ int scene_analytic_normal(const Scene& scene, Vec3 p, Vec3* n) {
     nearest_surface(scene, p, &k);
     int objects = int(scene.objects.size());
     if (k >= objects) {
-        const EmitterSphere& e = scene.emitters[size_t(k - objects)];
-        *n = sdf::nSphere(p - e.center, e.radius);
+        *n = emitter_normal(scene.emitters[size_t(k - objects)], p);
         return 1;
     }
     return shape_normal(scene.objects[size_t(k)].shape, p, n) ? 1 : 0;

@@ -222,7 +222,7 @@ SceneAnalysis analyse_scene(const Scene& scene) {
             result.warnings.push_back(scene.file + ": " + reason + "; the field is not a distance bound and rays may step through surfaces");
         }
     }
-    // Emitters are exact spheres: bound 1, which the maximum already includes.
+    // Emitters are spheres, rects and disks with exact distances: bound 1, which the maximum includes.
     if (result.lipschitz > 1.0f)
         result.warnings.push_back(scene.file + ": the distance field's Lipschitz bound is " + format_number(result.lipschitz) + " (" +
                                   steepest + "), above 1: sphere tracing divides distances by it, so rays take more steps");

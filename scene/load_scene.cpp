@@ -156,9 +156,9 @@ std::vector<Object> parse_objects(const Json& value, const std::string& file, co
     return objects;
 }
 
-// An emissive sphere's slot: the declared material it names (a reflecting emitter), or a black
+// An emitter's slot: the declared material it names (a reflecting emitter), or a black
 // material (every lobe weight 0, docs/materials.md), with its radiance.
-MaterialSlot emitter_slot(const std::string& path, int index, const EmitterSphere& e, const std::vector<MaterialSlot>& slots) {
+MaterialSlot emitter_slot(const std::string& path, int index, const Emitter& e, const std::vector<MaterialSlot>& slots) {
     MaterialSlot slot;
     slot.name = path;
     slot.source = "emitter";
@@ -172,7 +172,8 @@ MaterialSlot emitter_slot(const std::string& path, int index, const EmitterSpher
     return slot;
 }
 
-// "emitters": emissive spheres (type "sphere", the default) and point lights (type "point").
+// "emitters": emissive spheres (type "sphere", the default), rects and disks (area lights that emit
+// on one side) and point lights (type "point").
 void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
     if (!value.is_array()) throw InputError(file, "emitters", std::string("expected an array, got ") + value.type_name());
     for (size_t i = 0; i < value.size(); ++i) {
@@ -188,19 +189,43 @@ void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
             scene->point_lights.push_back(PointLight{f.vec3("position"), f.non_negative_vec3("intensity")});
             continue;
         }
-        if (type != "sphere") throw InputError(file, field_path(path, "type"), "unknown emitter type \"" + type + "\" (expected one of: sphere, point)");
-        Fields f(value[i], path, file, {"type", "center", "radius", "radiance", "material"});
-        EmitterSphere e{f.vec3("center"), f.positive("radius"), f.non_negative_vec3("radiance"), int(scene->materials.size()), ""};
+        Emitter e;
+        if (type == "sphere") {
+            Fields f(value[i], path, file, {"type", "center", "radius", "radiance", "material"});
+            e = Emitter{f.vec3("center"), f.positive("radius"), f.non_negative_vec3("radiance"), int(scene->materials.size()), ""};
+        } else if (type == "rect") {
+            Fields f(value[i], path, file, {"type", "center", "edge_u", "edge_v", "radiance", "material"});
+            e = Emitter{f.vec3("center"), 0.0f, f.non_negative_vec3("radiance"), int(scene->materials.size()), ""};
+            e.shape = EmitterShape::rect;
+            e.edge_u = f.nonzero_vec3("edge_u");
+            e.edge_v = f.nonzero_vec3("edge_v");
+            const Vec3 n = glm::cross(e.edge_u, e.edge_v);
+            // parallel edges span no area: |U x V| against |U| |V|, the sine of their angle
+            if (!(glm::length(n) > 1e-6f * glm::length(e.edge_u) * glm::length(e.edge_v)))
+                f.fail("edge_v", "parallel to edge_u: the rect has no area");
+            e.normal = glm::normalize(n);
+        } else if (type == "disk") {
+            Fields f(value[i], path, file, {"type", "center", "normal", "radius", "radiance", "material"});
+            e = Emitter{f.vec3("center"), f.positive("radius"), f.non_negative_vec3("radiance"), int(scene->materials.size()), ""};
+            e.shape = EmitterShape::disk;
+            e.normal = glm::normalize(f.nonzero_vec3("normal"));
+            const brdf::ShadingFrame frame = brdf::frame_from_normal(e.normal);
+            e.edge_u = frame.t * e.radius;
+            e.edge_v = frame.b * e.radius;
+        } else {
+            throw InputError(file, field_path(path, "type"), "unknown emitter type \"" + type + "\" (expected one of: sphere, rect, disk, point)");
+        }
+        Fields f(value[i], path, file, {"type", "center", "radius", "edge_u", "edge_v", "normal", "radiance", "material"});
         if (f.has("material")) {
             e.surface_material = f.string("material");
             const bool declared = std::any_of(scene->materials.begin(), scene->materials.end(), [&](const MaterialSlot& m) {
                 return m.emitter < 0 && m.name == e.surface_material;
             });
             if (!declared) f.fail("material", "material \"" + e.surface_material + "\" is not declared in \"materials\"");
-            // a sphere light's radiance is its "radiance": an emissive material on it would be a second one
+            // an emitter's radiance is its "radiance": an emissive material on it would be a second one
             for (const MaterialSlot& m : scene->materials)
                 if (m.emitter < 0 && m.name == e.surface_material && brdf::material_emits(&m.material))
-                    f.fail("material", "material \"" + e.surface_material + "\" emits (emission_luminance): a sphere light's radiance is its \"radiance\"");
+                    f.fail("material", "material \"" + e.surface_material + "\" emits (emission_luminance): an emitter's radiance is its \"radiance\"");
         }
         scene->materials.push_back(emitter_slot(path, int(scene->emitters.size()), e, scene->materials));
         scene->emitters.push_back(e);
@@ -262,7 +287,7 @@ Scene parse_scene(const std::string& text, const std::string& file) {
     if (top.has("emitters")) parse_emitters(top.at("emitters"), file, &scene);
     if (top.has("environment")) scene.environment = parse_environment(top.at("environment"), file);
     if (scene.objects.empty() && scene.emitters.empty())
-        throw InputError(file, "", "the scene has no objects and no emissive spheres (point lights are not geometry)");
+        throw InputError(file, "", "the scene has no objects and no emitters (point lights are not geometry)");
     return scene;
 }
 

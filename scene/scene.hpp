@@ -73,15 +73,27 @@ struct Object {
     bool shadow_catcher = false;
 };
 
-// An emissive sphere: part of the distance field with a material slot of its own. It emits the
-// same radiance from both sides of its surface; with a surface material it also scatters (a
-// reflecting emitter), without one its slot is black.
-struct EmitterSphere {
+// An emitter: a light that is geometry, with a material slot of its own.
+//   sphere: centre and radius, part of the distance field (intersected exactly unless the scene is
+//           marched, `--geometry march`); it emits the same radiance from both sides of its surface.
+//   rect:   the parallelogram center +- edge_u / 2 +- edge_v / 2, emitting on the side of
+//           edge_u x edge_v only;
+//   disk:   centre, unit normal and radius, emitting on the side of its normal only.
+// Rects and disks have no volume: they are always intersected exactly, never marched. With a
+// surface material an emitter also scatters (a reflecting emitter), on both sides; without one its
+// slot is black. docs/lights.md gives their sampling, docs/scenes.md their fields.
+enum class EmitterShape { sphere, rect, disk };
+
+struct Emitter {
     Vec3 center;
-    float radius;
+    float radius;       // sphere, disk; 0 for a rect
     Vec3 radiance;      // linear RGB, W / (m^2 sr)
     int material = 0;   // its slot, after the declared materials
     std::string surface_material;  // the declared material its slot copies; empty: a black emitter
+    EmitterShape shape = EmitterShape::sphere;
+    Vec3 edge_u{0.0f};  // rect: its two edges; disk: an orthonormal tangent pair times the radius
+    Vec3 edge_v{0.0f};  //   (so that a point is center + x edge_u + y edge_v, x^2 + y^2 <= 1)
+    Vec3 normal{0.0f};  // rect, disk: unit, the emitting side
 };
 
 // A point light: a light, not geometry (nothing hits it, it casts no shadow).
@@ -124,7 +136,7 @@ struct MaterialSlot {
     std::string source;      // the preset file it came from, or "inline" / "emitter"
     brdf::Material material;
     Vec3 emission{0.0f};     // radiance of an emitter's slot, 0 otherwise
-    int emitter = -1;        // the emissive sphere (index into Scene::emitters) of this slot, -1 for none
+    int emitter = -1;        // the emitter (index into Scene::emitters) of this slot, -1 for none
 };
 
 struct Scene {
@@ -133,7 +145,7 @@ struct Scene {
     Camera camera;
     std::vector<MaterialSlot> materials;
     std::vector<Object> objects;
-    std::vector<EmitterSphere> emitters;
+    std::vector<Emitter> emitters;  // spheres, rects and disks, in file order
     std::vector<PointLight> point_lights;
     std::optional<EnvironmentSpec> environment;
     // Sphere-trace every object and emitter, the plain primitives too (`--geometry march`, set by

@@ -30,7 +30,13 @@ void scene_bounds(const Scene& scene, Vec3* center, float* radius) {
         const double view = glm::length(glm::dvec3(scene.camera.look_at) - camera);
         grow(camera - view, camera + view);
     }
-    for (const EmitterSphere& e : scene.emitters) grow(glm::dvec3(e.center) - double(e.radius), glm::dvec3(e.center) + double(e.radius));
+    for (const Emitter& e : scene.emitters) {
+        // a rect's or disk's box: each of its points is x U + y V from the centre, |x|, |y| <= 1/2
+        // for a rect's edges, <= 1 for a disk's scaled tangents
+        const glm::dvec3 span = glm::abs(glm::dvec3(e.edge_u)) + glm::abs(glm::dvec3(e.edge_v));
+        const glm::dvec3 half = e.shape == EmitterShape::sphere ? glm::dvec3(double(e.radius)) : (e.shape == EmitterShape::rect ? 0.5 * span : span);
+        grow(glm::dvec3(e.center) - half, glm::dvec3(e.center) + half);
+    }
     for (const PointLight& p : scene.point_lights) grow(glm::dvec3(p.position), glm::dvec3(p.position));
     *center = Vec3(0.5 * (lo + hi));
     *radius = float(0.5 * glm::length(hi - lo));
@@ -54,8 +60,8 @@ void surface_box(const Scene& scene, const SceneAnalysis& analysis, Vec3* lo, Ve
         *lo = glm::min(*lo, a_lo);
         *hi = glm::max(*hi, a_hi);
     }
-    for (const EmitterSphere& e : scene.emitters) {
-        if (emitters_are_exact(scene)) break;
+    for (const Emitter& e : scene.emitters) {
+        if (emitter_is_exact(scene, e)) continue;
         *lo = glm::min(*lo, e.center - Vec3(e.radius));
         *hi = glm::max(*hi, e.center + Vec3(e.radius));
     }

@@ -60,11 +60,13 @@ struct SceneCase {
     double power;
     int max_depth = kMaxDepth;
     lab::render::LightSampling sampling = lab::render::LightSampling::mis;
+    double inflation = kMarchInflation;  // the march's own bias this scene shows (below)
 };
 
 const std::vector<SceneCase> kScenes = {
     {"caustic", 0.05, 1, lab::render::LightSampling::lights},
     {"cornell_box", 0.05},
+    {"cornell_box_rect", 0.05},
     {"depth_of_field", 0.05},
     {"door_ajar", 0.05},
     {"glossy_large_light", 0.05},
@@ -73,6 +75,11 @@ const std::vector<SceneCase> kScenes = {
     {"primitives", 0.05},
     {"repetition", 0.05},
     {"shader_ball", 0.05},
+    // its ground is lit at grazing angles by lights low beside the ball and seen to the horizon: the
+    // march's hit threshold moves its points by 1e-4 t, and the top regions differ by 0.11 to 0.20 %
+    // (t up to 22); the same with sphere lights of the same power in place of its rects and disk
+    // (0.11 to 0.29 %), so the march's bias, not the area lights'
+    {"studio", 0.05, kMaxDepth, lab::render::LightSampling::mis, 0.003},
     {"veach_mis", 0.20},
 };
 
@@ -83,7 +90,7 @@ std::vector<ImageRgb> render_batches(lab::render::RenderInput input, bool march_
 }
 
 // The largest relative difference any region not dark can detect, every region printed.
-double check_agreement(const std::string& name, const std::vector<ImageRgb>& exact, const std::vector<ImageRgb>& marched) {
+double check_agreement(const std::string& name, const std::vector<ImageRgb>& exact, const std::vector<ImageRgb>& marched, double inflation) {
     const lab::validation::RegionComparison comparison =
         lab::validation::compare_by_region(exact, marched, kRegions, kRegions, kSignificance, lab::validation::Pairing::paired);
     const double means[3] = {batches_channel_mean(marched, 0), batches_channel_mean(marched, 1), batches_channel_mean(marched, 2)};
@@ -98,7 +105,7 @@ double check_agreement(const std::string& name, const std::vector<ImageRgb>& exa
     }
     int disagree = 0;
     for (const lab::validation::RegionTest& r : comparison.regions)
-        if (r.result.p_value < comparison.level && std::fabs(r.result.mean_a - r.result.mean_b) > kMarchInflation * r.result.mean_b) ++disagree;
+        if (r.result.p_value < comparison.level && std::fabs(r.result.mean_a - r.result.mean_b) > inflation * r.result.mean_b) ++disagree;
     INFO(name << ": " << comparison.rejected << " regions rejected, " << disagree << " beyond the march's inflation");
     CHECK(disagree == 0);
     return power;
@@ -141,7 +148,7 @@ TEST_CASE("Geometry paths: auto and march agree region by region on every bundle
         CHECK(std::any_of(input.scene.objects.begin(), input.scene.objects.end(),
                           [&](const lab::scene::Object& o) { return lab::scene::object_is_exact(input.scene, o); }));
         const auto start = std::chrono::steady_clock::now();
-        const double power = check_agreement(name, render_batches(input, false), render_batches(input, true));
+        const double power = check_agreement(name, render_batches(input, false), render_batches(input, true), c->inflation);
         std::printf("%s: detectable difference %.3f %% (bound %.1f %%), %.1f s\n", name.c_str(), 100.0 * power, 100.0 * c->power,
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         CHECK(power <= c->power);

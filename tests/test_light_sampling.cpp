@@ -1,5 +1,7 @@
 // The lights' samplers (kernels/lights/) against their densities: chi-square of sphere-light
-// samples against sphere_light_pdf from outside (near and far, small and large caps) and inside,
+// samples against sphere_light_pdf from outside (near and far, small and large caps) and inside, of
+// rect and disk samples against area_light_pdf (spherical rectangles near, oblique and far; area
+// sampling of a parallelogram and of disks) and their power against the flux through a sphere,
 // the pdf a sample carries equals light_pdf, the densities integrate to 1, the area sampler, the
 // point light, the environment light against ibl's sampler, light selection, and the power of
 // every kind of light against hand-computed values (docs/lights.md).
@@ -10,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "common/luminance.hpp"
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
 #include "render/light_set.hpp"
@@ -57,9 +60,11 @@ struct ConeZoom {
     double one_minus_cos_max = 2.0;  // 2: no zoom (from inside, the samples cover the sphere)
     bool active = false;
 
-    ConeZoom(const kernel::Light& l, float3 p) {
-        const glm::dvec3 c(l.position[0], l.position[1], l.position[2]), q(p);
-        const double d = glm::length(c - q), r = l.radius;
+    ConeZoom(const kernel::Light& l, float3 p) : ConeZoom(glm::dvec3(l.position[0], l.position[1], l.position[2]), l.radius, p) {}
+    // The cone from p that holds the ball of radius r about c (no zoom from inside it).
+    ConeZoom(glm::dvec3 c, double r, float3 p) {
+        const glm::dvec3 q(p);
+        const double d = glm::length(c - q);
         frame = frame_around(d > 0.0 ? (c - q) / d : glm::dvec3(0, 0, 1));
         if (d > r) {
             const double s2 = (r / d) * (r / d);
@@ -101,6 +106,21 @@ struct ConeZoom {
     double jacobian() const { return active ? one_minus_cos_max : 1.0; }
 };
 
+// What every light sample from p promises beyond its point and normal: the pdf it carries is the
+// light's pdf of its direction (`pdf`, to 2e-4), distance is |position - p|, wi points at the point,
+// radiance is Le and it is no delta; the first broken promise, or empty. `scale` sets the tolerance
+// of lengths: the distance from p to the light's far side.
+std::string sample_promise_defect(const kernel::Light& l, const kernel::LightSample& ls, float3 p, float pdf, double scale, const std::string& what) {
+    const glm::dvec3 to_point = glm::dvec3(ls.position) - glm::dvec3(p);
+    if (!(std::fabs(pdf - ls.pdf) <= 2e-4f * ls.pdf)) return "sample pdf " + std::to_string(ls.pdf) + " but " + what + "_pdf " + std::to_string(pdf);
+    if (std::fabs(glm::length(to_point) - ls.distance) > 1e-5 * scale) return "distance is not |position - p|";
+    if (glm::length(glm::cross(glm::normalize(to_point), glm::dvec3(ls.wi))) * glm::length(to_point) > 1e-5 * scale)
+        return "wi does not point at the sampled point";
+    if (!(ls.radiance == float3(l.emission[0], l.emission[1], l.emission[2])) || ls.delta != 0)
+        return "radiance is not Le, or a " + what + " sample claims to be a delta";
+    return "";
+}
+
 // The sphere light's sampler as a direction sampler; each sample must keep the promises that
 // kernels/lights/light.h makes: the pdf it carries is sphere_light_pdf of its direction, its point
 // lies on the sphere with the outward normal, wi points at that point, distance is the distance.
@@ -111,22 +131,14 @@ validation::DirectionSampler sphere_sampler(const kernel::Light& l, float3 p, co
         if (!(ls.pdf > 0.0f)) return s;  // Failed
         s.kind = validation::SampleKind::Continuous;
         s.wi = zoom.forward(ls.wi);
-        const float pdf = kernel::sphere_light_pdf(&l, p, ls.wi);
         const glm::dvec3 c(l.position[0], l.position[1], l.position[2]);
-        const glm::dvec3 to_point = glm::dvec3(ls.position) - glm::dvec3(p);
         const double scale = glm::length(c - glm::dvec3(p)) + l.radius;
-        if (!(std::fabs(pdf - ls.pdf) <= 2e-4f * ls.pdf))
-            s.defect = "sample pdf " + std::to_string(ls.pdf) + " but sphere_light_pdf " + std::to_string(pdf);
-        else if (std::fabs(glm::length(glm::dvec3(ls.position) - c) - l.radius) > 1e-5 * scale)
+        if (std::fabs(glm::length(glm::dvec3(ls.position) - c) - l.radius) > 1e-5 * scale)
             s.defect = "sampled point off the sphere";
         else if (glm::length(glm::dvec3(ls.normal) - (glm::dvec3(ls.position) - c) / double(l.radius)) > 1e-3)
             s.defect = "normal is not the outward normal at the point";
-        else if (std::fabs(glm::length(to_point) - ls.distance) > 1e-5 * scale)
-            s.defect = "distance is not |position - p|";
-        else if (glm::length(glm::cross(glm::normalize(to_point), glm::dvec3(ls.wi))) * glm::length(to_point) > 1e-5 * scale)
-            s.defect = "wi does not point at the sampled point";
-        else if (!(ls.radiance == float3(l.emission[0], l.emission[1], l.emission[2])) || ls.delta != 0)
-            s.defect = "radiance is not Le, or a sphere sample claims to be a delta";
+        else
+            s.defect = sample_promise_defect(l, ls, p, kernel::sphere_light_pdf(&l, p, ls.wi), scale, "sphere_light");
         return s;
     };
 }
@@ -417,4 +429,203 @@ TEST_CASE("lights: the light set's power formulas, order, slots and selection", 
     CHECK(pmf == 0.0f);
     CHECK(lab::render::parse_light_selection("uniform") == lab::render::LightSelection::uniform);
     CHECK_THROWS_WITH(lab::render::parse_light_selection("flux"), "--light-selection: unknown value \"flux\" (power, uniform)");
+}
+
+namespace {
+
+// Rect and disk lights (kernels/lights/area_light.h): a rect of 1 x 0.6 and a disk of radius 0.4 at
+// c, tilted (normal t x b of the test's own frame about a slanted axis), and a parallelogram of the
+// rect's edges 60 degrees apart, which has no spherical rectangle and is sampled by area.
+const glm::dvec3 kAreaCenter(0.3, 1.2, -0.4);
+const Frame kAreaFrame = frame_around(glm::normalize(glm::dvec3(0.3, -1.0, 0.2)));
+
+kernel::Light area_light(int type, glm::dvec3 u, glm::dvec3 v, float radius) {
+    kernel::Light l{};
+    l.type = type;
+    kernel::float3_to_array(float3(kAreaCenter), l.position);
+    kernel::float3_to_array(float3(u), l.edge_u);
+    kernel::float3_to_array(float3(v), l.edge_v);
+    l.radius = radius;
+    kernel::float3_to_array(float3(2.0f, 2.0f, 2.0f), l.emission);
+    l.material_slot = 4;
+    return l;
+}
+
+const kernel::Light kRect = area_light(LIGHT_RECT, kAreaFrame.t * 1.0, kAreaFrame.b * 0.6, 0.0f);
+const kernel::Light kParallelogram = area_light(LIGHT_RECT, kAreaFrame.t * 1.0, (kAreaFrame.t * 0.5 + kAreaFrame.b * std::sqrt(0.75)) * 0.6, 0.0f);
+const kernel::Light kDisk = area_light(LIGHT_DISK, kAreaFrame.t * 0.4, kAreaFrame.b * 0.4, 0.4f);
+
+// The radius of a ball about the centre that holds the light with a margin of 10 %: the zoom's cone
+// around it keeps the light's corners and rim off the cone's edge, where the zoom's stretch is
+// steepest and the cells' quadrature misses slivers of the light.
+double area_light_reach(const kernel::Light& l) {
+    const glm::dvec3 u(l.edge_u[0], l.edge_u[1], l.edge_u[2]), v(l.edge_v[0], l.edge_v[1], l.edge_v[2]);
+    if (l.type == LIGHT_DISK) return 1.1 * l.radius;
+    return 0.55 * std::max(glm::length(u + v), glm::length(u - v));
+}
+
+struct AreaCase {
+    const char* what;
+    const kernel::Light* light;
+    glm::dvec3 offset;  // of p from the centre, in the light's frame (t, b, n)
+};
+
+const AreaCase kAreaCases[] = {
+    {"rect, near: 0.3 above its centre (3.0 sr, spherical rectangle)", &kRect, {0.0, 0.0, 0.3}},
+    {"rect, oblique: beside a corner, 65 degrees off its normal (spherical rectangle)", &kRect, {1.4, 0.9, 0.8}},
+    {"rect, far: 11 away, 25 degrees off its normal (5e-3 sr, spherical rectangle)", &kRect, {4.0, 2.0, 10.0}},
+    {"parallelogram, edges 60 degrees apart (by area)", &kParallelogram, {0.2, -0.3, 0.5}},
+    {"disk, near: 0.25 above its rim (by area)", &kDisk, {0.4, 0.0, 0.25}},
+    {"disk, oblique: 2 away, 70 degrees off its normal (by area)", &kDisk, {1.3, 1.3, 0.7}},
+};
+constexpr int kAreaCaseCount = sizeof(kAreaCases) / sizeof(kAreaCases[0]);
+
+float3 area_case_point(const AreaCase& c) { return float3(kAreaCenter + kAreaFrame.t * c.offset.x + kAreaFrame.b * c.offset.y + kAreaFrame.n * c.offset.z); }
+
+// The area light's sampler as a direction sampler, each sample keeping kernels/lights/light.h's
+// promises: its pdf is area_light_pdf of its direction, its point lies on the light with the
+// emitting side's normal, wi points at it, distance is the distance, radiance is Le.
+validation::DirectionSampler area_sampler(const kernel::Light& l, float3 p, const ConeZoom& zoom) {
+    return [&l, p, &zoom](float3 u) {
+        validation::DirectionSample s;
+        const kernel::LightSample ls = kernel::area_light_sample(&l, p, kernel::make_float2(u.x, u.y));
+        if (!(ls.pdf > 0.0f)) return s;  // Failed
+        s.kind = validation::SampleKind::Continuous;
+        s.wi = zoom.forward(ls.wi);
+        const double scale = glm::length(kAreaCenter - glm::dvec3(p)) + area_light_reach(l);
+        const glm::dvec3 u_edge(l.edge_u[0], l.edge_u[1], l.edge_u[2]), v_edge(l.edge_v[0], l.edge_v[1], l.edge_v[2]);
+        const glm::dvec3 n = glm::normalize(glm::cross(u_edge, v_edge));
+        if (std::fabs(glm::dot(glm::dvec3(ls.position) - kAreaCenter, n)) > 1e-5 * scale || !kernel::area_light_contains(&l, ls.position))
+            s.defect = "sampled point off the light";
+        else if (glm::length(glm::dvec3(ls.normal) - n) > 1e-5)
+            s.defect = "normal is not the emitting side's";
+        else
+            s.defect = sample_promise_defect(l, ls, p, kernel::area_light_pdf(&l, p, ls.wi), scale, "area_light");
+        return s;
+    };
+}
+
+validation::DirectionDensity area_density(const kernel::Light& l, float3 p, const ConeZoom& zoom, double factor = 1.0) {
+    return [&l, p, &zoom, factor](float3 w) {
+        float3 original;
+        if (!zoom.backward(w, &original)) return 0.0;
+        return factor * double(kernel::area_light_pdf(&l, p, original)) * zoom.jacobian();
+    };
+}
+
+validation::ChiSquareOptions area_chi_square_options(long samples) {
+    validation::ChiSquareOptions o = chi_square_options(samples);
+    o.tests = kAreaCaseCount;
+    return o;
+}
+
+}  // namespace
+
+TEST_CASE("lights: rect and disk light samples follow area_light_pdf (chi-square)", "[lights][area]") {
+    for (const AreaCase& c : kAreaCases) {
+        const float3 p = area_case_point(c);
+        const ConeZoom zoom(kAreaCenter, area_light_reach(*c.light), p);
+        const validation::ChiSquareResult r =
+            validation::chi_square_test(area_sampler(*c.light, p, zoom), area_density(*c.light, p, zoom), area_chi_square_options(1000000));
+        INFO(c.what << ": " << validation::describe(r));
+        std::printf("[lights] chi-square area light, %s: %s\n", c.what, validation::describe(r).c_str());
+        CHECK(r.passed);
+        CHECK(r.failed_fraction == 0.0);
+        CHECK(r.pdf_integral == Approx(1.0).margin(2e-3));
+        // behind it (the mirror image of p through its plane) the light sends nothing and has no density
+        const glm::dvec3 behind = glm::dvec3(p) - 2.0 * kAreaFrame.n * c.offset.z;
+        CHECK(kernel::area_light_sample(c.light, float3(behind), kernel::make_float2(0.3f, 0.6f)).pdf == 0.0f);
+        CHECK(kernel::area_light_pdf(c.light, float3(behind), float3(glm::normalize(kAreaCenter - behind))) == 0.0f);
+    }
+    // the densities each case states: solid angle where it says so, area elsewhere
+    const kernel::SphericalRect near = kernel::spherical_rect_make(&kRect, area_case_point(kAreaCases[0]));
+    const kernel::SphericalRect close = kernel::spherical_rect_make(&kRect, float3(kAreaCenter + kAreaFrame.n * 0.002));  // 6.25 sr
+    const kernel::SphericalRect far = kernel::spherical_rect_make(&kRect, float3(kAreaCenter + kAreaFrame.n * 50.0));     // 2.4e-4 sr
+    CHECK(kernel::rect_light_uses_solid_angle(&kRect, &near));
+    const kernel::SphericalRect zoomed = kernel::spherical_rect_make(&kRect, area_case_point(kAreaCases[2]));
+    CHECK(kernel::rect_light_uses_solid_angle(&kRect, &zoomed));
+    CHECK_FALSE(kernel::rect_light_uses_solid_angle(&kRect, &close));
+    CHECK_FALSE(kernel::rect_light_uses_solid_angle(&kRect, &far));
+    CHECK_FALSE(kernel::rect_light_is_rectangle(&kParallelogram));
+    // the solid angle of the rect from above its centre: 4 asin(a b / sqrt((a^2 + 4 h^2)(b^2 + 4 h^2)))
+    CHECK(near.solid_angle == Approx(4.0 * std::asin(0.6 / std::sqrt((1.0 + 0.36) * (0.36 + 0.36)))).epsilon(1e-5));
+}
+
+TEST_CASE("lights: the chi-square test rejects a rect pdf off by 3 % either way and a disk sampled uniformly in radius", "[lights][area]") {
+    const AreaCase& c = kAreaCases[1];
+    const float3 p = area_case_point(c);
+    const ConeZoom zoom(kAreaCenter, area_light_reach(kRect), p);
+    const validation::ChiSquareResult off =
+        validation::chi_square_test(area_sampler(kRect, p, zoom), area_density(kRect, p, zoom, 1.03), area_chi_square_options(300000));
+    std::printf("[lights] broken input, spherical rectangle pdf times 1.03: %s\n", validation::describe(off).c_str());
+    CHECK_FALSE(off.passed);
+    const validation::ChiSquareResult low =
+        validation::chi_square_test(area_sampler(kRect, p, zoom), area_density(kRect, p, zoom, 0.97), area_chi_square_options(300000));
+    std::printf("[lights] broken input, spherical rectangle pdf times 0.97: %s\n", validation::describe(low).c_str());
+    CHECK_FALSE(low.passed);
+    // a disk point at radius r u instead of r sqrt(u): too many samples near the centre
+    const float3 q = area_case_point(kAreaCases[4]);
+    const ConeZoom disk_zoom(kAreaCenter, 0.4, q);
+    const validation::DirectionSampler radius_uniform = [&](float3 u) {
+        validation::DirectionSample s;
+        const double r = 0.4 * u.x, phi = 2.0 * kPi * u.y;
+        const glm::dvec3 x = kAreaCenter + kAreaFrame.t * (r * std::cos(phi)) + kAreaFrame.b * (r * std::sin(phi));
+        s.wi = disk_zoom.forward(float3(glm::normalize(x - glm::dvec3(q))));
+        s.kind = validation::SampleKind::Continuous;
+        return s;
+    };
+    const validation::ChiSquareResult wrong = validation::chi_square_test(radius_uniform, area_density(kDisk, q, disk_zoom), area_chi_square_options(300000));
+    std::printf("[lights] broken input, disk sampled uniformly in radius: %s\n", validation::describe(wrong).c_str());
+    CHECK_FALSE(wrong.passed);
+}
+
+// The power the light set gives a rect or disk, pi A L (luminance), is the flux it sends through any
+// sphere around it: the irradiance its samples estimate at points spread evenly over a sphere of
+// radius 2 (an off-centre one), E(x) = L cos / pdf per sample with cos against the outward normal,
+// integrated over the sphere's area. 400 x 800 strata of (cos theta, phi), one point and one light
+// sample each: the standard error of the integral, from the spread of the strata's estimates (an
+// over-estimate for strata), is required at most 0.25 % and the integral within 1 %.
+TEST_CASE("lights: a rect's and a disk's power is the flux through a sphere around them", "[lights][area]") {
+    const char* scene_text = R"({"camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
+      "emitters": [{"type": "rect", "center": [0.3, 1.2, -0.4], "edge_u": [1, 0, 0], "edge_v": [0, 0.3, 0.52], "radiance": [2, 2, 2]},
+                   {"type": "disk", "center": [0.3, 1.2, -0.4], "normal": [0.3, -1, 0.2], "radius": 0.4, "radiance": [1, 2, 3]}]})";
+    const lab::scene::CompiledScene scene = lab::scene::compile_scene(lab::scene::parse_scene(scene_text, "scenes/area.json"));
+    const lab::render::LightSet set = lab::render::build_light_set(scene, nullptr, lab::render::LightSelection::power);
+    REQUIRE(set.lights.size() == 2);
+    CHECK(set.lights[0].type == LIGHT_RECT);
+    CHECK(set.lights[1].type == LIGHT_DISK);
+    CHECK(set.light_of_slot == std::vector<int>{0, 1});
+    // hand-computed: pi L |U x V| and pi L pi r^2 (the luminance of (1, 2, 3): 0.2126 + 1.4304 + 0.2166)
+    CHECK(set.power[0] == Approx(kPi * 2.0 * std::sqrt(0.09 + 0.2704)).epsilon(1e-5));
+    CHECK(set.power[1] == Approx(kPi * (0.2126 + 2.0 * 0.7152 + 3.0 * 0.0722) * kPi * 0.16).epsilon(1e-5));
+    const glm::dvec3 center(0.5, 1.0, -0.2);
+    const double radius = 2.0;
+    for (size_t k = 0; k < set.lights.size(); ++k) {
+        const kernel::Light& l = set.lights[k];
+        validation::UniformRandom rng(17 + k);
+        constexpr int kBands = 400, kSectors = 800;
+        double sum = 0.0, sum2 = 0.0;
+        for (int i = 0; i < kBands; ++i)
+            for (int j = 0; j < kSectors; ++j) {
+                const double z = -1.0 + 2.0 * (i + rng.next_double()) / kBands, phi = 2.0 * kPi * (j + rng.next_double()) / kSectors;
+                const double s = std::sqrt(1.0 - z * z);
+                const glm::dvec3 outward(s * std::cos(phi), s * std::sin(phi), z);
+                const float3 x(center + radius * outward);
+                const kernel::LightSample ls = kernel::sample_light(&l, nullptr, kernel::EnvironmentBuffers{}, x, kernel::make_float2(rng.next_float(), rng.next_float()));
+                double e = 0.0;
+                if (ls.pdf > 0.0f)
+                    e = lab::luminance(double(ls.radiance.x), double(ls.radiance.y), double(ls.radiance.z)) *
+                        std::max(0.0, -glm::dot(glm::dvec3(ls.wi), outward)) / double(ls.pdf);
+                sum += e;
+                sum2 += e * e;
+            }
+        const double n = double(kBands) * kSectors, mean = sum / n;
+        const double area = 4.0 * kPi * radius * radius, flux = area * mean;
+        const double standard_error = area * std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1.0));
+        std::printf("[lights] %s: flux through the sphere %.5f +- %.5f, power %.5f (%+.3f %%)\n", k == 0 ? "rect" : "disk", flux, standard_error,
+                    set.power[k], 100.0 * (flux / set.power[k] - 1.0));
+        INFO((k == 0 ? "rect" : "disk") << ": flux " << flux << " +- " << standard_error << ", power " << set.power[k]);
+        REQUIRE(standard_error < 0.0025 * set.power[k]);
+        CHECK(flux == Approx(set.power[k]).epsilon(0.01));
+    }
 }

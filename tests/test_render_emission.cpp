@@ -115,5 +115,5 @@ TEST_CASE("Emissive materials: the light tracer refuses them by name, and a sphe
     const std::string sphere_light = std::string(R"({"camera": {"type": "pinhole", "position": [0, 0, 3], "look_at": [0, 0, 0], "fov_degrees": 40},
       "materials": {)") + kGlow + R"(}, "emitters": [{"center": [0, 0, 0], "radius": 1, "radiance": [1, 1, 1], "material": "glow"}]})";
     CHECK_THROWS_WITH(lab::scene::parse_scene(sphere_light, "s.json"),
-                      "s.json: emitters[0].material: material \"glow\" emits (emission_luminance): a sphere light's radiance is its \"radiance\"");
+                      "s.json: emitters[0].material: material \"glow\" emits (emission_luminance): an emitter's radiance is its \"radiance\"");
 }

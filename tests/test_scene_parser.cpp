@@ -175,7 +175,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
         {"/emitters/0/center", "[0, 1]",
          "scenes/x.json: emitters[0].center: expected an array of 3 numbers"},
         {"/emitters/0/type", R"("spot")",
-         "scenes/x.json: emitters[0].type: unknown emitter type \"spot\" (expected one of: sphere, point)"},
+         "scenes/x.json: emitters[0].type: unknown emitter type \"spot\" (expected one of: sphere, rect, disk, point)"},
         {"/emitters/0/type", "1",
          "scenes/x.json: emitters[0].type: expected a string, got number"},
         {"/emitters/0/material", R"("silver")",
@@ -194,6 +194,24 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
          "scenes/x.json: emitters[1].position[1]: expected a number, got string"},
         {"/emitters/1", "3",
          "scenes/x.json: emitters[1]: expected an object, got number"},
+        {"/emitters/1", R"({"type": "rect", "center": [0, 2, 0], "edge_u": [1, 0, 0], "edge_v": [2, 0, 0], "radiance": [1, 1, 1]})",
+         "scenes/x.json: emitters[1].edge_v: parallel to edge_u: the rect has no area"},
+        {"/emitters/1", R"({"type": "rect", "center": [0, 2, 0], "edge_u": [0, 0, 0], "edge_v": [0, 0, 1], "radiance": [1, 1, 1]})",
+         "scenes/x.json: emitters[1].edge_u: must not be the zero vector"},
+        {"/emitters/1", R"({"type": "rect", "center": [0, 2, 0], "edge_u": [1, 0, 0], "edge_v": [0, 0, 1], "radiance": [1, -1, 1]})",
+         "scenes/x.json: emitters[1].radiance[1]: value -1 must be >= 0"},
+        {"/emitters/1", R"({"type": "rect", "center": [0, 2, 0], "edge_u": [1, 0, 1e39], "edge_v": [0, 0, 1], "radiance": [1, 1, 1]})",
+         "scenes/x.json: emitters[1].edge_u[2]: value 1e+39 overflows a 32-bit float"},
+        {"/emitters/1", R"({"type": "rect", "center": [0, 2, 0], "edge_u": [1, 0, 0], "radiance": [1, 1, 1]})",
+         "scenes/x.json: emitters[1].edge_v: missing required key"},
+        {"/emitters/1", R"({"type": "rect", "center": [0, 2, 0], "edge_u": [1, 0, 0], "edge_v": [0, 0, 1], "radius": 1, "radiance": [1, 1, 1]})",
+         "scenes/x.json: emitters[1].radius: unknown key (expected one of: type, center, edge_u, edge_v, radiance, material)"},
+        {"/emitters/1", R"({"type": "disk", "center": [0, 2, 0], "normal": [0, -1, 0], "radius": 0, "radiance": [1, 1, 1]})",
+         "scenes/x.json: emitters[1].radius: value 0 must be > 0"},
+        {"/emitters/1", R"({"type": "disk", "center": [0, 2, 0], "normal": [0, 0, 0], "radius": 1, "radiance": [1, 1, 1]})",
+         "scenes/x.json: emitters[1].normal: must not be the zero vector"},
+        {"/emitters/1", R"({"type": "disk", "center": [0, 2, 0], "normal": [0, -1, 0], "radius": 1, "radiance": [-1, 1, 1]})",
+         "scenes/x.json: emitters[1].radiance[0]: value -1 must be >= 0"},
         {"/camera", R"({"type": "thin_lens", "position": [0, 1, 4], "look_at": [0, 1, 0], "aperture_radius": 0.1, "focus_distance": -1})",
          "scenes/x.json: camera.focus_distance: value -1 must be > 0"},
         {"/camera", R"({"type": "thin_lens", "position": [0, 1, 4], "look_at": [0, 1, 0], "aperture_radius": 0, "focus_distance": 4})",
@@ -222,7 +240,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
     Json empty = base_scene();
     empty["objects"] = Json::array();
     empty["emitters"] = Json::array();
-    CHECK(error_of_text(empty.dump()) == "scenes/x.json: the scene has no objects and no emissive spheres (point lights are not geometry)");
+    CHECK(error_of_text(empty.dump()) == "scenes/x.json: the scene has no objects and no emitters (point lights are not geometry)");
 }
 
 TEST_CASE("scene parser: malformed JSON, overflow, NaN and duplicate keys", "[scene]") {

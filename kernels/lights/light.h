@@ -1,7 +1,7 @@
 /* Lights: what every integrator (path tracer, light tracer, BDPT) knows about one light, and what a
  * sample of it returns. docs/lights.md gives the formulas and the power used for light selection.
  *
- * A Light is a plain struct of 4-byte scalars (12 words, 48 bytes): the same layout in OpenCL C and
+ * A Light is a plain struct of 4-byte scalars (16 words, 64 bytes): the same layout in OpenCL C and
  * C++, so the host uploads an array of them (render/light_set.hpp) as a buffer. The samplers take
  * private pointers: a kernel copies the light first (`Light l = lights[k];`). */
 #ifndef KERNELS_LIGHTS_LIGHT_H
@@ -11,19 +11,26 @@
 #define LIGHT_ENVIRONMENT 0 /* the environment map at infinity (ibl/environment.h) */
 #define LIGHT_SPHERE 1      /* an emissive sphere of the scene: part of the distance field */
 #define LIGHT_POINT 2       /* a point light: a delta position, not geometry */
+#define LIGHT_RECT 3        /* a rect emitter: a parallelogram emitting on one side, intersected exactly */
+#define LIGHT_DISK 4        /* a disk emitter: emitting on the side of its normal, intersected exactly */
 
 /* The distance reported for a sample of the environment: far beyond any scene, yet finite, so a
  * shadow ray's maximum distance and comparisons stay well defined. */
 #define LIGHT_INFINITE_DISTANCE 1e30f
 
 typedef struct Light {
-    float position[3]; /* sphere: its centre; point light: its position; environment: unused */
-    float radius;      /* sphere only */
-    float emission[3]; /* sphere: radiance Le, W m^-2 sr^-1, the same from both sides;
+    float position[3]; /* sphere, rect, disk: its centre; point light: its position; environment: unused */
+    float radius;      /* sphere, disk */
+    float emission[3]; /* sphere, rect, disk: radiance Le, W m^-2 sr^-1 (a sphere's the same from both
+                          sides, a rect's and a disk's on their emitting side only);
                           point light: intensity I, W sr^-1; environment: unused (the map holds it) */
     int type;          /* LIGHT_* */
-    int material_slot; /* sphere: its material slot in the compiled scene; -1 otherwise */
-    int pad[3];        /* to 48 bytes, a multiple of 16 */
+    float edge_u[3];   /* rect: its edges U, V (the points centre + x U + y V, |x|, |y| <= 1/2,
+                          emitting towards U x V); disk: its tangents times the radius (the points
+                          centre + x U + y V, x^2 + y^2 <= 1, emitting towards U x V) */
+    int material_slot; /* sphere, rect, disk: its material slot in the compiled scene; -1 otherwise */
+    float edge_v[3];
+    int pad;           /* to 64 bytes, a multiple of 16 */
 } Light;
 
 /* One sample of one light, seen from a reference point p. */

@@ -221,7 +221,8 @@ cli_output_test(albedo.writes_png_and_csv 46 albedo.png albedo.csv
 # the main job, small: three presets' lobes, albedo, validation and preview (a conductor, a plastic and
 # the 2017 model, whose validation fails), the preview sheet, the speed-against-accuracy study on
 # short budgets and the stability atlas, with their charts; every preset of presets/ would add a
-# preview's kernel build and a validation each and show nothing new
+# preview's kernel build and a validation each and show nothing new; the studio's render (mostly
+# dark at 96 x 96, a PNG under 20 kB) is on the page, which the browser test below checks
 cli_output_test(report.writes_everything 138
                 report/previews.png|report/albedo.png|report/preview_gold.png|report/scene_cornell_box.png|report/speed_preview_glossy_plastic.png|report/speed_scene_caustic.png|report/speed_march_metaballs.png|report/atlas_energy.png|report/atlas_reciprocity.png|report/atlas_march_lost.png|report/atlas_march_steps.png|report/atlas_precision.png|report/atlas_strategies.png
                 report/albedo.csv
@@ -229,7 +230,7 @@ cli_output_test(report.writes_everything 138
                       ${PROJECT_SOURCE_DIR}/presets/dtoadq2017_typical.json=presets/dtoadq2017_typical.json
                 ARGS report --presets presets --env ${PROJECT_SOURCE_DIR}/envmaps/studio.exr -o report
                 --samples 20000 --theta-in 30 --preview-spp 2 --preview-size 96x96
-                --scene ${PROJECT_SOURCE_DIR}/scenes/cornell_box.json --scene-spp 2
+                --scene ${PROJECT_SOURCE_DIR}/scenes/cornell_box.json --studio-scene ${PROJECT_SOURCE_DIR}/scenes/studio.json --scene-spp 2
                 --study-seconds 0.2 --study-reference-seconds 0.6 --study-size 48x48
                 --study-presets ${PROJECT_SOURCE_DIR}/presets/glossy_plastic.json
                 --study-scenes ${PROJECT_SOURCE_DIR}/scenes/caustic.json --study-march-scene ${PROJECT_SOURCE_DIR}/scenes/metaballs.json
@@ -504,14 +505,14 @@ set(REPORT_PRESETS SETUP ${SRC}/presets/copper.json=presets/copper.json ${SRC}/p
 cli_interrupt_test(NAME report.ctrl_c_between_presets TRIGGER "report: preview of gold" DELAY 0 ${REPORT_PRESETS}
                    EXRS report/preview_copper.exr MIN_SPP 16 MAX_SPP 16 ABSENT report/preview_gold.exr report/index.html
                    EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart, the preview of copper \\(2 presets in all\\)"
-                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json -o report --samples 20000 --theta-in 30 --no-study --no-strategies
+                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json --studio-scene ${SRC}/scenes/studio.json -o report --samples 20000 --theta-in 30 --no-study --no-strategies
                         --atlas-scene ${SRC}/scenes/metaballs.json
                         --preview-spp 16 --preview-size 32x32)
 # Ctrl-C during a preview of a report: that preview is written with the samples it holds.
 cli_interrupt_test(NAME report.ctrl_c_during_preview TRIGGER "report: preview of copper" DELAY 4 ${REPORT_PRESETS}
                    EXRS report/preview_copper.exr MIN_SPP 1 MAX_SPP 999999 ABSENT report/preview_gold.exr report/index.html
                    EXPECT "dtoadq: report interrupted; finished: the lobe plots, the albedo chart; cut short: the preview of copper \\([0-9]+ of 1000000 samples per pixel, written\\)"
-                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json -o report --samples 20000 --theta-in 30 --no-study --no-strategies
+                   ARGS report --presets presets --env ${SRC}/envmaps/studio.exr --scene ${SRC}/scenes/cornell_box.json --studio-scene ${SRC}/scenes/studio.json -o report --samples 20000 --theta-in 30 --no-study --no-strategies
                         --atlas-scene ${SRC}/scenes/metaballs.json
                         --preview-spp 1000000 --preview-size 32x32)
 
