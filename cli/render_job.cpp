@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
@@ -16,6 +17,7 @@
 #include "render/scene_environment.hpp"
 #include "scene/look_dev_references.hpp"
 #include "scene/load_scene.hpp"
+#include "scene/scene_time.hpp"
 #include "scene/test_model.hpp"
 
 namespace lab::cli {
@@ -30,6 +32,9 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
     cmd.add_option("--background-blur", o->background_blur,
                    "Blur of the background camera rays see, degrees in [0, 90] (a spherical Gaussian's sigma; 0: sharp); the lighting is "
                    "unchanged (default: the scene's, else 0)");
+    cmd.add_option("--scene-time", o->scene_time,
+                   "The scene time in seconds: where the scene's camera and environment keyframes are (docs/scenes.md, Time)")
+        ->capture_default_str();
     cmd.add_option("--size", o->size, "Image size WxH")->capture_default_str();
     cmd.add_option("--light-selection", o->light_selection, "How a light is chosen for next-event estimation: power or uniform")
         ->capture_default_str();
@@ -88,21 +93,38 @@ void require_within(float value, const std::string& option, float lo, float hi) 
         throw InputError(option, "", "value " + std::to_string(value) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
+// The environment of `source` loaded with `options` by `load`, or the cache's copy of it turned and scaled.
+ibl::Environment cached_environment(EnvironmentCache* cache, const std::string& source, const ibl::EnvironmentOptions& options,
+                                    const std::function<ibl::Environment()>& load) {
+    if (cache && cache->environment && cache->environment->source() == source) {
+        ibl::Environment environment = *cache->environment;
+        environment.set_transform(options.rotation_degrees, options.exposure_stops);
+        return environment;
+    }
+    ibl::Environment environment = load();
+    if (cache) cache->environment = environment;
+    return environment;
+}
+
 std::optional<ibl::Environment> load_job_environment(const RenderJobOptions& o, const scene::Scene& scene, std::string* name) {
     ibl::EnvironmentOptions env_options;
     env_options.rotation_degrees = o.env_rotation;
     env_options.exposure_stops = o.env_exposure;
+    EnvironmentCache* cache = o.environment_cache.get();
     if (!o.env.empty()) {
         *name = o.env;
-        return ibl::load_environment(o.env, env_options);
+        return cached_environment(cache, o.env, env_options, [&] { return ibl::load_environment(o.env, env_options); });
     }
-    if (scene.environment) return render::load_scene_environment(scene, env_options, name);  // its rotation and exposure, the options' on top
+    if (scene.environment) {  // its rotation and exposure, the options' on top
+        const ibl::EnvironmentOptions options = render::scene_environment_options(scene, env_options, name);
+        return cached_environment(cache, *name, options, [&] { return *render::load_scene_environment(scene, env_options); });
+    }
     if (o.default_env.empty()) {
         *name = "none";
         return std::nullopt;
     }
     *name = o.default_env;
-    return ibl::load_environment(o.default_env, env_options);
+    return cached_environment(cache, o.default_env, env_options, [&] { return ibl::load_environment(o.default_env, env_options); });
 }
 
 }  // namespace
@@ -126,6 +148,7 @@ render::RenderSettings checked_render_settings(const RenderJobOptions& o, render
     *selection = render::parse_light_selection(o.light_selection);
     require_within(o.env_rotation, "--env-rotation", -36000.0f, 36000.0f);
     require_within(o.env_exposure, "--env-exposure", -64.0f, 64.0f);
+    if (!(std::fabs(o.scene_time) <= 1e9)) throw InputError("--scene-time", "", "must be a number of seconds in [-1e9, 1e9]");
     parse_on_off(o.ground, "--ground");
     scene::parse_look_dev_references(o.references, "--references");
     settings.object_bounds = parse_on_off(o.object_bounds, "--object-bounds");
@@ -151,7 +174,8 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     }
     if (!parse_on_off(o.ground, "--ground")) compile.disabled_objects.push_back(scene::kGroundObject);
     compile.march_everything = settings.march_everything;  // the scene as the renderer has it (the viewer's probe reads it)
-    scene::Scene scene = scene::apply_options(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), compile);
+    scene::Scene scene =
+        scene::apply_options(scene::scene_at_time(o.scene.empty() ? scene::load_test_model() : scene::load_scene(o.scene), o.scene_time), compile);
     scene::Scene base_scene = scene;
     scene::LookDevReferences references = scene::parse_look_dev_references(o.references, "--references");
     references.shadow_catcher = references.shadow_catcher || o.shadow_catcher;  // the catcher takes the ground's place
@@ -169,6 +193,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     job.environment_name = env_name;
     job.env_rotation = o.env_rotation;
     job.env_exposure = o.env_exposure;
+    job.scene_time = o.scene_time;
     job.ground = parse_on_off(o.ground, "--ground");
     job.references = scene::look_dev_references_text(references);
     job.base_scene = std::move(base_scene);
@@ -199,6 +224,9 @@ film::ImageMetadata job_metadata(const RenderJob& job, const render::Renderer& r
     m.set("env_exposure", job.env_exposure);
     m.set("ground", job.ground ? "on" : "off");
     m.set("references", job.references);
+    char seconds[40];
+    std::snprintf(seconds, sizeof seconds, "%.17g", job.scene_time);  // every digit: a resume or merge at another time is refused
+    m.set("scene_time", seconds);
     return m;
 }
 
@@ -238,6 +266,10 @@ render::RenderLimits run_limits(const RenderRunOptions& run, const std::optional
     }
     if (resumed) {
         int held = int(resumed->ranges.count());
+        if (run.skip_finished && held >= run.spp) {
+            limits.samples = 0;  // a finished frame
+            return limits;
+        }
         if (!run.time_seconds && held >= run.spp)
             throw InputError("--spp", "", std::to_string(run.spp) + " samples per pixel in all, but " + resumed->path + " already holds " +
                                               std::to_string(held) + ": ask for more to resume");
@@ -249,7 +281,8 @@ render::RenderLimits run_limits(const RenderRunOptions& run, const std::optional
 
 }  // namespace
 
-void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra) {
+bool run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra,
+                    std::optional<opencl::Runtime>* shared_runtime) {
     // Everything that can be wrong with the input is found before the first sample.
     render::check_render_output(run.output);
     const render::AovSelection aov_selection = render::parse_aov_selection(run.aov, run.output);
@@ -268,8 +301,8 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (!run.resume.empty()) resumed = render::read_film_file(run.resume);
     render::RenderLimits limits = run_limits(run, range, resumed);
     RenderJob job = prepare_render_job(options);
-    std::optional<opencl::Runtime> runtime;
-    std::unique_ptr<render::Renderer> renderer = make_renderer(job, options.device, &runtime);
+    std::optional<opencl::Runtime> own_runtime;
+    std::unique_ptr<render::Renderer> renderer = make_renderer(job, options.device, shared_runtime ? shared_runtime : &own_runtime);
     auto metadata_now = [&] {
         film::ImageMetadata m = job_metadata(job, *renderer, renderer->statistics());
         for (const auto& [key, value] : extra.values) m.values[key] = value;
@@ -281,6 +314,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     if (resumed) {
         render::check_same_render("this render", metadata_now(), renderer->settings().width, renderer->settings().height, *resumed);
         renderer->restore_film(resumed->film, resumed->ranges);
+        if (limits.samples == 0) return false;  // finished (skip_finished), and a part of this render
     }
     if (!run.quiet)
         std::printf("%s on %s: kernel built in %.2f s\n", job.description.c_str(), renderer->device_description().c_str(),
@@ -298,6 +332,11 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
     render::ProgressiveOutcome outcome = render::render_progressively(*renderer, limits);
     render::RenderStatistics stats = renderer->statistics();
     if (!outcome.failure.empty() && stats.samples_per_pixel == 0) render::fail_after_writing(outcome, 0, "");
+    if (stats.samples_per_pixel == 0 && (outcome.interrupted || render::interrupt_requested())) {
+        // a file without samples could be neither resumed nor merged (render/film_file.hpp)
+        std::fprintf(stderr, "dtoadq: interrupted before the first sample; nothing was written\n");
+        throw CLI::RuntimeError(render::kInterruptedExitStatus);
+    }
     film::ImageMetadata metadata = metadata_now();
     metadata.set("denoise", denoise ? "on" : "off");
     const render::FilmReadback film = renderer->film();
@@ -326,6 +365,7 @@ void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run
         std::fprintf(stderr, "dtoadq: interrupted after %d samples per pixel; the image so far was written\n", stats.samples_per_pixel);
         throw CLI::RuntimeError(render::kInterruptedExitStatus);
     }
+    return true;
 }
 
 }  // namespace lab::cli

@@ -18,11 +18,20 @@
 
 namespace lab::cli {
 
+// An environment loaded once for many jobs (a sequence's frames): a job whose environment comes from
+// the same file or constant takes a copy turned and scaled to its own rotation and exposure
+// (ibl::Environment::set_transform, which makes exactly what a fresh load would).
+struct EnvironmentCache {
+    std::optional<ibl::Environment> environment;
+};
+
 struct RenderJobOptions {
     std::string scene;     // empty: the built-in test model
     std::string material;  // preset for the "sample" slot; empty: the scene's own
     std::string env;       // file or constant:R,G,B; empty: the scene's (else see default_env)
     std::string default_env;  // when neither --env nor the scene gives one; empty: no environment
+    double scene_time = 0.0;  // seconds: the scene's keyframes at this time (scene/scene_time.hpp)
+    std::shared_ptr<EnvironmentCache> environment_cache;  // none: every job loads its environment
     float env_rotation = 0.0f;
     float env_exposure = 0.0f;
     // What camera rays see of the environment (render::RenderSettings); unset: the scene's, else 1 and 0
@@ -61,6 +70,7 @@ struct RenderJob {
     render::RenderInput input;
     std::string scene_name, material_name, environment_name;
     float env_rotation = 0.0f, env_exposure = 0.0f;  // the options' (a scene's own are in its file)
+    double scene_time = 0.0;
     bool ground = true;
     std::string references = "none";  // the references' words, the shadow catcher's ("catcher") among them
     scene::Scene base_scene;  // input.scene without the look-dev references (the viewer adds and removes them)
@@ -101,13 +111,20 @@ struct RenderRunOptions {
     std::string resume;   // --resume FILE.exr: continue that render (its film) up to --spp in all, or for --time more
     std::string aov;      // --aov albedo,normal,depth: first-hit AOVs as EXR layers (render/aov_layers.hpp)
     std::string denoise = "off";  // --denoise on: the image denoised, the raw one kept as noisy.R/G/B (render/display_denoise.hpp)
+    // A frame of a sequence (cli/render_sequence.hpp): a --resume file that holds --spp samples
+    // already is a finished frame, and the job renders nothing instead of refusing.
+    bool skip_finished = false;
 };
 void add_render_run_options(CLI::App& cmd, const std::shared_ptr<RenderRunOptions>& run);
 
 // The whole command: checks the output and the limits, prepares the job, renders progressively
 // (Ctrl-C writes the image so far), writes the EXR with metadata and the film (render/film_file.hpp)
 // and the PNG, prints statistics. `extra` is added to the metadata. With --samples it renders one
-// sample range; with --resume it first checks that the file is a part of this same render.
-void run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra = {});
+// sample range; with --resume it first checks that the file is a part of this same render. With
+// `runtime` (a sequence's frames) the renderer runs on that OpenCL runtime, made on the first call,
+// so that its program is built once. Returns false when it rendered nothing: a finished frame
+// (skip_finished).
+bool run_render_job(const RenderJobOptions& options, const RenderRunOptions& run, const film::ImageMetadata& extra = {},
+                    std::optional<opencl::Runtime>* runtime = nullptr);
 
 }  // namespace lab::cli

@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include "common/child_process.hpp"
+#include "common/ffmpeg.hpp"
+#include "common/frame_pattern.hpp"
 #include "common/input_error.hpp"
 #include "film/image_output.hpp"
 #include "render/interrupt.hpp"
@@ -21,23 +23,6 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-// Where the one printf integer conversion of a pattern is: [start, end) of "%d" or "%0Nd";
-// npos when there is none or more than one.
-std::pair<size_t, size_t> frame_field(const std::string& pattern) {
-    std::pair<size_t, size_t> found{std::string::npos, std::string::npos};
-    for (size_t i = pattern.find('%'); i != std::string::npos; i = pattern.find('%', i + 1)) {
-        size_t j = i + 1;
-        if (j < pattern.size() && pattern[j] == '0') {
-            ++j;
-            while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j;
-        }
-        if (j >= pattern.size() || pattern[j] != 'd' || found.first != std::string::npos) return {std::string::npos, std::string::npos};
-        found = {i, j + 1};
-        i = j;
-    }
-    return found;
-}
-
 // The camera orbited by `degrees` about the vertical axis (+y) through its look-at point: a turn
 // of the world about that axis seen from the camera's side.
 scene::Camera orbited(scene::Camera c, float degrees) {
@@ -49,14 +34,6 @@ scene::Camera orbited(scene::Camera c, float degrees) {
 }
 
 }  // namespace
-
-std::string turntable_frame_path(const std::string& pattern, int frame) {
-    const auto [start, end] = frame_field(pattern);
-    const std::string spec = pattern.substr(start, end - start);
-    char digits[32];
-    std::snprintf(digits, sizeof digits, spec.c_str(), frame);
-    return pattern.substr(0, start) + digits + pattern.substr(end);
-}
 
 void render_turntable(const RenderJobOptions& job_options, const TurntableOptions& t) {
     if (t.frames < 1 || t.frames > 100000) throw InputError("--turntable", "", "must be a number of frames in [1, 100000]");
@@ -73,14 +50,14 @@ void render_turntable(const RenderJobOptions& job_options, const TurntableOption
         const fs::path folder = fs::path(t.output).parent_path().empty() ? fs::path(".") : fs::path(t.output).parent_path();
         if (!fs::is_directory(folder) || access(folder.c_str(), W_OK) != 0)
             throw InputError(t.output, "", "cannot write the video: " + folder.string() + " is not a folder this user can write");
-        if (run_process({"ffmpeg", "-version"}, "/dev/null") != 0)
+        if (!ffmpeg_available())
             throw InputError("--turntable", "", "a video needs FFmpeg (apt-get install ffmpeg); or write the frames: -o frame_%04d.png");
         frames_folder.emplace("turntable");
         pattern = (frames_folder->path() / "frame_%05d.png").string();
     } else {
-        if (frame_field(t.output).first == std::string::npos)
+        if (!is_frame_pattern(t.output))
             throw InputError(t.output, "", "expected a video (.mp4) or a frame pattern with one %d or %0Nd (frame_%04d.png or .exr)");
-        film::check_output_path(turntable_frame_path(t.output, 0));
+        film::check_output_path(frame_path(t.output, 0));
     }
 
     RenderJob job = prepare_render_job(job_options);
@@ -109,7 +86,7 @@ void render_turntable(const RenderJobOptions& job_options, const TurntableOption
         metadata.set("turntable", t.turn);
         metadata.set("turntable_frame", k);
         metadata.set("turntable_degrees", angle);
-        const std::string path = turntable_frame_path(pattern, k);
+        const std::string path = frame_path(pattern, k);
         film::write_image(path, renderer->image(), tone_map, t.exposure, metadata);
         ++done;
         if (!t.quiet) std::printf("frame %d/%d (%.1f deg): %s\n", k + 1, t.frames, angle, video ? "rendered" : path.c_str());
@@ -118,21 +95,16 @@ void render_turntable(const RenderJobOptions& job_options, const TurntableOption
     if (video && done > 0) {
         // Into the output's folder under a temporary name, then renamed: a failed encode leaves no
         // partial video, and the frames are kept beside it.
-        const std::string partial = t.output + ".partial.mp4";
         const fs::path log = frames_folder->path() / "ffmpeg.log";
-        const int status = run_process({"ffmpeg", "-y", "-loglevel", "error", "-framerate", std::to_string(t.fps), "-i", pattern, "-vf",
-                                        "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18", partial},
-                                       log.string());
-        if (status != 0) {
+        try {
+            encode_video(pattern, 0, t.fps, t.output, log.string());
+        } catch (const std::runtime_error& e) {
             std::error_code ec;
-            fs::remove(partial, ec);
             const fs::path kept = t.output + ".frames";
             fs::remove_all(kept, ec);
             fs::copy(frames_folder->path(), kept, ec);
-            throw std::runtime_error("ffmpeg failed (status " + std::to_string(status) + "): " + last_line(log) + "; the frames are kept in " +
-                                     kept.string());
+            throw std::runtime_error(std::string(e.what()) + "; the frames are kept in " + kept.string());
         }
-        fs::rename(partial, t.output);
         std::printf("wrote %s: %d frames at %d frames/s\n", t.output.c_str(), done, t.fps);
     }
     if (render::interrupt_requested()) {

@@ -26,7 +26,4 @@ struct TurntableOptions {
 // (the frames are then kept in a folder beside the video, named in the message).
 void render_turntable(const RenderJobOptions& job_options, const TurntableOptions& options);
 
-// The file of frame k of a sequence pattern (its one %d or %0Nd filled in).
-std::string turntable_frame_path(const std::string& pattern, int frame);
-
 }  // namespace lab::cli

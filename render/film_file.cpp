@@ -19,10 +19,11 @@ const std::vector<std::string>& channel_names() {
 const char* const kPassesChannel = "film.squares.passes";
 
 // Metadata that differs between parts of one render and does not change what it estimates (the
-// display's tone map, exposure and denoising change the image shown, never the film).
+// display's tone map, exposure and denoising change the image shown, never the film; a sequence's
+// frame number and rate say where a render sits in it, and its scene_time, compared, what it shows).
 bool is_per_part(const std::string& key) {
-    static const std::set<std::string> keys = {"spp",      "sample_ranges", "seconds",  "device",       "nonfinite_samples",
-                                               "lost_rays", "tonemap",      "exposure", "merged_parts", "denoise"};
+    static const std::set<std::string> keys = {"spp",      "sample_ranges", "seconds",  "device", "nonfinite_samples", "lost_rays",
+                                               "tonemap",  "exposure",      "merged_parts", "denoise", "frame", "fps"};
     return keys.count(key) > 0;
 }
 

@@ -22,14 +22,13 @@ bool parse_index(const std::string& text, int64_t* value) {
     return true;
 }
 
-// "A:B" with A < B, or false.
-bool parse_pair(const std::string& text, int64_t* first, int64_t* end) {
+}  // namespace
+
+bool parse_index_pair(const std::string& text, int64_t* first, int64_t* end) {
     size_t colon = text.find(':');
     if (colon == std::string::npos) return false;
     return parse_index(text.substr(0, colon), first) && parse_index(text.substr(colon + 1), end) && *first < *end;
 }
-
-}  // namespace
 
 SampleRanges::SampleRanges(int64_t first, int64_t end) {
     if (first < end) ranges_.push_back({first, end});
@@ -37,7 +36,7 @@ SampleRanges::SampleRanges(int64_t first, int64_t end) {
 
 SampleRanges SampleRanges::parse_range(const std::string& text, const std::string& option) {
     int64_t first = 0, end = 0;
-    if (!parse_pair(text, &first, &end))
+    if (!parse_index_pair(text, &first, &end))
         throw InputError(option, "", "expected A:B, sample indices with 0 <= A < B <= " + std::to_string(kMaxEnd) + ", got \"" + text + "\"");
     return SampleRanges(first, end);
 }
@@ -49,7 +48,7 @@ SampleRanges SampleRanges::parse(const std::string& text, const std::string& fil
         size_t comma = text.find(',', start);
         std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         int64_t first = 0, end = 0;
-        if (!parse_pair(part, &first, &end)) throw InputError(file, field, "\"" + text + "\" is not a list of sample ranges A:B,C:D");
+        if (!parse_index_pair(part, &first, &end)) throw InputError(file, field, "\"" + text + "\" is not a list of sample ranges A:B,C:D");
         SampleRanges one(first, end);
         if (out.overlaps(one)) throw InputError(file, field, "\"" + text + "\" has overlapping sample ranges");
         out = out.joined(one);

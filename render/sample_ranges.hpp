@@ -43,4 +43,8 @@ private:
     void add(int64_t first, int64_t end);
 };
 
+// "A:B", decimal integers with 0 <= A < B <= SampleRanges::kMaxEnd (sample indices, frame
+// numbers), into first and end; false for anything else.
+bool parse_index_pair(const std::string& text, int64_t* first, int64_t* end);
+
 }  // namespace lab::render

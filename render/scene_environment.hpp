@@ -17,4 +17,8 @@ namespace lab::render {
 std::optional<ibl::Environment> load_scene_environment(const scene::Scene& scene, ibl::EnvironmentOptions options = {},
                                                        std::string* name = nullptr);
 
+// What load_scene_environment loads, without loading it: the options it loads with, and in *source
+// the file or the "constant:R,G,B" spec (the loaded environment's source()). The scene declares one.
+ibl::EnvironmentOptions scene_environment_options(const scene::Scene& scene, ibl::EnvironmentOptions options, std::string* source);
+
 }  // namespace lab::render

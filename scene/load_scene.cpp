@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include "brdf/host/parameters.hpp"
@@ -11,6 +12,7 @@
 #include "scene/json_fields.hpp"
 #include "scene/parse_node.hpp"
 #include "scene/scene_limits.hpp"
+#include "scene/scene_time.hpp"
 
 namespace lab::scene {
 namespace {
@@ -24,6 +26,14 @@ std::string resolve(const std::string& scene_file, const std::string& relative) 
     return (fs::path(scene_file).parent_path() / p).lexically_normal().string();
 }
 
+// The camera's keyframes: every field of the camera a shot animates (the type stays).
+std::vector<TrackSpec> camera_tracks(CameraType type) {
+    const float big = std::numeric_limits<float>::max(), inf = std::numeric_limits<float>::infinity();
+    std::vector<TrackSpec> specs = {{"position", 3, -big, big}, {"look_at", 3, -big, big}, {"up", 3, -big, big}, {"fov_degrees", 1, 0.0f, 180.0f, true}};
+    if (type == CameraType::thin_lens) specs.insert(specs.end(), {{"aperture_radius", 1, 0.0f, inf, true}, {"focus_distance", 1, 0.0f, inf, true}});
+    return specs;
+}
+
 Camera parse_camera(const Json& value, const std::string& file) {
     const std::string path = "camera";
     if (!value.is_object()) throw InputError(file, path, std::string("expected an object, got ") + value.type_name());
@@ -32,7 +42,7 @@ Camera parse_camera(const Json& value, const std::string& file) {
     const Json& type = value.at("type");
     if (!type.is_string()) throw InputError(file, "camera.type", std::string("expected a string, got ") + type.type_name());
     Camera camera;
-    std::vector<std::string> keys = {"type", "position", "look_at", "up", "fov_degrees"};
+    std::vector<std::string> keys = {"type", "position", "look_at", "up", "fov_degrees", "keyframes"};
     if (type == "thin_lens") {
         camera.type = CameraType::thin_lens;
         keys.insert(keys.end(), {"aperture_radius", "focus_distance"});
@@ -40,17 +50,28 @@ Camera parse_camera(const Json& value, const std::string& file) {
         throw InputError(file, "camera.type", "unknown camera type \"" + type.get<std::string>() + "\" (expected one of: pinhole, thin_lens)");
     }
     Fields f(value, path, file, keys);
-    camera.position = f.vec3("position");
-    camera.look_at = f.vec3("look_at");
-    if (camera.look_at == camera.position) f.fail("look_at", "equals camera.position: there is no view direction");
-    if (f.has("up")) camera.up = f.nonzero_vec3("up");
-    glm::dvec3 forward = glm::normalize(glm::dvec3(camera.look_at) - glm::dvec3(camera.position));
-    if (glm::length(glm::cross(forward, glm::normalize(glm::dvec3(camera.up)))) < 1e-6)
-        f.fail("up", "is parallel to the view direction (look_at - position)");
-    if (f.has("fov_degrees")) camera.fov_degrees = f.in_open_range("fov_degrees", 0.0f, 180.0f);
+    if (f.has("keyframes")) camera.keyframes = parse_keyframes(f.at("keyframes"), f.path_of("keyframes"), file, camera_tracks(camera.type));
+    // each field is either still (here) or keyframed, and a required one is one of the two
+    auto keyframed = [&](const std::string& key) {
+        if (!camera.keyframes || !camera.keyframes->find(key)) return false;
+        if (f.has(key)) f.fail(key, "is keyframed too (camera.keyframes." + key + "): give it in one place");
+        return true;
+    };
+    if (!keyframed("position")) camera.position = f.vec3("position");
+    if (!keyframed("look_at")) camera.look_at = f.vec3("look_at");
+    if (!keyframed("up") && f.has("up")) camera.up = f.nonzero_vec3("up");
+    if (!keyframed("fov_degrees") && f.has("fov_degrees")) camera.fov_degrees = f.in_open_range("fov_degrees", 0.0f, 180.0f);
     if (camera.type == CameraType::thin_lens) {
-        camera.aperture_radius = f.positive("aperture_radius");
-        camera.focus_distance = f.positive("focus_distance");
+        if (!keyframed("aperture_radius")) camera.aperture_radius = f.positive("aperture_radius");
+        if (!keyframed("focus_distance")) camera.focus_distance = f.positive("focus_distance");
+    }
+    if (!camera.keyframes) {
+        if (auto problem = camera_problem(camera)) f.fail(problem->first, problem->second);
+    } else {
+        Scene still;
+        still.file = file;
+        still.camera = camera;
+        for (float t : camera.keyframes->times) scene_at_time(still, double(t));  // each keyframe a camera
     }
     return camera;
 }
@@ -226,7 +247,8 @@ void check_shape_node_count(const std::vector<Object>& objects, const std::strin
 }
 
 EnvironmentSpec parse_environment(const Json& value, const std::string& file) {
-    Fields f(value, "environment", file, {"file", "constant", "rotation_degrees", "exposure", "background_opacity", "background_blur_degrees"});
+    Fields f(value, "environment", file,
+             {"file", "constant", "rotation_degrees", "exposure", "background_opacity", "background_blur_degrees", "keyframes"});
     EnvironmentSpec env;
     if (f.has("file") == f.has("constant"))
         throw InputError(file, "environment", "give exactly one of \"file\" (an image) and \"constant\" (a radiance)");
@@ -238,6 +260,11 @@ EnvironmentSpec parse_environment(const Json& value, const std::string& file) {
         env.constant = f.non_negative_vec3("constant");
     }
     if (f.has("rotation_degrees")) env.rotation_degrees = f.in_range("rotation_degrees", -360.0f, 360.0f);
+    if (f.has("keyframes")) {
+        // turns over time may add up to many: the command line's --env-rotation range
+        env.keyframes = parse_keyframes(f.at("keyframes"), f.path_of("keyframes"), file, {{"rotation_degrees", 1, -36000.0f, 36000.0f}});
+        if (f.has("rotation_degrees")) f.fail("rotation_degrees", "is keyframed too (environment.keyframes.rotation_degrees): give it in one place");
+    }
     if (f.has("exposure")) env.exposure = f.in_range("exposure", -20.0f, 20.0f);
     if (f.has("background_opacity")) env.background_opacity = f.in_range("background_opacity", 0.0f, 1.0f);
     if (f.has("background_blur_degrees")) env.background_blur_degrees = f.in_range("background_blur_degrees", 0.0f, 90.0f);

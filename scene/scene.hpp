@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "brdf/brdf.hpp"
+#include "scene/keyframes.hpp"
 #include "single_source/host_vocabulary.hpp"
 
 namespace lab::scene {
@@ -111,6 +112,9 @@ struct Camera {
     float fov_degrees = 40.0f;    // vertical field of view
     float aperture_radius = 0.0f; // thin lens only
     float focus_distance = 0.0f;  // thin lens only
+    // The fields that change with the scene time (scene/scene_time.hpp); a field keyframed here
+    // takes no static value above.
+    std::optional<Keyframes> keyframes;
 };
 
 struct EnvironmentSpec {
@@ -122,6 +126,7 @@ struct EnvironmentSpec {
     // --background-opacity and --background-blur replace them); the lighting is unchanged.
     float background_opacity = 1.0f;       // [0, 1]
     float background_blur_degrees = 0.0f;  // [0, 90]
+    std::optional<Keyframes> keyframes;    // rotation_degrees over the scene time (scene/scene_time.hpp)
 };
 
 // A material slot: declared materials first (in file order), then one per emissive sphere, then

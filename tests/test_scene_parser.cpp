@@ -149,7 +149,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
         {"/camera/type", R"("fisheye")",
          "scenes/x.json: camera.type: unknown camera type \"fisheye\" (expected one of: pinhole, thin_lens)"},
         {"/camera/aperture_radius", "0.1",
-         "scenes/x.json: camera.aperture_radius: unknown key (expected one of: type, position, look_at, up, fov_degrees)"},
+         "scenes/x.json: camera.aperture_radius: unknown key (expected one of: type, position, look_at, up, fov_degrees, keyframes)"},
         {"/camera/type", R"("thin_lens")",
          "scenes/x.json: camera.aperture_radius: missing required key"},
         {"/objects/1/material", R"("silver")",
@@ -225,7 +225,7 @@ TEST_CASE("scene parser: bad values name the file and the field's JSON path", "[
         {"/environment", R"({"constant": [1, -1, 1]})",
          "scenes/x.json: environment.constant[1]: value -1 must be >= 0"},
         {"/environment", R"({"file": "a.exr", "gamma": 2.2})",
-         "scenes/x.json: environment.gamma: unknown key (expected one of: file, constant, rotation_degrees, exposure, background_opacity, background_blur_degrees)"},
+         "scenes/x.json: environment.gamma: unknown key (expected one of: file, constant, rotation_degrees, exposure, background_opacity, background_blur_degrees, keyframes)"},
         {"/extra", "1",
          "scenes/x.json: extra: unknown key (expected one of: $schema, description, camera, materials, objects, emitters, environment)"},
     };

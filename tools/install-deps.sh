@@ -1,9 +1,10 @@
 #!/bin/sh
 # Installs the Debian 12 packages DTOADQ lab needs that are not installed yet (run as root, or with sudo available).
-#   sh tools/install-deps.sh            the build and the main job (dtoadq report)
+#   sh tools/install-deps.sh            the build, the main job (dtoadq report) and the commands' own
+#                                       programs (FFmpeg, for render --video and the turntable's video)
 #   sh tools/install-deps.sh --tests    and what the test run needs besides: a virtual display for the
 #                                       viewer's tests, a browser and an HTML parser for the report page's,
-#                                       FFmpeg for the turntable's video, and the virtual environment .venv/
+#                                       and the virtual environment .venv/
 #                                       with MaterialX and jsonschema from PyPI for the interchange formats'
 #                                       validity check (tests/check_interchange_validity.py)
 #   sh tools/install-deps.sh --fuzz     and clang 16 with its libFuzzer runtime, for tools/fuzz.sh
@@ -15,10 +16,10 @@ packages="cmake g++ make pkg-config ca-certificates
 pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
 libopenimageio-dev openimageio-tools libopenexr-dev
 libglfw3-dev libimgui-dev libglm-dev catch2 nlohmann-json3-dev libcli11-dev libnlopt-dev libpugixml-dev
-python3 python3-matplotlib python3-numpy"
+python3 python3-matplotlib python3-numpy ffmpeg"
 for set in "$@"; do
   case $set in
-    --tests) packages="$packages xvfb xauth libgl1-mesa-dri chromium python3-html5lib ffmpeg python3-venv"; venv=1 ;;
+    --tests) packages="$packages xvfb xauth libgl1-mesa-dri chromium python3-html5lib python3-venv"; venv=1 ;;
     --fuzz) packages="$packages clang-16 libclang-rt-16-dev" ;;
     *) echo "install-deps: unknown option $set (--tests, --fuzz)" >&2; exit 2 ;;
   esac

@@ -484,6 +484,12 @@ foreach(device cpu host)
                      EXPECT "interrupted after [1-9][0-9]* samples per pixel; the image so far was written"
                      ARGS render ${SRC}/scenes/cornell_box.json --device ${device} --size 48x48 --spp 16777216 -o out.exr)
 endforeach()
+# Ctrl-C in a sequence's first frame: that frame is written with its samples so far (the next run
+# continues it, tests/cli/sequence_test.py) and the sequence stops there.
+cli_interrupt_test(NAME render.sequence_ctrl_c TRIGGER "kernel built in" DELAY 0.3
+                   EXRS f_0001.exr MIN_SPP 1 MAX_SPP 16777215 ABSENT f_0002.exr
+                   EXPECT "interrupted after [1-9][0-9]* samples per pixel; the image so far was written"
+                   ARGS render ${SRC}/tests/scene_data/animated.json --device host --size 24x16 --spp 16777216 --frames 1:3 --fps 4 -o f_%04d.exr)
 # A second Ctrl-C right after the first stops at once, during the write if it comes then: the EXR is
 # absent or complete, never truncated (writes are atomic).
 cli_interrupt_test(NAME preview.second_ctrl_c TRIGGER "kernel built in" DELAY 2 ACTION int,0.02
@@ -586,6 +592,41 @@ cli_bad_input(NAME view.turntable_turn EXPECT "${E}--turn: expected model or env
               ARGS view --turntable 4 --turn spin -o ${CLI_SCRATCH}/f_%02d.png)
 cli_bad_input(NAME view.turntable_output EXPECT "${E}${CLI_SCRATCH}/turn\\.gif: expected a video \\(\\.mp4\\) or a frame pattern with one %d"
               ARGS view --turntable 4 -o ${CLI_SCRATCH}/turn.gif)
+
+# --- sequences (render --frames A:B --fps N, cli/render_sequence.hpp) on the host renderer: frame k is
+# the single render at k / N bit for bit, a sequence resumes, --video has every frame (skipped, exit
+# 77, without ffmpeg once the missing-ffmpeg error is checked) ------------------------------------
+foreach(sequence_case identity resume video)
+  add_test(NAME cli.render.sequence_${sequence_case}
+           COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/sequence_test.py $<TARGET_FILE:dtoadq> ${PROJECT_SOURCE_DIR}/tests/scene_data/animated.json
+                   ${CLI_SCRATCH}/sequence_${sequence_case} ${sequence_case})
+  set_tests_properties(cli.render.sequence_${sequence_case} PROPERTIES LABELS cli TIMEOUT 120 SKIP_RETURN_CODE 77)
+endforeach()
+set(SEQUENCE render tests/scene_data/animated.json --device host --size 8x8 --quiet)
+cli_bad_input(NAME render.frames_backwards EXPECT "${E}--frames: expected A:B, frame numbers with 0 <= A < B \\(frames A to B-1\\), got \"3:1\"$"
+              ARGS ${SEQUENCE} --frames 3:1 --fps 24 -o ${CLI_SCRATCH}/s_%04d.exr)
+cli_bad_input(NAME render.frames_no_fps EXPECT "${E}--fps: --frames needs the frames per second of scene time, in .0, 1000.$"
+              ARGS ${SEQUENCE} --frames 0:2 -o ${CLI_SCRATCH}/s_%04d.exr)
+cli_bad_input(NAME render.fps_without_frames EXPECT "${E}--fps: needs --frames A:B$" ARGS ${SEQUENCE} --fps 24 -o ${PNG})
+cli_bad_input(NAME render.frames_no_conversion ABSENT ${CLI_SCRATCH}/s.exr
+              EXPECT "${E}${CLI_SCRATCH}/s\\.exr: the output of --frames needs one %d or %0Nd for the frame number \\(frame_%04d\\.exr\\), and this has no %d$"
+              ARGS ${SEQUENCE} --frames 0:2 --fps 24 -o ${CLI_SCRATCH}/s.exr)
+cli_bad_input(NAME render.frames_two_conversions
+              EXPECT "${E}${CLI_SCRATCH}/s_%d_%04d\\.exr: the output of --frames needs one %d or %0Nd for the frame number \\(frame_%04d\\.exr\\), and this has 2 of them$"
+              ARGS ${SEQUENCE} --frames 0:2 --fps 24 -o ${CLI_SCRATCH}/s_%d_%04d.exr)
+cli_bad_input(NAME render.frames_with_time EXPECT "${E}--time: a sequence renders --spp samples per frame"
+              ARGS ${SEQUENCE} --frames 0:2 --fps 24 --time 5 -o ${CLI_SCRATCH}/s_%04d.exr)
+cli_bad_input(NAME render.frames_video_extension EXPECT "${E}${CLI_SCRATCH}/s\\.gif: --video writes an H\\.264 video: expected an \\.mp4$"
+              ARGS ${SEQUENCE} --frames 0:2 --fps 24 --video ${CLI_SCRATCH}/s.gif -o ${CLI_SCRATCH}/s_%04d.exr)
+cli_bad_input(NAME render.scene_time_not_a_number ABSENT ${PNG} EXPECT "${E}.*--scene-time.*soon"
+              ARGS ${SEQUENCE} --scene-time soon -o ${PNG})
+# every frame's camera is checked before the first is rendered: fov 179, 179, 1 (Catmull-Rom) overshoots at t = 0.5
+cli_bad_input(NAME render.frames_camera_overshoots ABSENT ${CLI_SCRATCH}/o_0000.exr
+              EXPECT "${E}${D}/scene_keyframes_overshoot\\.json: camera\\.keyframes: at t = 0\\.5 s the camera's fov_degrees value 190\\.125 is out of range \\(0, 180\\)$"
+              ARGS render ${D}/scene_keyframes_overshoot.json --device host --size 8x8 --quiet --frames 0:3 --fps 2 -o ${CLI_SCRATCH}/o_%04d.exr)
+cli_bad_input(NAME render.bad_keyframes ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_bad_keyframes\\.json: camera\\.keyframes\\.times\\[2\\]: time 1 is not after the one before it \\(2\\): times must increase strictly$"
+              ARGS render ${D}/scene_bad_keyframes.json --device host --size 8x8 --quiet -o ${PNG})
 
 # --- fit (docs/fitting.md): a bad measured file and bad options, each one line, no preset written --
 set(FIT fit -o ${PNG}.json --quiet --measured)
