@@ -1,6 +1,7 @@
 #include "render/film_file.hpp"
 
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "common/input_error.hpp"
@@ -27,9 +28,18 @@ bool is_per_part(const std::string& key) {
     return keys.count(key) > 0;
 }
 
+// Keys that films written before the setting existed lack, and the value such a film rendered at:
+// a film from before scene time shows the scene at time 0, and resumes and merges as one.
+const std::map<std::string, std::string>& implied_when_absent() {
+    static const std::map<std::string, std::string> implied = {{"scene_time", "0"}};
+    return implied;
+}
+
 std::string text_of(const film::ImageMetadata& m, const std::string& key) {
     const film::MetadataValue* v = m.find(key);
-    return v ? film::metadata_text(*v) : std::string("(absent)");
+    if (v) return film::metadata_text(*v);
+    const auto implied = implied_when_absent().find(key);
+    return implied != implied_when_absent().end() ? implied->second : std::string("(absent)");
 }
 
 // A count stored as text ("nonfinite_samples", "lost_rays"); 0 when absent or not a number.

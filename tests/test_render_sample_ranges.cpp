@@ -367,6 +367,14 @@ TEST_CASE("Render metadata: BDPT's vertex limit, MIS heuristic and strategies ar
     part.metadata = bdpt;
     part.metadata.set("seconds", 99.0f);  // differs between parts: fine
     CHECK_NOTHROW(lab::render::check_same_render("a.exr", bdpt, 16, 16, part));
+    // a film written before scene time (no scene_time) is a part of a render at time 0, not of one at 0.5
+    lab::film::ImageMetadata at_zero = bdpt, later = bdpt;
+    at_zero.set("scene_time", "0");
+    later.set("scene_time", "0.5");
+    part.metadata = bdpt;
+    REQUIRE(part.metadata.find("scene_time") == nullptr);
+    CHECK_NOTHROW(lab::render::check_same_render("a.exr", at_zero, 16, 16, part));
+    CHECK_THROWS_WITH(lab::render::check_same_render("a.exr", later, 16, 16, part), Catch::StartsWith("b.exr: dtoadq:scene_time: \"0\", but"));
     // vcm: its first radius (0: the scene's share) and the radius's shrinking
     CHECK(cache.find("merge_radius") == nullptr);
     const lab::film::ImageMetadata vcm = metadata_of(bidirectional_input(Integrator::vcm));
