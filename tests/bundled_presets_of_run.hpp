@@ -1,7 +1,7 @@
 // The bundled presets (presets/*.json, by file name) that a run builds a kernel for, where a kernel
 // per preset is most of a test's cost (a cold PoCL build, about 2 s of CPU each): every preset that
 // is the only one to need some feature (brdf/host/features.hpp), so each feature's code is built and
-// run in every run, and half of the others, drawn per run (tests/points_of_run.hpp:
+// run in every run, and a third of the others, drawn per run (tests/points_of_run.hpp:
 // DTOADQ_SWEEP_POINTS_SEED repeats a draw, DTOADQ_SWEEP_POINTS=all takes every preset). `name`
 // names the test's draw.
 #pragma once
@@ -35,7 +35,7 @@ inline std::vector<brdf::Preset> bundled_presets_of_run(const std::string& name)
     const int others = int(all.size()) - int(always.size());
     std::vector<brdf::Preset> chosen;
     std::string names;
-    for (int i : sweep_points_of_run(name, int(all.size()), (others + 1) / 2, always)) {
+    for (int i : sweep_points_of_run(name, int(all.size()), (others + 2) / 3, always)) {
         chosen.push_back(all[size_t(i)]);
         names += " " + files[size_t(i)].stem().string();
     }

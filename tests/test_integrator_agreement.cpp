@@ -237,13 +237,13 @@ const std::vector<std::string> kMergingScenes = {"caustic_mirror"};
 
 }  // namespace
 
-// Each run compares cornell_box (the light tracer's case in every run) and half of the other scenes,
+// Each run compares cornell_box (the light tracer's case in every run) and a third of the other scenes,
 // drawn per run (tests/points_of_run.hpp).
 TEST_CASE("Integrator agreement: BDPT and the light tracer against the path tracer, every scene under its own lights",
           "[render][agreement][opencl][sweep]") {
     const std::vector<Case> cases = own_light_cases();
     REQUIRE(cases[0].name == "cornell_box");
-    for (int i : sweep_points_of_run("integrator agreement: scenes under their own lights", int(cases.size()), (int(cases.size()) - 1) / 2, {0}))
+    for (int i : sweep_points_of_run("integrator agreement: scenes under their own lights", int(cases.size()), (int(cases.size()) - 1) / 3, {0}))
         check_case(cases[size_t(i)]);
 }
 
