@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 
 #include "common/luminance.hpp"
@@ -43,44 +44,37 @@ double texel_solid_angle(int face_size, int i, int j) {
 
 double luminance(double r, double g, double b) { return lab::luminance(r, g, b); }
 
-std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<single_source::float4>& texels, int face_size) {
-    const int n = face_size;
-    const int rows = CUBEMAP_FACES * n;
-    if (n <= 0 || texels.size() != size_t(rows) * size_t(n))
-        throw std::invalid_argument("build_cubemap_alias_tables: texel count does not match the face size");
-
-    // The solid angles of one face's texels serve all six faces.
-    std::vector<double> solid_angle(size_t(n) * n);
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) solid_angle[size_t(j) * n + i] = texel_solid_angle(n, i, j);
-
+std::vector<AliasEntry> build_row_alias_tables(const std::vector<single_source::float4>& texels, int rows, int columns,
+                                              const std::function<double(int row, int column)>& texel_measure) {
+    const int n = columns;
+    if (rows <= 0 || n <= 0 || texels.size() != size_t(rows) * size_t(n))
+        throw std::invalid_argument("build_row_alias_tables: texel count does not match rows x columns");
     std::vector<AliasEntry> alias(size_t(rows) * size_t(n + 1));
-    std::vector<double> row_weight(rows), row_solid_angle(rows), weights(n), fallback(n);
+    std::vector<double> row_weight(rows), row_measure(rows), weights(n), fallback(n);
     for (int r = 0; r < rows; ++r) {
-        const int j = r % n;
         double sum = 0.0;
         for (int i = 0; i < n; ++i) {
             const single_source::float4& t = texels[size_t(r) * n + i];
-            fallback[i] = solid_angle[size_t(j) * n + i];
+            fallback[i] = texel_measure(r, i);
             weights[i] = luminance(t.x, t.y, t.z) * fallback[i];
             sum += weights[i];
         }
         row_weight[r] = sum;
-        for (int i = 0; i < n; ++i) row_solid_angle[r] += fallback[i];
+        for (int i = 0; i < n; ++i) row_measure[r] += fallback[i];
         const std::vector<AliasEntry> table = build_alias_table(floored_weights(sum > 0.0 ? weights : fallback));
         std::copy(table.begin(), table.end(), alias.begin() + rows + ptrdiff_t(r) * n);
     }
     double total = 0.0;
     for (double w : row_weight) total += w;
-    const std::vector<AliasEntry> row_table = build_alias_table(floored_weights(total > 0.0 ? row_weight : row_solid_angle));
+    const std::vector<AliasEntry> row_table = build_alias_table(floored_weights(total > 0.0 ? row_weight : row_measure));
     std::copy(row_table.begin(), row_table.end(), alias.begin());
     return alias;
 }
 
-std::vector<float> cubemap_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size) {
-    const int n = face_size, rows = CUBEMAP_FACES * n;
-    if (n <= 0 || alias.size() != size_t(rows) * size_t(n + 1))
-        throw std::invalid_argument("cubemap_texel_probabilities: the tables do not match the face size");
+std::vector<float> row_texel_probabilities(const std::vector<AliasEntry>& alias, int rows, int columns) {
+    const int n = columns;
+    if (rows <= 0 || n <= 0 || alias.size() != size_t(rows) * size_t(n + 1))
+        throw std::invalid_argument("row_texel_probabilities: the tables do not match rows x columns");
     const std::vector<double> row = alias_table_probabilities(alias.data(), rows, alias_entry_starts(rows));
     // every row's table has n cells: where each entry's numbers begin is shared (alias_entry_starts)
     const std::vector<int64_t> column_starts = alias_entry_starts(n);
@@ -90,6 +84,24 @@ std::vector<float> cubemap_texel_probabilities(const std::vector<AliasEntry>& al
         for (int i = 0; i < n; ++i) probability[size_t(r) * n + i] = float(row[size_t(r)] * column[size_t(i)]);
     }
     return probability;
+}
+
+std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<single_source::float4>& texels, int face_size) {
+    const int n = face_size;
+    if (n <= 0 || texels.size() != size_t(CUBEMAP_FACES) * size_t(n) * size_t(n))
+        throw std::invalid_argument("build_cubemap_alias_tables: texel count does not match the face size");
+    // The solid angles of one face's texels serve all six faces.
+    std::vector<double> solid_angle(size_t(n) * n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) solid_angle[size_t(j) * n + i] = texel_solid_angle(n, i, j);
+    return build_row_alias_tables(texels, CUBEMAP_FACES * n, n, [&](int r, int i) { return solid_angle[size_t(r % n) * n + i]; });
+}
+
+std::vector<float> cubemap_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size) {
+    const int n = face_size;
+    if (n <= 0 || alias.size() != size_t(CUBEMAP_FACES) * size_t(n) * size_t(n + 1))
+        throw std::invalid_argument("cubemap_texel_probabilities: the tables do not match the face size");
+    return row_texel_probabilities(alias, CUBEMAP_FACES * n, n);
 }
 
 void store_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size, std::vector<single_source::float4>* texels) {

@@ -3,6 +3,7 @@
 // luminance x solid angle, as the alias tables that ibl/environment.h samples.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "single_source/host_vocabulary.hpp"
@@ -36,17 +37,28 @@ double texel_solid_angle(int face_size, int i, int j);
 // Luminance Y of linear Rec. 709 / sRGB primaries (ITU-R BT.709 weights).
 double luminance(double r, double g, double b);
 
-// The environment's alias tables over the texels of a cube map, 6N + 6N^2 entries: the table over
-// the rows r = face * N + j, then row r's over its texels at 6N + r N (ibl/environment.h). Texel
-// weight = luminance x exact solid angle, floored within its row; a row's weight is the sum of its
-// texels', floored among the rows. A row without light falls back to its texels' solid angles
-// (uniform within the row) and gets the floor's share of the rows' table; an environment without
-// light falls back to solid angles everywhere: uniform over the sphere.
+// Alias tables over a grid of `rows` x `columns` texels (row-major, rows x (columns + 1) entries):
+// the table over the rows first, then row r's over its texels at rows + r columns. Texel weight =
+// luminance x texel_measure(r, i) (a solid angle, an area), floored within its row; a row's weight
+// is the sum of its texels', floored among the rows. A row without light falls back to its texels'
+// measures and gets the floor's share of the rows' table; a grid without light falls back to the
+// measures everywhere. Two levels, not one table over all texels: a table of n cells resolves
+// probabilities only to n 2^-24 (alias_entry_starts), too coarse for a million texels.
+std::vector<AliasEntry> build_row_alias_tables(const std::vector<single_source::float4>& texels, int rows, int columns,
+                                              const std::function<double(int row, int column)>& texel_measure);
+
+// The probability with which the two-level sampler draws each texel through those tables: its row's
+// times the texel's in the row, each exact for the generator's numbers (alias_table_probabilities),
+// their product rounded once to float.
+std::vector<float> row_texel_probabilities(const std::vector<AliasEntry>& alias, int rows, int columns);
+
+// The environment's alias tables over the texels of a cube map (build_row_alias_tables over its 6N
+// rows r = face * N + j of N texels, measured by exact solid angle; ibl/environment.h samples them):
+// an environment without light falls back to solid angles everywhere, uniform over the sphere.
 std::vector<AliasEntry> build_cubemap_alias_tables(const std::vector<single_source::float4>& texels, int face_size);
 
-// The probability with which the sampler draws each of the 6N^2 texels through those tables: its
-// row's times the texel's in the row, each exact for the generator's numbers
-// (alias_table_probabilities), their product rounded once to float.
+// The probability with which the sampler draws each of the 6N^2 texels through those tables
+// (row_texel_probabilities).
 std::vector<float> cubemap_texel_probabilities(const std::vector<AliasEntry>& alias, int face_size);
 
 // Writes into every texel's w its probability through `alias`, which environment_pdf() reads back

@@ -151,3 +151,35 @@ TEST_CASE("ibl: an alias table needs non-negative weights with a positive finite
     CHECK(one[0].threshold == 1.0f);
     CHECK(one[0].alias == 0);
 }
+
+// The two-level tables over a grid that is no cube map (3 rows of 5 texels), as an image's texels
+// are: each texel's probability must be its luminance x measure over the grid's sum, up to the
+// sampler's rounding (4 2^-24 per part, at most 2 parts per level as above: within 16 2^-24 plus
+// the floor's n 2^-22 share) and the row without light must get the floor's share. A builder that
+// ignored the measure misses the first check by a factor of up to 5.
+TEST_CASE("ibl: row alias tables draw each texel of a grid by luminance x measure", "[ibl][alias]") {
+    const int rows = 3, columns = 5;
+    std::vector<single_source::float4> texels(size_t(rows) * columns);
+    auto measure = [](int, int i) { return 1.0 + i; };
+    double total = 0.0;
+    std::vector<double> expected(texels.size());
+    for (int r = 0; r < rows; ++r)
+        for (int i = 0; i < columns; ++i) {
+            const float v = r == 1 ? 0.0f : float(1 + (r * columns + i) % 4);
+            texels[size_t(r) * columns + i] = single_source::float4(v, v, v, 0.0f);
+            expected[size_t(r) * columns + i] = lab::ibl::luminance(v, v, v) * measure(r, i);
+            total += expected[size_t(r) * columns + i];
+        }
+    const std::vector<AliasEntry> alias = lab::ibl::build_row_alias_tables(texels, rows, columns, measure);
+    REQUIRE(alias.size() == size_t(rows) * (columns + 1));
+    const std::vector<float> p = lab::ibl::row_texel_probabilities(alias, rows, columns);
+    const double tolerance = 16.0 * 0x1.0p-24 + columns * rows * lab::ibl::kSamplingFloor;
+    double sum = 0.0;
+    for (size_t t = 0; t < p.size(); ++t) {
+        INFO("texel " << t);
+        CHECK(std::fabs(p[t] - expected[t] / total) <= tolerance);
+        sum += p[t];
+    }
+    CHECK(std::fabs(sum - 1.0) <= 1e-6);
+    CHECK_THROWS_AS(lab::ibl::build_row_alias_tables(texels, rows, columns + 1, measure), std::invalid_argument);
+}
