@@ -120,9 +120,7 @@ SS_FN GLOBAL_MEM const AliasEntry* environment_column_table(const EnvironmentMap
  * u1 and u2 inside the parts of [0, 1) that drew it (ibl/alias_table.h). */
 SS_FN void environment_sample_cell(const EnvironmentMap* env, GLOBAL_MEM const AliasEntry* alias, float u1, float u2, int* row,
                                    int* column, float* row_offset, float* column_offset) {
-    int n = env->face_size;
-    *row = alias_table_sample(environment_row_table(alias), CUBEMAP_FACES * n, u1, row_offset);
-    *column = alias_table_sample(environment_column_table(env, alias, *row), n, u2, column_offset);
+    alias_grid_sample(alias, CUBEMAP_FACES * env->face_size, env->face_size, u1, u2, row, column, row_offset, column_offset);
 }
 
 /* A world direction drawn with density proportional to the texels' weights: a texel from
