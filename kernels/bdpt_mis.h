@@ -136,6 +136,9 @@ SS_FN float bdpt_mis_ratio_sum(const RenderKernelSettings* settings, const Camer
  * subpath starts on them) are (0, 2)'s alone. A point light, delta in position, is never hit by a
  * camera ray: the path tracer renders it black, and so does bdpt (weight 0); `lt`, which has no
  * (0, 2), splats it. */
+#ifndef BDPT_DIRECT_LIGHT_SPLATS
+#define BDPT_DIRECT_LIGHT_SPLATS 16.0f
+#endif
 SS_FN float bdpt_direct_light_weight(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, const PathVertex* light,
                                      const PathVertex* cam, const PathVertex* sampled, int t) {
     int mask = settings->bdpt.strategies;
@@ -148,6 +151,7 @@ SS_FN float bdpt_direct_light_weight(const RenderKernelSettings* settings, const
     float p_camera = vertex_pdf(settings, camera, scene, 0, lens, x0);
     if (!(p_light > 0.0f)) return t == 2 ? 1.0f : 0.0f;
     if (!(p_camera > 0.0f)) return t == 2 ? 0.0f : 1.0f;
+    p_light *= 1.0f / BDPT_DIRECT_LIGHT_SPLATS;
     float r = t == 2 ? p_light / p_camera : p_camera / p_light; /* the other strategy's over this one's */
     return 1.0f / (1.0f + bdpt_heuristic(settings->bdpt.mis_heuristic, r));
 }
