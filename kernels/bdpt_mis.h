@@ -132,6 +132,11 @@ SS_FN float bdpt_mis_ratio_sum(const RenderKernelSettings* settings, const Camer
  * both per unit area at x0, with n_(1,1) the light subpaths per camera subpath: a small bright light
  * seen directly gets its pixels' light-tracing splats (about N_pixels / its pixels of them per
  * sample) instead of one camera ray each, which is what makes its edge noisy under (0, 2) alone.
+ * (1, 1) counts BDPT_DIRECT_LIGHT_SPLATS times fewer samples than it has: inside a light (0, 2)
+ * has no variance (every jittered camera ray sees the same Le) while (1, 1) has its splats' count
+ * noise, which the balance heuristic, blind to the variance, would mix in wherever n_(1,1) p_light
+ * exceeds p_camera; with the divisor (1, 1) takes the paths where its splats per pixel per sample
+ * exceed about 16 (a small light's pixels), and (0, 2) those of a large one (docs/bdpt.md, MIS).
  * The environment (at infinity; the lens is never hit from there) and emissive materials (no light
  * subpath starts on them) are (0, 2)'s alone. A point light, delta in position, is never hit by a
  * camera ray: the path tracer renders it black, and so does bdpt (weight 0); `lt`, which has no
