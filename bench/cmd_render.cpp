@@ -6,6 +6,7 @@
 // on the scenes of --integrators (the Cornell box, the caustic), the equal-time error of bdpt, bdpt-cache and lt
 // against pt over the same path space (pt's max depth = bdpt's max vertices - 2), against a long pt
 // reference of that depth. Figures, not timed tests: every ratio is measured within the one run.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -46,6 +47,11 @@ struct BenchRenderCommand {
     // scene's light (scenes/caustic_mirror.json)
     std::string reference_integrator = "pt";
     std::string chart, csv;
+    // --matrix: every integrator on every scene of `matrix_scenes` (empty: every scene in scenes/),
+    // under its own lights (where it has any) and under `matrix_env`, and nothing else
+    bool matrix = false;
+    std::vector<std::string> matrix_scenes;
+    std::string matrix_env = "envmaps/courtyard.exr";
 };
 
 // The job for one scene: a scene with no light of its own (no environment, no emitter) is lit by the
@@ -101,6 +107,93 @@ void parse_cache_counts(const std::string& text, render::RenderSettings* setting
     render::check_render_settings(*settings);
 }
 
+// The scenes of --matrix: the given ones, else every scene file in scenes/, sorted.
+std::vector<std::string> matrix_scene_files(const BenchRenderCommand& c) {
+    if (!c.matrix_scenes.empty()) return c.matrix_scenes;
+    std::vector<std::string> files;
+    if (!fs::is_directory("scenes")) throw InputError("--matrix-scenes", "", "no scenes/ folder here: run from the repository root or name the scenes");
+    for (const fs::directory_entry& e : fs::directory_iterator("scenes"))
+        if (e.path().extension() == ".json") files.push_back(e.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// "out.png" and "cornell_box own" -> "out-cornell_box-own.png": one chart per scene and lighting.
+std::string matrix_output(const std::string& path, const std::string& label) {
+    if (path.empty()) return path;
+    fs::path p(path);
+    std::string tag = label;
+    std::replace(tag.begin(), tag.end(), ' ', '-');
+    return (p.parent_path() / (p.stem().string() + "-" + tag + p.extension().string())).string();
+}
+
+// --matrix: pt, lt, bdpt, bdpt-cache and vcm at equal time on every scene, under its own lights and
+// under --matrix-env (which lt cannot render: it is left out there), each against a long reference
+// of --reference-integrator with another seed. A row per scene and lighting: each integrator's
+// RMSE relative to pt's and its paths/s; a chart of RMSE against time per scene and lighting.
+void run_matrix(const report::RendererFactory& on_device, const BenchRenderCommand& c) {
+    const render::Integrator reference_integrator = render::parse_integrator(c.reference_integrator, "--reference-integrator");
+    const render::Integrator kIntegrators[] = {render::Integrator::pt, render::Integrator::lt, render::Integrator::bdpt,
+                                               render::Integrator::bdpt_cache, render::Integrator::vcm};
+    struct Row {
+        std::string label;
+        double reference_noise = 0.0;
+        double rmse[5] = {0, 0, 0, 0, 0}, paths_per_second[5] = {0, 0, 0, 0, 0};
+    };
+    std::vector<Row> rows;
+    for (const std::string& file : matrix_scene_files(c)) {
+        const scene::Scene scene = scene::load_scene(file);
+        for (int lighting = 0; lighting < 2; ++lighting) {
+            if (lighting == 0 && !scene::has_own_light(scene)) continue;
+            RenderJobOptions o = c.job;
+            o.scene = file;
+            if (lighting == 1) o.env = c.matrix_env;
+            RenderJob job = prepare_render_job(o);
+            Row row;
+            row.label = fs::path(file).stem().string() + (lighting == 0 ? " own" : " " + fs::path(c.matrix_env).stem().string());
+            std::vector<report::EqualTimeRun> runs;
+            std::vector<int> slots;
+            for (int i = 0; i < 5; ++i) {
+                if (!render::integrator_descriptor(kIntegrators[i]).renders_environment() && job.input.environment) continue;
+                report::EqualTimeRun run{row.label + " " + render::integrator_name(kIntegrators[i]), job.input};
+                run.input.settings.integrator = kIntegrators[i];
+                runs.push_back(std::move(run));
+                slots.push_back(i);
+            }
+            render::RenderInput reference_input = job.input;
+            reference_input.settings.integrator = reference_integrator;
+            std::printf("\n%s: reference (%s) for %.0f s\n", row.label.c_str(), c.reference_integrator.c_str(), c.reference_seconds);
+            report::Reference ref = report::render_reference(on_device, reference_input, c.reference_seconds);
+            row.reference_noise = ref.noise;
+            std::printf("reference %d spp; its own noise (RMSE) about %.3g\n", ref.samples_per_pixel, ref.noise);
+            std::vector<report::EqualTimeResult> results = report::run_equal_time(on_device, runs, ref, c.seconds);
+            std::vector<plots::ConvergenceSeries> series;
+            for (size_t k = 0; k < results.size(); ++k) {
+                row.rmse[slots[k]] = results[k].final_rmse();
+                row.paths_per_second[slots[k]] = results[k].stats.paths_per_second();
+                series.push_back(results[k].series);
+            }
+            if (!c.chart.empty())
+                plots::write_speed_accuracy_chart(series, row.label + ": RMSE against render time per integrator", matrix_output(c.chart, row.label),
+                                                  matrix_output(c.csv, row.label));
+            rows.push_back(row);
+            std::fflush(stdout);
+        }
+    }
+    std::printf("\nequal time, %.1f s each: RMSE relative to pt's (paths/s); bdpt / best of pt and lt; reference %s, %.0f s\n", c.seconds,
+                c.reference_integrator.c_str(), c.reference_seconds);
+    std::printf("| scene, lights | pt RMSE | lt | bdpt | bdpt-cache | vcm | bdpt / best(pt, lt) | reference noise |\n|---|---|---|---|---|---|---|---|\n");
+    for (const Row& row : rows) {
+        std::printf("| %s | %.3g (%.3g) |", row.label.c_str(), row.rmse[0], row.paths_per_second[0]);
+        for (int i = 1; i < 5; ++i) {
+            if (row.rmse[i] > 0.0) std::printf(" %.2f (%.3g) |", row.rmse[i] / row.rmse[0], row.paths_per_second[i]);
+            else std::printf(" - |");
+        }
+        const double best = row.rmse[1] > 0.0 ? std::min(row.rmse[0], row.rmse[1]) : row.rmse[0];
+        std::printf(" %.2f | %.3g |\n", row.rmse[2] / best, row.reference_noise);
+    }
+}
+
 void run_bench_render(const BenchRenderCommand& c) {
     render::RenderSettings checked;
     for (const std::string& counts : c.cache_counts) parse_cache_counts(counts, &checked);
@@ -112,6 +205,11 @@ void run_bench_render(const BenchRenderCommand& c) {
     const render::Integrator reference_integrator = render::parse_integrator(c.reference_integrator, "--reference-integrator");
     opencl::Runtime runtime(c.job.device);
     report::RendererFactory on_device = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
+    if (c.matrix) {
+        std::printf("bench render --matrix: %s, max depth %d; device %s\n", c.job.size.c_str(), c.job.max_depth, runtime.device().description().c_str());
+        run_matrix(on_device, c);
+        return;
+    }
     std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());
 
     std::printf("(a scene with no light of its own is lit by envmaps/courtyard.exr)\n");
@@ -209,6 +307,12 @@ void register_bench_render(CLI::App& bench) {
     cmd->add_option("--reference-integrator", c->reference_integrator,
                     "The integrator of the --integrators references (vcm where only merging samples the light, as in scenes/caustic_mirror.json)")
         ->capture_default_str();
+    cmd->add_flag("--matrix", c->matrix,
+                  "Instead of the above: pt, lt, bdpt, bdpt-cache and vcm at equal time (--seconds) on every scene of --matrix-scenes, under its own "
+                  "lights and under --matrix-env, against a --reference-integrator reference; a table, and a chart per scene and lighting (-o "
+                  "out.png writes out-SCENE-LIGHTS.png)");
+    cmd->add_option("--matrix-scenes", c->matrix_scenes, "The scenes of --matrix (default: every scene in scenes/)");
+    cmd->add_option("--matrix-env", c->matrix_env, "The environment of --matrix's second lighting (the scene's lights stay)")->capture_default_str();
     cmd->add_option("-o,--chart", c->chart, "Speed-against-accuracy chart (PNG): RMSE against time per scene and strategy");
     cmd->add_option("--csv", c->csv, "The chart's data as CSV");
     cmd->callback([c] { run_bench_render(*c); });

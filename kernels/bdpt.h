@@ -156,7 +156,7 @@ SS_FN float3 bdpt_strategy_contribution(const RenderKernelSettings* settings, Ma
                                         int max_vertices, uint key, uint sample, uint stream, float2* raster, PathCounters* counters) {
     float3 zero = float3_splat(0.0f);
     if (s + t < 2 || s + t > max_vertices) return zero;
-    if (!bdpt_strategy_runs(settings->bdpt.strategies, s, t)) return zero;
+    if (!bdpt_strategy_enabled(settings->bdpt.strategies, s, t)) return zero;
     if (settings->bdpt.single_strategy >= 0 && settings->bdpt.single_strategy != bdpt_strategy_code(s, t)) return zero;
     Rng connection_rng = rng_make_stream(key, sample, stream, settings->seed_lo, settings->seed_hi);
     float weight;

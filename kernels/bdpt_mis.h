@@ -125,11 +125,47 @@ SS_FN float bdpt_mis_ratio_sum(const RenderKernelSettings* settings, const Camer
     return sum;
 }
 
-/* `sampled` stands in for light[0] when s = 1 (a light sample) and for camera[0] when t = 1 (a
- * lens sample); it is ignored otherwise. */
+/* The weight of (0, 2) or (1, 1) for a light seen directly by the lens: the camera ray that hits
+ * the light at x0 (t = 2: cam[0] the lens, cam[1] x0), or the light subpath's first vertex x0
+ * joined to a lens point (s = t = 1: light[0] x0, `sampled` the lens). The two are the only
+ * strategies of these paths ((2, 0) would need the lens hit). r = n_(1,1) p_light(x0) / p_camera(x0),
+ * both per unit area at x0, with n_(1,1) the light subpaths per camera subpath: a small bright light
+ * seen directly gets its pixels' light-tracing splats (about N_pixels / its pixels of them per
+ * sample) instead of one camera ray each, which is what makes its edge noisy under (0, 2) alone.
+ * (1, 1) counts BDPT_DIRECT_LIGHT_SPLATS times fewer samples than it has: inside a light (0, 2)
+ * has no variance (every jittered camera ray sees the same Le) while (1, 1) has its splats' count
+ * noise, which the balance heuristic, blind to the variance, would mix in wherever n_(1,1) p_light
+ * exceeds p_camera; with the divisor (1, 1) takes the paths where its splats per pixel per sample
+ * exceed about 16 (a small light's pixels), and (0, 2) those of a large one (docs/bdpt.md, MIS).
+ * The environment (at infinity; the lens is never hit from there) and emissive materials (no light
+ * subpath starts on them) are (0, 2)'s alone. A point light, delta in position, is never hit by a
+ * camera ray: the path tracer renders it black, and so does bdpt (weight 0); `lt`, which has no
+ * (0, 2), splats it. */
+#ifndef BDPT_DIRECT_LIGHT_SPLATS
+#define BDPT_DIRECT_LIGHT_SPLATS 16.0f
+#endif
+SS_FN float bdpt_direct_light_weight(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, const PathVertex* light,
+                                     const PathVertex* cam, const PathVertex* sampled, int t) {
+    int mask = settings->bdpt.strategies;
+    if (!bdpt_strategy_enabled(mask, 0, 2) || !bdpt_strategy_enabled(mask, 1, 1)) return 1.0f;
+    const PathVertex* lens = t == 2 ? &cam[0] : sampled;
+    const PathVertex* x0 = t == 2 ? &cam[1] : &light[0];
+    if (x0->type == VERTEX_ENVIRONMENT) return t == 2 ? 1.0f : 0.0f;
+    if (vertex_is_delta_light(scene, x0)) return t == 2 ? 1.0f : 0.0f;
+    float p_light = vertex_pdf_light_origin(settings, scene, x0) * bdpt_strategy_samples(&settings->bdpt, 1, 1);
+    float p_camera = vertex_pdf(settings, camera, scene, 0, lens, x0);
+    if (!(p_light > 0.0f)) return t == 2 ? 1.0f : 0.0f;
+    if (!(p_camera > 0.0f)) return t == 2 ? 0.0f : 1.0f;
+    p_light *= 1.0f / BDPT_DIRECT_LIGHT_SPLATS;
+    float r = t == 2 ? p_light / p_camera : p_camera / p_light; /* the other strategy's over this one's */
+    return 1.0f / (1.0f + bdpt_heuristic(settings->bdpt.mis_heuristic, r));
+}
+
+/* `sampled` stands in for light[0] when s = 1 and t >= 2 (a light sample) and for camera[0] when
+ * t = 1 (a lens sample); it is ignored otherwise. */
 SS_FN float bdpt_mis_weight(const RenderKernelSettings* settings, const Camera* camera, const RenderScene* scene, const PathVertex* light,
                             const PathVertex* cam, const PathVertex* sampled, int s, int t) {
-    if (s + t == 2) return 1.0f;
+    if (s + t == 2) return bdpt_direct_light_weight(settings, camera, scene, light, cam, sampled, t);
     return 1.0f / (1.0f + bdpt_mis_ratio_sum(settings, camera, scene, light, cam, sampled, s, t, 0, 0));
 }
 

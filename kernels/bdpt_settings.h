@@ -64,13 +64,6 @@ SS_FN bool bdpt_strategy_enabled(int mask, int s, int t) {
     return (mask & STRATEGY_S2) != 0;
 }
 
-/* Whether a render with the mask adds strategy (s, t): (1, 1), the lens joined to a light, and
- * (0, 2) make the same paths (a light seen directly) with weight 1 each, so (1, 1) only runs where
- * (0, 2) cannot. */
-SS_FN bool bdpt_strategy_runs(int mask, int s, int t) {
-    if (s == 1 && t == 1 && bdpt_strategy_enabled(mask, 0, 2)) return false;
-    return bdpt_strategy_enabled(mask, s, t);
-}
 
 /* n_i of strategy (s, t): see BdptKernelSettings.light_tracing_samples. */
 SS_FN float bdpt_strategy_samples(const BdptKernelSettings* bdpt, int s, int t) {

@@ -80,7 +80,7 @@ std::string integrator_help() {
 }
 
 bool integrator_runs_strategy(Integrator integrator, int s, int t) {
-    return kernel::bdpt_strategy_runs(integrator_descriptor(integrator).strategies, s, t);
+    return kernel::bdpt_strategy_enabled(integrator_descriptor(integrator).strategies, s, t);
 }
 
 void check_integrator_has_strategies(Integrator integrator, const std::string& option) {

@@ -58,7 +58,7 @@ std::string integrator_names();
 // "pt (...), bdpt (...) or lt (...)": every integrator with its description, for the help.
 std::string integrator_help();
 
-// Whether `integrator` adds strategy (s, t) (kernels/render_settings.h, bdpt_strategy_runs).
+// Whether `integrator` adds strategy (s, t) (kernels/bdpt_settings.h, bdpt_strategy_enabled).
 bool integrator_runs_strategy(Integrator integrator, int s, int t);
 // Throws lab::InputError naming `option` unless `integrator` has (s, t) strategies to show one by one.
 void check_integrator_has_strategies(Integrator integrator, const std::string& option);

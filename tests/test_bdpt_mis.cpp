@@ -159,7 +159,9 @@ void split_off(const Fixture& f, const std::vector<PathVertex>& walked, int keep
 bool can_make(const Fixture& f, const std::vector<PathVertex>& x, int s, int t) {
     const PathVertex& x0 = x[0];
     const bool point_light = x0.type == VERTEX_LIGHT && f.scene.lights[x0.index].type == LIGHT_POINT;
-    if (s == 1 && t == 1) return false;  // bdpt leaves (1, 1) to (0, 2); these paths are longer
+    // (1, 1): a light subpath's first vertex joined to the lens, a light seen directly, which
+    // (0, 2) makes too; neither can at infinity, and no camera ray hits a point light
+    if (s == 1 && t == 1) return x0.type == VERTEX_LIGHT && !point_light;
     if (s == 0) return !point_light;
     if (s >= 2 && x0.type == VERTEX_ENVIRONMENT && !disk_reaches(f.settings, x0.p, x[1].p)) return false;
     if (t == 1) return !x[size_t(s - 1)].delta && x[size_t(s - 1)].type != VERTEX_ENVIRONMENT;
@@ -251,7 +253,7 @@ void check_path(Fixture& f, const std::vector<PathVertex>& walked, bool walked_i
                     // continuation, not of this connection: the weight must not read them
                     for (int i = std::max(0, s - 2); i < s; ++i) split.light[size_t(i)].pdf_rev = 123.0f;
                     for (int i = std::max(0, t - 2); i < t; ++i) split.cam[size_t(i)].pdf_rev = 321.0f;
-                    PathVertex sampled = s == 1 ? split.light[0] : split.cam[0];
+                    PathVertex sampled = s == 1 && t > 1 ? split.light[0] : split.cam[0];
                     sum += bdpt_mis_weight(&f.settings, &f.camera, &f.scene, split.light.data(), split.cam.data(), &sampled, s, t);
                     any = true;
                 }

@@ -203,7 +203,11 @@ const std::string kSpheresUnderLight =
 //    bdpt and bdpt-cache, paired, 3 %; the lower regions under 3 %).
 //  - door_ajar: lit only indirectly, through the door (15 %).
 //  - veach_mis: the plates' highlights of the small lights and their glossy caustics on the floor
-//    (20 %).
+//    (20 % in the other regions), and the small lights seen directly (35 %). bdpt takes those from
+//    light tracing, (1, 1), which shares no random numbers with the path tracer's camera rays, so
+//    the pairing does not cancel them, and at 16 x 16 they are smaller than a pixel: the path
+//    tracer's batch means of the top left region are heavy-tailed (0.487 from 32 x 64 spp against
+//    0.556 at 65,536 spp). More samples buy little there: 33 % at 64 per batch, 21 % at 192 and at 256.
 //  - material_showcase, without its point light: the path tracer cannot sample the point light's
 //    caustic under the smooth glass ball (light - glass - floor - eye: next-event estimation from
 //    the floor is blocked by the glass, and no BSDF sample hits a point), which BDPT's light
@@ -221,7 +225,7 @@ std::vector<Case> own_light_cases() {
         {"glossy_large_light", "scenes/glossy_large_light.json", "", 6, 32, 32, 0, 0.10},
         {"material_showcase", "scenes/material_showcase.json", "", 6, 32, 128, 0, 0.14, LightSampling::mis, true},
         {"metaballs", "scenes/metaballs.json", "", 6, 32, 32, 64, 0.10},
-        {"veach_mis", "scenes/veach_mis.json", "", 6, 32, 64, 0, 0.20},
+        {"veach_mis", "scenes/veach_mis.json", "", 6, 32, 64, 0, 0.35},
         {"studio", "scenes/studio.json", "", 6, 32, 32, 0, 0.10},
     };
 }
