@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -131,14 +132,14 @@ std::string matrix_output(const std::string& path, const std::string& label) {
 // under --matrix-env (which lt cannot render: it is left out there), each against a long reference
 // of --reference-integrator with another seed. A row per scene and lighting: each integrator's
 // RMSE relative to pt's and its paths/s; a chart of RMSE against time per scene and lighting.
-void run_matrix(const report::RendererFactory& on_device, const BenchRenderCommand& c) {
-    const render::Integrator reference_integrator = render::parse_integrator(c.reference_integrator, "--reference-integrator");
-    const render::Integrator kIntegrators[] = {render::Integrator::pt, render::Integrator::lt, render::Integrator::bdpt,
+void run_matrix(const report::RendererFactory& on_device, const BenchRenderCommand& c, render::Integrator reference_integrator) {
+    constexpr render::Integrator kIntegrators[] = {render::Integrator::pt, render::Integrator::lt, render::Integrator::bdpt,
                                                render::Integrator::bdpt_cache, render::Integrator::vcm};
+    constexpr int kCount = int(std::size(kIntegrators));
     struct Row {
         std::string label;
         double reference_noise = 0.0;
-        double rmse[5] = {0, 0, 0, 0, 0}, paths_per_second[5] = {0, 0, 0, 0, 0};
+        double rmse[kCount] = {}, paths_per_second[kCount] = {};
     };
     std::vector<Row> rows;
     for (const std::string& file : matrix_scene_files(c)) {
@@ -153,7 +154,7 @@ void run_matrix(const report::RendererFactory& on_device, const BenchRenderComma
             row.label = fs::path(file).stem().string() + (lighting == 0 ? " own" : " " + fs::path(c.matrix_env).stem().string());
             std::vector<report::EqualTimeRun> runs;
             std::vector<int> slots;
-            for (int i = 0; i < 5; ++i) {
+            for (int i = 0; i < kCount; ++i) {
                 if (!render::integrator_descriptor(kIntegrators[i]).renders_environment() && job.input.environment) continue;
                 report::EqualTimeRun run{row.label + " " + render::integrator_name(kIntegrators[i]), job.input};
                 run.input.settings.integrator = kIntegrators[i];
@@ -185,7 +186,7 @@ void run_matrix(const report::RendererFactory& on_device, const BenchRenderComma
     std::printf("| scene, lights | pt RMSE | lt | bdpt | bdpt-cache | vcm | bdpt / best(pt, lt) | reference noise |\n|---|---|---|---|---|---|---|---|\n");
     for (const Row& row : rows) {
         std::printf("| %s | %.3g (%.3g) |", row.label.c_str(), row.rmse[0], row.paths_per_second[0]);
-        for (int i = 1; i < 5; ++i) {
+        for (int i = 1; i < kCount; ++i) {
             if (row.rmse[i] > 0.0) std::printf(" %.2f (%.3g) |", row.rmse[i] / row.rmse[0], row.paths_per_second[i]);
             else std::printf(" - |");
         }
@@ -207,7 +208,7 @@ void run_bench_render(const BenchRenderCommand& c) {
     report::RendererFactory on_device = [&runtime](const render::RenderInput& input) { return std::make_unique<render::OpenClRenderer>(runtime, input); };
     if (c.matrix) {
         std::printf("bench render --matrix: %s, max depth %d; device %s\n", c.job.size.c_str(), c.job.max_depth, runtime.device().description().c_str());
-        run_matrix(on_device, c);
+        run_matrix(on_device, c, reference_integrator);
         return;
     }
     std::printf("bench render: %s, pt with MIS; device %s\n\n", c.job.size.c_str(), runtime.device().description().c_str());

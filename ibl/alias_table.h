@@ -43,12 +43,15 @@ SS_FN int alias_table_sample(GLOBAL_MEM const AliasEntry* table, int n, float u,
 
 /* Two levels over a grid of rows x columns cells (the host's build_row_alias_tables,
  * ibl/distribution.hpp): the rows' table of `rows` entries, then row r's of `columns` entries at
- * rows + r columns. The cell (row, column) that (u1, u2) draws, and the offsets of u1 and u2 inside
+ * rows + r columns (alias_grid_column_table). The cell (row, column) that (u1, u2) draws, and the offsets of u1 and u2 inside
  * the parts of [0, 1) that drew it. */
+SS_FN GLOBAL_MEM const AliasEntry* alias_grid_column_table(GLOBAL_MEM const AliasEntry* table, int rows, int columns, int row) {
+    return table + rows + row * columns;
+}
 SS_FN void alias_grid_sample(GLOBAL_MEM const AliasEntry* table, int rows, int columns, float u1, float u2, int* row, int* column,
                              float* row_offset, float* column_offset) {
     *row = alias_table_sample(table, rows, u1, row_offset);
-    *column = alias_table_sample(table + rows + *row * columns, columns, u2, column_offset);
+    *column = alias_table_sample(alias_grid_column_table(table, rows, columns, *row), columns, u2, column_offset);
 }
 
 #endif

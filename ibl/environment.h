@@ -112,8 +112,7 @@ SS_FN float3 environment_radiance_pdf(const EnvironmentMap* env, GLOBAL_MEM cons
 /* The rows' alias table and row `row`'s (the top of this file). */
 SS_FN GLOBAL_MEM const AliasEntry* environment_row_table(GLOBAL_MEM const AliasEntry* alias) { return alias; }
 SS_FN GLOBAL_MEM const AliasEntry* environment_column_table(const EnvironmentMap* env, GLOBAL_MEM const AliasEntry* alias, int row) {
-    int n = env->face_size;
-    return alias + CUBEMAP_FACES * n + row * n;
+    return alias_grid_column_table(alias, CUBEMAP_FACES * env->face_size, env->face_size, row);
 }
 
 /* The cell (row = face * N + j, column) that environment_sample(u1, u2) draws, and the offsets of

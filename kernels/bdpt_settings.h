@@ -64,7 +64,6 @@ SS_FN bool bdpt_strategy_enabled(int mask, int s, int t) {
     return (mask & STRATEGY_S2) != 0;
 }
 
-
 /* n_i of strategy (s, t): see BdptKernelSettings.light_tracing_samples. */
 SS_FN float bdpt_strategy_samples(const BdptKernelSettings* bdpt, int s, int t) {
     if (t == 1) return bdpt->light_tracing_samples;
