@@ -27,6 +27,7 @@ struct Header {
     std::string format;  // OpenImageIO's name of the file's format: "openexr", "png", "hdr", ...
     int width = 0, height = 0, channels = 0;
     bool deep = false;
+    bool floating = false;  // the file stores floats or halves (OpenEXR, Radiance, float TIFF), not integers
     std::vector<std::string> channel_names;
     std::vector<Attribute> attributes;  // every attribute besides the above
 };
@@ -39,6 +40,9 @@ public:
     // The first `channels` channels of every pixel as floats, interleaved (width * height *
     // channels). False, with OpenImageIO's message in *error, when the pixels cannot be read.
     virtual bool read(int channels, float* pixels, std::string* error) = 0;
+    // The same for subimage `index`: a video's frame (OpenImageIO's FFmpeg reader gives each frame
+    // as a subimage of the header's size, and their count as the attribute "oiio:subimages").
+    virtual bool read_subimage(int index, int channels, float* pixels, std::string* error) = 0;
 };
 
 // What to encode: `channels` values per pixel, 8-bit (`bytes`) or float, interleaved.

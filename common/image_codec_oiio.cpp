@@ -36,12 +36,14 @@ public:
         header_.height = spec.height;
         header_.channels = spec.nchannels;
         header_.deep = spec.deep;
+        header_.floating = spec.format.is_floating_point();
         for (int c = 0; c < spec.nchannels; ++c) header_.channel_names.push_back(spec.channel_name(c));
         header_.attributes = attributes_of(spec);
     }
     const Header& header() const override { return header_; }
-    bool read(int channels, float* pixels, std::string* error) override {
-        if (in_->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels)) return true;
+    bool read(int channels, float* pixels, std::string* error) override { return read_subimage(0, channels, pixels, error); }
+    bool read_subimage(int index, int channels, float* pixels, std::string* error) override {
+        if (in_->read_image(index, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels)) return true;
         *error = in_->geterror();
         return false;
     }

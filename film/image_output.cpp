@@ -13,6 +13,7 @@
 
 #include "common/input_error.hpp"
 #include "film/atomic_file.hpp"
+#include "common/file_extension.hpp"
 #include "common/image_claim.hpp"
 #include "common/image_codec.hpp"
 
@@ -26,12 +27,6 @@ constexpr const char* kFormats = "use .exr (linear float) or .png (8-bit sRGB)";
 constexpr const char* kPrefix = "dtoadq:";
 
 enum class FileFormat { Exr, Png, Other };
-
-std::string lowercase_extension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 FileFormat format_of(const std::string& path) {
     const std::string ext = lowercase_extension(path);

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "common/file_extension.hpp"
 #include "common/image_claim.hpp"
 #include "common/image_codec.hpp"
 #include "common/input_error.hpp"
@@ -85,12 +86,6 @@ single_source::float3 parse_constant(const std::string& text, const std::string&
             throw InputError(origin, "constant", std::string(names[c]) + " is negative: \"" + p + "\"");
     }
     return single_source::float3(value[0], value[1], value[2]);
-}
-
-std::string lowercase_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    return ext;
 }
 
 }  // namespace
