@@ -12,6 +12,7 @@
 #include "common/file_extension.hpp"
 #include "common/image_claim.hpp"
 #include "common/image_codec.hpp"
+#include "common/image_open.hpp"
 #include "common/input_error.hpp"
 #include "common/message_number.hpp"
 #include "ibl/distribution.hpp"
@@ -150,22 +151,14 @@ float Environment::pdf(single_source::float3 direction) const {
 }
 
 LatLongImage read_latlong_image(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (!fs::exists(path, ec)) throw InputError(path, "", "no such file");
-    if (!fs::is_regular_file(path, ec)) throw InputError(path, "", "not a regular file");
     const std::string ext = lowercase_extension(path);
-    if (ext != ".exr" && ext != ".hdr")
+    std::error_code ec;
+    if ((ext != ".exr" && ext != ".hdr") && std::filesystem::is_regular_file(path, ec))
         throw InputError(path, "", "unsupported image format \"" + ext + "\" (expected .exr or .hdr)");
-
-    std::string error;
-    std::unique_ptr<codec::ImageFile> input = codec::image_codec().open(path, &error);
-    // OpenImageIO's own text is left out: its wording varies with the version
-    if (!input) throw InputError(path, "", "cannot be read as an OpenEXR or Radiance HDR image");
+    std::unique_ptr<codec::ImageFile> input = codec::open_flat_image(path, "an OpenEXR or Radiance HDR image", "");
     const codec::Header& header = input->header();
     if (header.format != "openexr" && header.format != "hdr")
         throw InputError(path, "", "holds a " + header.format + " image, not OpenEXR or Radiance HDR");
-    if (header.deep) throw InputError(path, "", "deep image (expected flat pixels)");
     const int width = header.width, height = header.height, channels = header.channels;
     check_latlong_size(path, width, height);
     if (channels != 1 && channels < 3)
@@ -176,6 +169,7 @@ LatLongImage read_latlong_image(const std::string& path) {
     // what is read, and for grey the RGB image made from it besides, before a pixel is allocated
     codec::check_image_file_claim(path, header, used == 1 ? 4 : 3);
     std::vector<float> pixels(size_t(width) * height * used);
+    std::string error;
     if (!input->read(used, pixels.data(), &error)) throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
     std::vector<std::string> names(header.channel_names.begin(), header.channel_names.begin() + used);
     return latlong_from_pixels(path, width, height, std::move(pixels), names);

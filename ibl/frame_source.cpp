@@ -2,13 +2,13 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <memory>
 
 #include "common/file_extension.hpp"
 #include "common/frame_pattern.hpp"
 #include "common/image_claim.hpp"
 #include "common/image_codec.hpp"
+#include "common/image_open.hpp"
 #include "common/input_error.hpp"
 #include "common/message_number.hpp"
 #include "film/tone_map.hpp"
@@ -16,8 +16,6 @@
 namespace lab::ibl {
 
 namespace {
-
-namespace fs = std::filesystem;
 
 // An emitter's image is sampled texel by texel; past 16384 on a side its tables alone would hold
 // gigabytes for what a screen in a scene shows.
@@ -47,15 +45,8 @@ double rational_value(const codec::Attribute& a) {
 }
 
 std::unique_ptr<codec::ImageFile> open_image(const std::string& path, const std::string& what) {
-    std::error_code ec;
-    if (!fs::exists(path, ec)) throw InputError(path, "", "no such file" + what);
-    if (!fs::is_regular_file(path, ec)) throw InputError(path, "", "not a regular file" + what);
-    std::string error;
-    std::unique_ptr<codec::ImageFile> file = codec::image_codec().open(path, &error);
-    // OpenImageIO's own text is left out: its wording varies with the version
-    if (!file) throw InputError(path, "", "cannot be read as an image" + what);
+    std::unique_ptr<codec::ImageFile> file = codec::open_flat_image(path, "an image", what);
     const codec::Header& h = file->header();
-    if (h.deep) throw InputError(path, "", "deep image (expected flat pixels)" + what);
     if (h.width <= 0 || h.height <= 0 || h.width > kMaxFrameSide || h.height > kMaxFrameSide)
         throw InputError(path, "size", std::to_string(h.width) + " x " + std::to_string(h.height) + " is outside 1 to 16384 a side" + what);
     if (h.channels < 1) throw InputError(path, "channels", "none" + what);
