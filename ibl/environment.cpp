@@ -1,19 +1,16 @@
 #include "ibl/environment.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
 #include <stdexcept>
 #include <utility>
 
-#include "common/image_claim.hpp"
-#include "common/image_codec.hpp"
 #include "common/input_error.hpp"
 #include "common/message_number.hpp"
 #include "ibl/distribution.hpp"
+#include "ibl/radiance_image.hpp"
 
 namespace lab::ibl {
 
@@ -87,12 +84,6 @@ single_source::float3 parse_constant(const std::string& text, const std::string&
     return single_source::float3(value[0], value[1], value[2]);
 }
 
-std::string lowercase_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    return ext;
-}
-
 }  // namespace
 
 Environment::Environment(std::vector<single_source::float4> texels, int face_size, std::string source,
@@ -155,35 +146,8 @@ float Environment::pdf(single_source::float3 direction) const {
 }
 
 LatLongImage read_latlong_image(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (!fs::exists(path, ec)) throw InputError(path, "", "no such file");
-    if (!fs::is_regular_file(path, ec)) throw InputError(path, "", "not a regular file");
-    const std::string ext = lowercase_extension(path);
-    if (ext != ".exr" && ext != ".hdr")
-        throw InputError(path, "", "unsupported image format \"" + ext + "\" (expected .exr or .hdr)");
-
-    std::string error;
-    std::unique_ptr<codec::ImageFile> input = codec::image_codec().open(path, &error);
-    // OpenImageIO's own text is left out: its wording varies with the version
-    if (!input) throw InputError(path, "", "cannot be read as an OpenEXR or Radiance HDR image");
-    const codec::Header& header = input->header();
-    if (header.format != "openexr" && header.format != "hdr")
-        throw InputError(path, "", "holds a " + header.format + " image, not OpenEXR or Radiance HDR");
-    if (header.deep) throw InputError(path, "", "deep image (expected flat pixels)");
-    const int width = header.width, height = header.height, channels = header.channels;
-    check_latlong_size(path, width, height);
-    if (channels != 1 && channels < 3)
-        throw InputError(path, "channels",
-                         std::to_string(channels) + " (expected 1 for grey, or 3 or more with R, G, B first)");
-
-    const int used = channels == 1 ? 1 : 3;
-    // what is read, and for grey the RGB image made from it besides, before a pixel is allocated
-    codec::check_image_file_claim(path, header, used == 1 ? 4 : 3);
-    std::vector<float> pixels(size_t(width) * height * used);
-    if (!input->read(used, pixels.data(), &error)) throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
-    std::vector<std::string> names(header.channel_names.begin(), header.channel_names.begin() + used);
-    return latlong_from_pixels(path, width, height, std::move(pixels), names);
+    RadianceImage image = read_radiance_image(path, {kOpenExr, kRadianceHdr}, [&](int width, int height) { check_latlong_size(path, width, height); });
+    return latlong_from_pixels(path, image.width, image.height, std::move(image.pixels), image.channel_names);
 }
 
 void check_latlong_size(const std::string& path, int width, int height) {
