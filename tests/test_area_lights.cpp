@@ -244,7 +244,7 @@ constexpr int kImageW = 8, kImageH = 4;
 double rect_texel(int x, int y) { return y == 1 ? 0.0 : (x == 5 && y == 2 ? 20.0 : 0.5 + 0.25 * x); }
 constexpr double kDiskTexels[2] = {1.0, 3.0};
 
-std::string write_test_image(const std::string& name, int width, int height, const std::function<double(int, int)>& value) {
+std::string write_emitter_test_image(const std::string& name, int width, int height, const std::function<double(int, int)>& value) {
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("dtoadq-image-emitters-" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     lab::film::ImageRgb image(width, height);
@@ -292,15 +292,15 @@ struct DiskQuadrature {
     }
 };
 
-double mean_of(const std::vector<double>& v) {
+double pixel_mean(const std::vector<double>& v) {
     double sum = 0.0;
     for (double x : v) sum += x;
     return sum / double(v.size());
 }
 
 struct ImageScenes {
-    std::string rect_image = write_test_image("rect.exr", kImageW, kImageH, rect_texel);
-    std::string disk_image = write_test_image("disk.exr", 2, 1, [](int x, int) { return kDiskTexels[x]; });
+    std::string rect_image = write_emitter_test_image("rect.exr", kImageW, kImageH, rect_texel);
+    std::string disk_image = write_emitter_test_image("disk.exr", 2, 1, [](int x, int) { return kDiskTexels[x]; });
     std::string scene(bool rect) const { return plane_view_scene(rect, rect_image, disk_image); }
     // the expected pixels (per unit scale: pixels of (rho / pi) E with radiance kRadiance, so divided by it)
     std::vector<double> expected(bool rect, int size, const lab::render::Renderer& renderer) const {
@@ -324,8 +324,8 @@ TEST_CASE("Image emitters: the disk's quadrature matches its closed form, and it
         for (double z : {0.0, 0.3, -0.4}) worst = std::max(worst, std::fabs(uniform(kDiskX + x, z) / disk_irradiance(kDiskX + x, z) - 1.0));
     std::printf("area lights, image disk: quadrature against the closed form, worst %.2e\n", worst);
     CHECK(worst < 1e-3);
-    const double constant = mean_of(expected_pixels(false, 16));  // radiance kRadiance, the image's mean
-    const double image = mean_of(expected_pixels(false, 16, halves, 3)) / kRadiance;
+    const double constant = pixel_mean(expected_pixels(false, 16));  // radiance kRadiance, the image's mean
+    const double image = pixel_mean(expected_pixels(false, 16, halves, 3)) / kRadiance;
     std::printf("area lights, image disk: mean over the view %.6f, constant disk of the same mean %.6f\n", image, constant);
     CHECK(image == Approx(constant).epsilon(1e-3));
     // and the quadrature tells the halves apart: 0.3 off the axis along +U and -U, 0.824 and 0.696 (a

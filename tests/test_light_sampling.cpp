@@ -9,10 +9,18 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
+#include "common/input_error.hpp"
 #include "common/luminance.hpp"
+#include "film/image_output.hpp"
+#include "film/tone_map.hpp"
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
 #include "render/emitter_images.hpp"
@@ -841,4 +849,75 @@ TEST_CASE("lights: an image emitter's power is the flux through a sphere around 
         REQUIRE(standard_error < 0.0025 * power);
         CHECK(flux == Approx(power).epsilon(0.01));
     }
+}
+
+namespace {
+
+// A scene whose rect shows the image at `path` (absolute), compiled.
+lab::scene::CompiledScene emitter_image_scene(const std::string& path, const std::string& radiance = "") {
+    const std::string text = R"({"camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
+      "emitters": [{"type": "sphere", "center": [3, 0, 0], "radius": 0.5, "radiance": [1, 1, 1]},
+                   {"type": "point", "position": [0, 3, 0], "intensity": [1, 1, 1]},
+                   {"type": "rect", "center": [0, 1, 0], "edge_u": [1, 0, 0], "edge_v": [0, 0, 1], "image": ")" + path + "\"" + radiance + "}]}";
+    return lab::scene::compile_scene(lab::scene::parse_scene(text, "scenes/screen.json"));
+}
+
+std::string emitter_image_error(const std::string& path) {
+    try {
+        lab::render::load_emitter_images(emitter_image_scene(path), 0.0);
+    } catch (const lab::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string emitter_temp_file(const std::string& name) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("dtoadq-emitter-images-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    return (folder / name).string();
+}
+
+}  // namespace
+
+TEST_CASE("lights: an emitter's image is read as environments are, and bad images give one line naming the scene's field and the file", "[lights][image]") {
+    // a 3 x 2 PNG: sRGB-decoded to linear; rows from the top of the file land at t = 1 first
+    const std::string png = emitter_temp_file("screen.png");
+    const std::vector<uint8_t> bytes = {0, 0, 0, 64, 64, 64, 128, 128, 128, 255, 255, 255, 10, 20, 30, 200, 100, 50};
+    lab::film::write_srgb8_png(png, 3, 2, bytes, lab::film::ImageMetadata{});
+    const std::vector<std::optional<lab::render::EmitterImage>> images = lab::render::load_emitter_images(emitter_image_scene(png), 0.0);
+    REQUIRE(images.size() == 2);  // the sphere and the rect; the point light is no emitter
+    CHECK_FALSE(images[0].has_value());
+    REQUIRE(images[1].has_value());
+    CHECK(images[1]->width == 3);
+    CHECK(images[1]->height == 2);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 3; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const brdf::float4 t = images[1]->texels[size_t(1 - y) * 3 + size_t(x)];
+                CHECK(t[c] == Approx(lab::film::srgb_decode(float(bytes[size_t(3 * (3 * y + x) + c)]) / 255.0f)).epsilon(1e-6));
+            }
+    // the scale defaults to 1 with an image
+    CHECK(emitter_image_scene(png).emitters[1].radiance == brdf::float3(1.0f));
+    CHECK(emitter_image_scene(png, R"(, "radiance": [2, 1, 0.5])").emitters[1].radiance == brdf::float3(2.0f, 1.0f, 0.5f));
+
+    const std::string missing = emitter_temp_file("none.exr");
+    CHECK(emitter_image_error(missing) == "scenes/screen.json: emitters[2].image: " + missing + ": no such file");
+    const std::string corrupt = emitter_temp_file("corrupt.exr");
+    { std::FILE* f = std::fopen(corrupt.c_str(), "wb"); std::fputs("not an image", f); std::fclose(f); }
+    CHECK(emitter_image_error(corrupt) == "scenes/screen.json: emitters[2].image: " + corrupt + ": cannot be read as an OpenEXR, Radiance HDR or PNG image");
+    const std::string text = emitter_temp_file("screen.txt");
+    { std::FILE* f = std::fopen(text.c_str(), "wb"); std::fputs("x", f); std::fclose(f); }
+    CHECK(emitter_image_error(text) == "scenes/screen.json: emitters[2].image: " + text + ": unsupported image format \".txt\" (expected .exr, .hdr or .png)");
+    for (float bad : {std::nanf(""), -0.5f, std::numeric_limits<float>::infinity()}) {
+        lab::film::ImageRgb image(2, 2);
+        image.rgb[3 * 1 + 2] = bad;  // pixel (1, 0), B
+        const std::string path = emitter_temp_file("bad.exr");
+        lab::film::write_exr(path, image, lab::film::ImageMetadata{});
+        const std::string what = std::isnan(bad) ? "NaN" : (bad < 0.0f ? "negative" : "infinite");
+        CHECK(emitter_image_error(path) == "scenes/screen.json: emitters[2].image: " + path + ": pixel (1, 0): B is " + what + " (radiance must be finite and >= 0)");
+    }
+    // a header that claims more than the file can hold is refused before anything is allocated
+    // (common/image_claim.hpp), and sizes past the limit by their own line
+    CHECK_THROWS_WITH(lab::render::emitter_image_from_pixels("big.exr", lab::render::kMaxEmitterImageSide + 1, 1, {}),
+                      "big.exr: size: 4097 x 1 (an emitter's image has 1 to 4096 texels a side)");
 }
