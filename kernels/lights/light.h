@@ -25,7 +25,8 @@ typedef struct Light {
     float position[3]; /* sphere, rect, disk: its centre; point light: its position; environment: unused */
     float radius;      /* sphere, disk */
     float emission[3]; /* sphere, rect, disk: radiance Le, W m^-2 sr^-1 (a sphere's the same from both
-                          sides, a rect's and a disk's on their emitting side only);
+                          sides, a rect's and a disk's on their emitting side only; with an image,
+                          the RGB scale of its texels);
                           point light: intensity I, W sr^-1; environment: unused (the map holds it) */
     int type;          /* LIGHT_* */
     float edge_u[3];   /* rect: its edges U, V (the points centre + x U + y V, |x|, |y| <= 1/2,
