@@ -136,7 +136,8 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* settings, MarchSettings
         /* the offset's floor: a relative 1e-5 of the light's size (its radius, or a rect's edge) */
         float size = light.type == LIGHT_RECT ? fmin(length(area_light_u(&light)), length(area_light_v(&light))) : light.radius;
         origin = offset_origin(v.p, side.n, fmax(v.epsilon, 1e-5f * size), 1.0f);
-        le = light_surface_radiance(&light, scene->env_buffers, v.p, direction);
+        /* Le, or an image's texel at the point (along n: its emitting side) */
+        le = light_has_image(&light) ? light_surface_radiance(&light, scene->env_buffers, v.p, n) : float3_from_array(light.emission);
     } else if (light.type == LIGHT_POINT) {
         v.p = float3_from_array(light.position);
         v.frame = frame_from_normal(make_float3(0.0f, 0.0f, 1.0f));

@@ -588,12 +588,48 @@ TEST_CASE("lights: the chi-square test rejects a rect pdf off by 3 % either way 
     CHECK_FALSE(wrong.passed);
 }
 
+namespace {
+
+// The flux light l sends through a sphere of radius 2 about (0.5, 1, -0.2) against `power`: the
+// irradiance its samples estimate at points spread evenly over the sphere, E(x) = L cos / pdf per
+// sample with cos against the outward normal, integrated over the sphere's area. 400 x 800 strata
+// of (cos theta, phi), one point and one light sample each: the standard error of the integral, from
+// the spread of the strata's estimates (an over-estimate for strata), is required at most 0.25 % and
+// the integral within 1 %.
+void check_flux_through_sphere(const kernel::Light& l, kernel::EnvironmentBuffers b, double power, uint64_t seed, const std::string& what) {
+    const glm::dvec3 center(0.5, 1.0, -0.2);
+    const double radius = 2.0;
+    validation::UniformRandom rng(seed);
+    constexpr int kBands = 400, kSectors = 800;
+    double sum = 0.0, sum2 = 0.0;
+    for (int i = 0; i < kBands; ++i)
+        for (int j = 0; j < kSectors; ++j) {
+            const double z = -1.0 + 2.0 * (i + rng.next_double()) / kBands, phi = 2.0 * kPi * (j + rng.next_double()) / kSectors;
+            const double s = std::sqrt(1.0 - z * z);
+            const glm::dvec3 outward(s * std::cos(phi), s * std::sin(phi), z);
+            const float3 x(center + radius * outward);
+            const kernel::LightSample ls = kernel::sample_light(&l, nullptr, b, x, kernel::make_float2(rng.next_float(), rng.next_float()));
+            double e = 0.0;
+            if (ls.pdf > 0.0f)
+                e = lab::luminance(double(ls.radiance.x), double(ls.radiance.y), double(ls.radiance.z)) *
+                    std::max(0.0, -glm::dot(glm::dvec3(ls.wi), outward)) / double(ls.pdf);
+            sum += e;
+            sum2 += e * e;
+        }
+    const double n = double(kBands) * kSectors, mean = sum / n;
+    const double area = 4.0 * kPi * radius * radius, flux = area * mean;
+    const double standard_error = area * std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1.0));
+    std::printf("[lights] %s: flux through the sphere %.5f +- %.5f, power %.5f (%+.3f %%)\n", what.c_str(), flux, standard_error, power,
+                100.0 * (flux / power - 1.0));
+    INFO(what << ": flux " << flux << " +- " << standard_error << ", power " << power);
+    REQUIRE(standard_error < 0.0025 * power);
+    CHECK(flux == Approx(power).epsilon(0.01));
+}
+
+}  // namespace
+
 // The power the light set gives a rect or disk, pi A L (luminance), is the flux it sends through any
-// sphere around it: the irradiance its samples estimate at points spread evenly over a sphere of
-// radius 2 (an off-centre one), E(x) = L cos / pdf per sample with cos against the outward normal,
-// integrated over the sphere's area. 400 x 800 strata of (cos theta, phi), one point and one light
-// sample each: the standard error of the integral, from the spread of the strata's estimates (an
-// over-estimate for strata), is required at most 0.25 % and the integral within 1 %.
+// sphere around it (check_flux_through_sphere: an off-centre one of radius 2).
 TEST_CASE("lights: a rect's and a disk's power is the flux through a sphere around them", "[lights][area]") {
     const char* scene_text = R"({"camera": {"type": "pinhole", "position": [0, 0, 5], "look_at": [0, 0, 0], "fov_degrees": 40},
       "emitters": [{"type": "rect", "center": [0.3, 1.2, -0.4], "edge_u": [1, 0, 0], "edge_v": [0, 0.3, 0.52], "radiance": [2, 2, 2]},
@@ -607,36 +643,7 @@ TEST_CASE("lights: a rect's and a disk's power is the flux through a sphere arou
     // hand-computed: pi L |U x V| and pi L pi r^2 (the luminance of (1, 2, 3): 0.2126 + 1.4304 + 0.2166)
     CHECK(set.power[0] == Approx(kPi * 2.0 * std::sqrt(0.09 + 0.2704)).epsilon(1e-5));
     CHECK(set.power[1] == Approx(kPi * (0.2126 + 2.0 * 0.7152 + 3.0 * 0.0722) * kPi * 0.16).epsilon(1e-5));
-    const glm::dvec3 center(0.5, 1.0, -0.2);
-    const double radius = 2.0;
-    for (size_t k = 0; k < set.lights.size(); ++k) {
-        const kernel::Light& l = set.lights[k];
-        validation::UniformRandom rng(17 + k);
-        constexpr int kBands = 400, kSectors = 800;
-        double sum = 0.0, sum2 = 0.0;
-        for (int i = 0; i < kBands; ++i)
-            for (int j = 0; j < kSectors; ++j) {
-                const double z = -1.0 + 2.0 * (i + rng.next_double()) / kBands, phi = 2.0 * kPi * (j + rng.next_double()) / kSectors;
-                const double s = std::sqrt(1.0 - z * z);
-                const glm::dvec3 outward(s * std::cos(phi), s * std::sin(phi), z);
-                const float3 x(center + radius * outward);
-                const kernel::LightSample ls = kernel::sample_light(&l, nullptr, kernel::EnvironmentBuffers{}, x, kernel::make_float2(rng.next_float(), rng.next_float()));
-                double e = 0.0;
-                if (ls.pdf > 0.0f)
-                    e = lab::luminance(double(ls.radiance.x), double(ls.radiance.y), double(ls.radiance.z)) *
-                        std::max(0.0, -glm::dot(glm::dvec3(ls.wi), outward)) / double(ls.pdf);
-                sum += e;
-                sum2 += e * e;
-            }
-        const double n = double(kBands) * kSectors, mean = sum / n;
-        const double area = 4.0 * kPi * radius * radius, flux = area * mean;
-        const double standard_error = area * std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1.0));
-        std::printf("[lights] %s: flux through the sphere %.5f +- %.5f, power %.5f (%+.3f %%)\n", k == 0 ? "rect" : "disk", flux, standard_error,
-                    set.power[k], 100.0 * (flux / set.power[k] - 1.0));
-        INFO((k == 0 ? "rect" : "disk") << ": flux " << flux << " +- " << standard_error << ", power " << set.power[k]);
-        REQUIRE(standard_error < 0.0025 * set.power[k]);
-        CHECK(flux == Approx(set.power[k]).epsilon(0.01));
-    }
+    for (size_t k = 0; k < set.lights.size(); ++k) check_flux_through_sphere(set.lights[k], kernel::EnvironmentBuffers{}, set.power[k], 17 + k, k == 0 ? "rect" : "disk");
 }
 
 namespace {
@@ -808,8 +815,6 @@ TEST_CASE("lights: an image emitter's power is the flux through a sphere around 
     const ImageLights lights;
     const kernel::EnvironmentBuffers b = lights.buffers();
     const lab::render::EmitterImage image = lab::render::emitter_image_from_pixels("test.exr", kImageWidth, kImageHeight, test_image_pixels());
-    const glm::dvec3 center(0.5, 1.0, -0.2);
-    const double radius = 2.0;
     for (size_t k = 0; k < 2; ++k) {
         const kernel::Light& l = lights.set.lights[k];
         const double power = lab::render::image_light_power(l, image.mean_rgb);
@@ -823,31 +828,7 @@ TEST_CASE("lights: an image emitter's power is the flux through a sphere around 
         }
         const double n_texels = double(kImageWidth * kImageHeight);
         CHECK(power == Approx(kPi * lab::luminance(r / n_texels, g / n_texels, bl / n_texels) * kernel::area_light_area(&l)).epsilon(1e-6));
-        validation::UniformRandom rng(29 + k);
-        constexpr int kBands = 400, kSectors = 800;
-        double sum = 0.0, sum2 = 0.0;
-        for (int i = 0; i < kBands; ++i)
-            for (int j = 0; j < kSectors; ++j) {
-                const double z = -1.0 + 2.0 * (i + rng.next_double()) / kBands, phi = 2.0 * kPi * (j + rng.next_double()) / kSectors;
-                const double s = std::sqrt(1.0 - z * z);
-                const glm::dvec3 outward(s * std::cos(phi), s * std::sin(phi), z);
-                const float3 x(center + radius * outward);
-                const kernel::LightSample ls = kernel::sample_light(&l, nullptr, b, x, kernel::make_float2(rng.next_float(), rng.next_float()));
-                double e = 0.0;
-                if (ls.pdf > 0.0f)
-                    e = lab::luminance(double(ls.radiance.x), double(ls.radiance.y), double(ls.radiance.z)) *
-                        std::max(0.0, -glm::dot(glm::dvec3(ls.wi), outward)) / double(ls.pdf);
-                sum += e;
-                sum2 += e * e;
-            }
-        const double n = double(kBands) * kSectors, mean = sum / n;
-        const double area = 4.0 * kPi * radius * radius, flux = area * mean;
-        const double standard_error = area * std::sqrt(std::max(0.0, sum2 / n - mean * mean) / (n - 1.0));
-        std::printf("[lights] image %s: flux through the sphere %.5f +- %.5f, power %.5f (%+.3f %%)\n", k == 0 ? "rect" : "disk", flux, standard_error,
-                    power, 100.0 * (flux / power - 1.0));
-        INFO((k == 0 ? "rect" : "disk") << ": flux " << flux << " +- " << standard_error << ", power " << power);
-        REQUIRE(standard_error < 0.0025 * power);
-        CHECK(flux == Approx(power).epsilon(0.01));
+        check_flux_through_sphere(l, b, power, 29 + k, k == 0 ? "image rect" : "image disk");
     }
 }
 

@@ -144,6 +144,23 @@ SS_FN float3 spherical_rect_sample(const SphericalRect* r, float3 p, float2 u) {
     return p + r->ex * xu + r->ey * clamp(yv, r->y0, r->y1) + r->ez * r->z0;
 }
 
+/* The sample's geometry for the light's point q (emitting side's normal n) seen from p: wi,
+ * distance, position and normal into *s, the cosine at q between n and -wi into *cos_l; false when q
+ * is p or p does not see its emitting side. */
+SS_FN bool area_light_sample_point(float3 p, float3 q, float3 n, LightSample* s, float* cos_l) {
+    float3 w = q - p;
+    float dist = length(w);
+    if (!(dist > 0.0f)) return false;
+    float3 wi = w / dist;
+    *cos_l = -dot(n, wi);
+    if (!(*cos_l > 0.0f)) return false;
+    s->wi = wi;
+    s->distance = dist;
+    s->position = q;
+    s->normal = n;
+    return true;
+}
+
 SS_FN LightSample area_light_sample(const Light* l, float3 p, float2 u) {
     float3 n = area_light_normal(l);
     if (!(dot(p - area_light_center(l), n) > 0.0f)) return light_sample_none(); /* behind it: it emits nothing here */
@@ -155,18 +172,10 @@ SS_FN LightSample area_light_sample(const Light* l, float3 p, float2 u) {
         if (rect_light_uses_solid_angle(l, &r)) pdf_solid = 1.0f / r.solid_angle;
     }
     float3 q = pdf_solid > 0.0f ? spherical_rect_sample(&r, p, u) : area_light_sample_area(l, u, &n);
-    float3 w = q - p;
-    float dist = length(w);
-    if (!(dist > 0.0f)) return light_sample_none();
-    float3 wi = w / dist;
-    float cos_l = -dot(n, wi);
-    if (!(cos_l > 0.0f)) return light_sample_none();
-    s.wi = wi;
-    s.distance = dist;
+    float cos_l;
+    if (!area_light_sample_point(p, q, n, &s, &cos_l)) return light_sample_none();
     s.radiance = float3_from_array(l->emission);
-    s.pdf = pdf_solid > 0.0f ? pdf_solid : dist * dist / (area_light_area(l) * cos_l);
-    s.position = q;
-    s.normal = n;
+    s.pdf = pdf_solid > 0.0f ? pdf_solid : s.distance * s.distance / (area_light_area(l) * cos_l);
     return s;
 }
 

@@ -80,20 +80,11 @@ SS_FN LightSample image_emitter_sample(const Light* l, EnvironmentBuffers b, flo
     float3 n = area_light_normal(l);
     if (!(dot(p - area_light_center(l), n) > 0.0f)) return light_sample_none(); /* behind it: it emits nothing here */
     float3 q = image_emitter_sample_point(l, b, u);
-    float3 w = q - p;
-    float dist = length(w);
-    if (!(dist > 0.0f)) return light_sample_none();
-    float3 wi = w / dist;
-    float cos_l = -dot(n, wi);
-    if (!(cos_l > 0.0f)) return light_sample_none();
-    float pdf_area;
     LightSample s = light_sample_none();
+    float cos_l, pdf_area;
+    if (!area_light_sample_point(p, q, n, &s, &cos_l)) return light_sample_none();
     s.radiance = image_emitter_radiance_area_pdf(l, b, q, &pdf_area);
-    s.wi = wi;
-    s.distance = dist;
-    s.pdf = pdf_area * dist * dist / cos_l;
-    s.position = q;
-    s.normal = n;
+    s.pdf = pdf_area * s.distance * s.distance / cos_l;
     return s;
 }
 
