@@ -323,6 +323,12 @@ cli_bad_input(NAME bench_breakdown.bad_repeats EXPECT "${E}--repeats: must be in
 set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_scene\\.json: cannot open"
               ARGS render ${D}/absent_scene.json --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.image_emitter_missing ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_image_missing\\.json: emitters\\[0\\]\\.image: ${D}/absent_screen\\.exr: no such file$"
+              ARGS render ${D}/scene_image_missing.json --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.image_emitter_corrupt ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_image_corrupt\\.json: emitters\\[0\\]\\.image: ${D}/corrupt\\.exr: cannot be read as an OpenEXR, Radiance HDR or PNG image$"
+              ARGS render ${D}/scene_image_corrupt.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"ppm\" \\(pt, bdpt, lt, bdpt-cache, vcm\\)$"
               ARGS ${RENDER} --integrator ppm)
 cli_bad_input(NAME render.bdpt_max_depth ABSENT ${PNG} EXPECT "${E}--max-depth: bdpt takes at most 62 scattering events, got 63$"
