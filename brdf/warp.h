@@ -28,6 +28,27 @@ SS_FN float2 square_to_concentric_disk(float u1, float u2) {
     return make_float2(r * cospi(phi_over_pi), r * sinpi(phi_over_pi));
 }
 
+/* The inverse of square_to_concentric_disk: the point of [0, 1]^2 that maps to (x, y) of the unit
+ * disk. In the forward map's first region (|a| > |b|) the point is a (cos phi, sin phi) with
+ * phi = pi/4 b/a in (-pi/4, pi/4), so a = sign(x) r and b = a (4/pi) atan(y/x); in the second
+ * (|a| <= |b|) it is b (cos phi, sin phi) with phi = pi/2 - pi/4 a/b in [pi/4, 3pi/4], so
+ * b = sign(y) r and a = b (2 - (4/pi) phi). The regions meet where |x| = |y|. */
+SS_FN float2 concentric_disk_to_square(float x, float y) {
+    float r = sqrt(x * x + y * y);
+    float a, b;
+    if (r == 0.0f) {
+        a = 0.0f;
+        b = 0.0f;
+    } else if (fabs(x) > fabs(y)) {
+        a = x > 0.0f ? r : -r;
+        b = a * (4.0f * SS_INV_PI) * atan(y / x);
+    } else {
+        b = y > 0.0f ? r : -r;
+        a = b * (2.0f - (4.0f * SS_INV_PI) * atan2(y / b, x / b));
+    }
+    return make_float2(clamp(0.5f * (a + 1.0f), 0.0f, 1.0f), clamp(0.5f * (b + 1.0f), 0.0f, 1.0f));
+}
+
 /* Malley's method: a concentric disk sample lifted onto the hemisphere; pdf = cos(theta) / pi. */
 SS_FN float3 square_to_cosine_hemisphere(float u1, float u2) {
     float r, phi_over_pi;

@@ -201,6 +201,7 @@ RenderJob prepare_render_job(const RenderJobOptions& o) {
     job.input.environment = std::move(environment);
     job.input.settings = settings;
     job.input.light_selection = selection;
+    job.input.scene_time = o.scene_time;  // the time an emitter's image is read at
     char line[768];
     std::snprintf(line, sizeof line, "%s on %s under %s, %dx%d, %s with %s light sampling", job.material_name.c_str(),
                   job.scene_name.c_str(), env_name.c_str(), settings.width, settings.height, render::integrator_name(settings.integrator),

@@ -8,6 +8,7 @@
 #include "common/ffmpeg.hpp"
 #include "common/frame_pattern.hpp"
 #include "common/input_error.hpp"
+#include "render/emitter_images.hpp"
 #include "render/interrupt.hpp"
 #include "render/progressive.hpp"
 #include "render/sample_ranges.hpp"
@@ -59,9 +60,11 @@ void run_render_sequence(const RenderJobOptions& job, const RenderRunOptions& ru
                                             "rendered and the frame files are as they were; without --video the frames render alone");
     }
     render::check_render_output(frame_path(run.output, first));  // and the PNG beside it
-    // a time where a spline takes the camera out of its range stops the sequence before its first frame
+    // a time where a spline takes the camera out of its range stops the sequence before its first frame,
     const scene::Scene scene = job.scene.empty() ? scene::load_test_model() : scene::load_scene(job.scene);
+    // and so does a frame an emitter's image sequence or video lacks
     for (int64_t k = first; k < end; ++k) scene::scene_at_time(scene, double(k) / sequence.fps);
+    render::check_emitter_frames(scene, first, end, sequence.fps);
 
     render::InterruptScope interrupt_scope;  // a Ctrl-C between two frames stops the sequence too
     std::optional<opencl::Runtime> runtime;  // one program for every frame

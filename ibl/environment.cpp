@@ -1,21 +1,16 @@
 #include "ibl/environment.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
 #include <stdexcept>
 #include <utility>
 
-#include "common/file_extension.hpp"
-#include "common/image_claim.hpp"
-#include "common/image_codec.hpp"
-#include "common/image_open.hpp"
 #include "common/input_error.hpp"
 #include "common/message_number.hpp"
 #include "ibl/distribution.hpp"
+#include "ibl/radiance_image.hpp"
 
 namespace lab::ibl {
 
@@ -151,28 +146,8 @@ float Environment::pdf(single_source::float3 direction) const {
 }
 
 LatLongImage read_latlong_image(const std::string& path) {
-    const std::string ext = lowercase_extension(path);
-    std::error_code ec;
-    if ((ext != ".exr" && ext != ".hdr") && std::filesystem::is_regular_file(path, ec))
-        throw InputError(path, "", "unsupported image format \"" + ext + "\" (expected .exr or .hdr)");
-    std::unique_ptr<codec::ImageFile> input = codec::open_flat_image(path, "an OpenEXR or Radiance HDR image", "");
-    const codec::Header& header = input->header();
-    if (header.format != "openexr" && header.format != "hdr")
-        throw InputError(path, "", "holds a " + header.format + " image, not OpenEXR or Radiance HDR");
-    const int width = header.width, height = header.height, channels = header.channels;
-    check_latlong_size(path, width, height);
-    if (channels != 1 && channels < 3)
-        throw InputError(path, "channels",
-                         std::to_string(channels) + " (expected 1 for grey, or 3 or more with R, G, B first)");
-
-    const int used = channels == 1 ? 1 : 3;
-    // what is read, and for grey the RGB image made from it besides, before a pixel is allocated
-    codec::check_image_file_claim(path, header, used == 1 ? 4 : 3);
-    std::vector<float> pixels(size_t(width) * height * used);
-    std::string error;
-    if (!input->read(used, pixels.data(), &error)) throw InputError(path, "pixels", "cannot be read (corrupt or truncated file)");
-    std::vector<std::string> names(header.channel_names.begin(), header.channel_names.begin() + used);
-    return latlong_from_pixels(path, width, height, std::move(pixels), names);
+    RadianceImage image = read_radiance_image(path, {kOpenExr, kRadianceHdr}, [&](int width, int height) { check_latlong_size(path, width, height); });
+    return latlong_from_pixels(path, image.width, image.height, std::move(image.pixels), image.channel_names);
 }
 
 void check_latlong_size(const std::string& path, int width, int height) {

@@ -44,7 +44,7 @@ SS_FN float bdpt_light_sample_ratio(const RenderKernelSettings* settings, const 
     if (!(d2 > 0.0f)) return 1.0f;
     w = w * (1.0f / sqrt(d2));
     float q1 = light_pdf(&light, &scene->env, scene->env_buffers, x1->p, w) * fabs(dot(x0->frame.n, w)) / d2;
-    float q = light_area_pdf(&light);
+    float q = light_area_pdf(&light, scene->env_buffers, x0->p);
     return q1 > 0.0f ? q1 / q : 1.0f;
 }
 

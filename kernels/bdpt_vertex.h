@@ -103,7 +103,7 @@ SS_FN float vertex_pdf_light_origin(const RenderKernelSettings* settings, const 
     float pmf = light_selection_pmf(scene->light_cdf, settings->light_count, index);
     if (!(pmf > 0.0f)) return 0.0f;
     Light light = scene->lights[index];
-    if (light_is_surface(light.type)) return pmf * light_area_pdf(&light);
+    if (light_is_surface(light.type)) return pmf * light_area_pdf(&light, scene->env_buffers, v->p);
     if (light.type == LIGHT_POINT) return pmf;
     return pmf * environment_light_pdf(&scene->env, scene->env_buffers, v->p);
 }
@@ -184,9 +184,10 @@ SS_FN float3 vertex_le(const RenderScene* scene, const PathVertex* v, bool seen_
         int index = scene->light_of_slot[v->index];
         if (index < 0) return make_float3(e.x, e.y, e.z);
         Light light = scene->lights[index];
-        return light_surface_radiance(&light, frame_to_world(v->frame, v->wo));
+        return light_surface_radiance(&light, scene->env_buffers, v->p, frame_to_world(v->frame, v->wo));
     }
     Light light = scene->lights[v->index]; /* float3_from_array takes a private pointer */
+    if (light_is_surface(light.type)) return light_surface_radiance(&light, scene->env_buffers, v->p, frame_to_world(v->frame, v->wo));
     return float3_from_array(light.emission);
 }
 

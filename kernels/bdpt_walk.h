@@ -121,7 +121,7 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* settings, MarchSettings
     float pdf_position, pdf_dir, cos_out = 1.0f;
     if (light_is_surface(light.type)) {
         float3 n;
-        v.p = light_sample_area(&light, make_float2(u.y, u.z), &n);
+        v.p = light_sample_area(&light, scene->env_buffers, make_float2(u.y, u.z), &n);
         v.frame = frame_from_normal(n);
         v.on_surface = 1;
         /* a sphere emits from both sides, each chosen with probability 1/2; a rect or disk from its
@@ -132,11 +132,12 @@ SS_FN int bdpt_light_subpath(const RenderKernelSettings* settings, MarchSettings
         direction = frame_to_world(side, w_local);
         cos_out = w_local.z;
         pdf_dir = w_local.z * (two_sided ? 0.5f * SS_INV_PI : SS_INV_PI);
-        pdf_position = light_area_pdf(&light);
+        pdf_position = light_area_pdf(&light, scene->env_buffers, v.p);
         /* the offset's floor: a relative 1e-5 of the light's size (its radius, or a rect's edge) */
         float size = light.type == LIGHT_RECT ? fmin(length(area_light_u(&light)), length(area_light_v(&light))) : light.radius;
         origin = offset_origin(v.p, side.n, fmax(v.epsilon, 1e-5f * size), 1.0f);
-        le = float3_from_array(light.emission);
+        /* Le, or an image's texel at the point (along n: its emitting side) */
+        le = light_has_image(&light) ? light_surface_radiance(&light, scene->env_buffers, v.p, n) : float3_from_array(light.emission);
     } else if (light.type == LIGHT_POINT) {
         v.p = float3_from_array(light.position);
         v.frame = frame_from_normal(make_float3(0.0f, 0.0f, 1.0f));

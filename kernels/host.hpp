@@ -24,6 +24,7 @@ using namespace ::ibl;
 #include "kernels/lights/area_light.h"
 #include "kernels/lights/point_light.h"
 #include "kernels/lights/environment_light.h"
+#include "kernels/lights/image_emitter.h"
 #include "kernels/lights/light_selection.h"
 #include "kernels/render_settings.h"
 #include "kernels/ray_march.h"

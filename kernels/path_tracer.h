@@ -186,7 +186,7 @@ SS_FN void path_scatter(const RenderKernelSettings* settings, MarchSettings marc
     } else if (emitted.w > 0.0f) { /* an emitter: a sphere from either side, a rect or disk from its emitting side */
         int index = scene->light_of_slot[hit.slot];
         Light light = scene->lights[index];
-        float3 le = light_surface_radiance(&light, -direction);
+        float3 le = light_surface_radiance(&light, scene->env_buffers, hit.p, -direction);
         if (max_component(le) > 0.0f) {
             float weight = light_hit_weight(settings, scene, index, previous_p, direction, p->previous_pdf, p->previous_delta);
             radiance += throughput * (weight * le);

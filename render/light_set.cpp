@@ -30,6 +30,12 @@ double sphere_light_power(const kernel::Light& light) {
 
 double area_light_power(const kernel::Light& light) { return kPi * luminance_of(light.emission) * double(kernel::area_light_area(&light)); }
 
+double image_light_power(const kernel::Light& light, const std::array<double, 3>& image_mean_rgb) {
+    const double r = double(light.emission[0]) * image_mean_rgb[0], g = double(light.emission[1]) * image_mean_rgb[1],
+                 b = double(light.emission[2]) * image_mean_rgb[2];
+    return kPi * lab::luminance(r, g, b) * double(kernel::area_light_area(&light));
+}
+
 double point_light_power(const kernel::Light& light) { return 4.0 * kPi * luminance_of(light.emission); }
 
 double environment_light_power(const ibl::Environment& environment, double scene_radius) {
@@ -43,7 +49,8 @@ double environment_light_power(const ibl::Environment& environment, double scene
     return kPi * scene_radius * scene_radius * double(environment.map().intensity) * integral;
 }
 
-LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environment* environment, LightSelection selection) {
+LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environment* environment, LightSelection selection,
+                         const std::vector<std::optional<std::array<double, 3>>>& image_means) {
     LightSet set;
     set.light_of_slot.assign(scene.materials.size(), -1);
     if (environment != nullptr) {
@@ -53,7 +60,8 @@ LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environme
         set.lights.push_back(l);
         set.power.push_back(environment_light_power(*environment, scene.bounds_radius));
     }
-    for (const scene::Emitter& e : scene.emitters) {
+    for (size_t k = 0; k < scene.emitters.size(); ++k) {
+        const scene::Emitter& e = scene.emitters[k];
         kernel::Light l{};
         l.type = e.shape == scene::EmitterShape::sphere ? LIGHT_SPHERE : (e.shape == scene::EmitterShape::rect ? LIGHT_RECT : LIGHT_DISK);
         kernel::float3_to_array(e.center, l.position);
@@ -64,7 +72,8 @@ LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environme
         l.material_slot = e.material;
         if (e.material >= 0 && size_t(e.material) < set.light_of_slot.size()) set.light_of_slot[size_t(e.material)] = int(set.lights.size());
         set.lights.push_back(l);
-        set.power.push_back(l.type == LIGHT_SPHERE ? sphere_light_power(l) : area_light_power(l));
+        if (k < image_means.size() && image_means[k]) set.power.push_back(image_light_power(l, *image_means[k]));
+        else set.power.push_back(l.type == LIGHT_SPHERE ? sphere_light_power(l) : area_light_power(l));
     }
     for (const scene::PointLight& p : scene.point_lights) {
         kernel::Light l{};
@@ -87,7 +96,7 @@ LightSet build_light_set(const scene::CompiledScene& scene, const ibl::Environme
 
 int light_type_mask(const LightSet& lights) {
     int mask = 0;
-    for (const kernel::Light& l : lights.lights) mask |= 1 << l.type;
+    for (const kernel::Light& l : lights.lights) mask |= 1 << l.type | (l.image > 0 ? 1 << LIGHT_IMAGE : 0);
     return mask;
 }
 

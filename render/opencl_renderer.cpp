@@ -91,7 +91,7 @@ void OpenClRenderer::upload_scene() {
     // environment's rotation and exposure (kernel arguments), change: uploaded once per map.
     if (env.texels().data() != uploaded_texels_ || texels_version() != uploaded_texels_version_) {
         texels_ = upload(runtime_, bound_texels());  // with the blurred backdrop after them, when there is one
-        alias_ = upload(runtime_, env.alias());
+        alias_ = upload(runtime_, bound_alias());  // with the emitters' images' after them, when there are any
         uploaded_texels_ = env.texels().data();
         uploaded_texels_version_ = texels_version();
     }

@@ -78,6 +78,7 @@ Renderer::Renderer(RenderInput input) : input_(std::move(input)) {
         compiled_.warnings.push_back(compiled_.file + ": the field is not a distance bound, so sphere tracing is not over-relaxed (1)");
     }
     emission_ = emission_table(compiled_);
+    emitter_images_ = load_emitter_images(compiled_, input_.scene_time);
     rebuild_lights();
     rebuild_background();
     check_emissive_materials();
@@ -109,7 +110,26 @@ void Renderer::initialize() {
 }
 
 void Renderer::rebuild_lights() {
-    lights_ = build_light_set(compiled_, input_.environment ? &*input_.environment : nullptr, input_.light_selection);
+    lights_ = build_light_set(compiled_, input_.environment ? &*input_.environment : nullptr, input_.light_selection,
+                              emitter_image_means(emitter_images_));
+    rebind_buffers();
+}
+
+void Renderer::rebind_buffers() {
+    const ibl::Environment& env = bound_environment();
+    texels_with_extras_.clear();
+    alias_with_images_.clear();
+    bool images = false;
+    for (const std::optional<EmitterImage>& image : emitter_images_) images = images || image.has_value();
+    if (background_face_size_ > 0 || images) {
+        texels_with_extras_ = env.texels();
+        texels_with_extras_.insert(texels_with_extras_.end(), blurred_texels_.begin(), blurred_texels_.end());
+    }
+    if (images) {
+        alias_with_images_ = env.alias();
+        bind_emitter_images(emitter_images_, &lights_, &texels_with_extras_, &alias_with_images_);
+    }
+    ++texels_version_;
 }
 
 scene::CompileOptions Renderer::compile_options() const {
@@ -179,25 +199,28 @@ kernel::RenderScene Renderer::host_render_scene() const {
     const ibl::Environment& env = bound_environment();
     return kernel::render_scene_make(compiled_.materials.data(), brdf::bsdf_tables(), emission_.data(), lights_.lights.data(),
                                      lights_.selection_cdf.data(), lights_.light_of_slot.data(), env.map(), bound_texels().data(),
-                                     env.alias().data());
+                                     bound_alias().data());
 }
 
 const std::vector<brdf::float4>& Renderer::bound_texels() const {
-    return background_face_size_ > 0 ? texels_with_background_ : bound_environment().texels();
+    return has_extras() ? texels_with_extras_ : bound_environment().texels();
+}
+
+const std::vector<kernel::AliasEntry>& Renderer::bound_alias() const {
+    return alias_with_images_.empty() ? bound_environment().alias() : alias_with_images_;
 }
 
 void Renderer::rebuild_background() {
     const float blur = input_.settings.background_blur_degrees;
-    texels_with_background_.clear();
+    blurred_texels_.clear();
     background_face_size_ = 0;
     if (blur > 0.0f && input_.environment) {
         const ibl::Environment& env = *input_.environment;
         ibl::BlurredCubemap blurred = ibl::blur_cubemap(env.texels(), env.face_size(), blur);
-        texels_with_background_ = env.texels();
-        texels_with_background_.insert(texels_with_background_.end(), blurred.texels.begin(), blurred.texels.end());
+        blurred_texels_ = std::move(blurred.texels);
         background_face_size_ = blurred.face_size;
     }
-    ++texels_version_;
+    rebind_buffers();
 }
 
 int Renderer::add_samples(int max_samples, double budget_seconds) {

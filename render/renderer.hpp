@@ -22,6 +22,7 @@
 #include "ibl/environment.hpp"
 #include "kernels/host.hpp"
 #include "render/display_filter.hpp"
+#include "render/emitter_images.hpp"
 #include "render/film_readback.hpp"
 #include "render/film_resolve.hpp"
 #include "render/light_set.hpp"
@@ -38,6 +39,7 @@ struct RenderInput {
     std::optional<ibl::Environment> environment; // none: no environment light, escaping rays see black
     RenderSettings settings;
     LightSelection light_selection = LightSelection::power;
+    double scene_time = 0.0;  // seconds: the time `scene` was taken at (scene::scene_at_time), which an emitter's image is read at
 };
 
 // First-hit AOVs (kernels/first_hit.h), each pixel's mean over the film's samples: albedo
@@ -196,8 +198,11 @@ protected:
     // The scene as the kernels' host build reads it (kernels/render_scene.h), over this renderer's buffers.
     kernel::RenderScene host_render_scene() const;
     // The texels the kernels bind: the environment's, followed by the blurred backdrop's when there
-    // is a blur (kernels/background.h); texels_version() changes whenever they do.
+    // is a blur (kernels/background.h), and the images emitters show (render/emitter_images.hpp);
+    // texels_version() changes whenever they do. bound_alias(): the environment's alias tables, and
+    // the images' after them.
     const std::vector<brdf::float4>& bound_texels() const;
+    const std::vector<kernel::AliasEntry>& bound_alias() const;
     uint64_t texels_version() const { return texels_version_; }
 
     RenderInput input_;
@@ -214,8 +219,15 @@ private:
     void check_emissive_materials() const;
     // The blurred backdrop for input_.settings.background_blur_degrees (none at 0 or without an environment).
     void rebuild_background();
+    // The buffers bound_texels() and bound_alias() return, and the image emitters' lights' offsets
+    // into them (bind_emitter_images), after the lights or the backdrop changed.
+    void rebind_buffers();
 
-    std::vector<brdf::float4> texels_with_background_;  // the environment's texels, then the blurred map's
+    std::vector<std::optional<EmitterImage>> emitter_images_;  // per emitter of the scene
+    std::vector<brdf::float4> blurred_texels_;           // the blurred backdrop's (none: empty)
+    std::vector<brdf::float4> texels_with_extras_;       // the environment's texels, the blurred map's, the images'
+    std::vector<kernel::AliasEntry> alias_with_images_;  // the environment's tables, then the images'
+    bool has_extras() const { return background_face_size_ > 0 || !alias_with_images_.empty(); }
     int background_face_size_ = 0;                       // the blurred map's face; 0: none
     uint64_t texels_version_ = 0;
 

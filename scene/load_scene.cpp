@@ -9,6 +9,7 @@
 #include "brdf/host/preset.hpp"
 #include "common/input_error.hpp"
 #include "common/read_text_file.hpp"
+#include "ibl/frame_source.hpp"
 #include "scene/json_fields.hpp"
 #include "scene/parse_node.hpp"
 #include "scene/scene_limits.hpp"
@@ -172,6 +173,13 @@ MaterialSlot emitter_slot(const std::string& path, int index, const Emitter& e, 
     return slot;
 }
 
+// A rect's or disk's "radiance": required, unless it shows an "image", whose texels it then scales
+// (1 when left out).
+Vec3 area_radiance(const Fields& f) {
+    if (f.has("image") && !f.has("radiance")) return Vec3(1.0f);
+    return f.non_negative_vec3("radiance");
+}
+
 // "emitters": emissive spheres (type "sphere", the default), rects and disks (area lights that emit
 // on one side) and point lights (type "point").
 void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
@@ -184,6 +192,8 @@ void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
             if (!t.is_string()) throw InputError(file, field_path(path, "type"), std::string("expected a string, got ") + t.type_name());
             type = t.get<std::string>();
         }
+        if ((type == "point" || type == "sphere") && value[i].is_object() && value[i].contains("image"))
+            throw InputError(file, field_path(path, "image"), "only rect and disk emitters show an image, not a " + type);
         if (type == "point") {
             Fields f(value[i], path, file, {"type", "position", "intensity"});
             scene->point_lights.push_back(PointLight{f.vec3("position"), f.non_negative_vec3("intensity")});
@@ -194,8 +204,8 @@ void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
             Fields f(value[i], path, file, {"type", "center", "radius", "radiance", "material"});
             e = Emitter{f.vec3("center"), f.positive("radius"), f.non_negative_vec3("radiance"), int(scene->materials.size()), ""};
         } else if (type == "rect") {
-            Fields f(value[i], path, file, {"type", "center", "edge_u", "edge_v", "radiance", "material"});
-            e = Emitter{f.vec3("center"), 0.0f, f.non_negative_vec3("radiance"), int(scene->materials.size()), ""};
+            Fields f(value[i], path, file, {"type", "center", "edge_u", "edge_v", "radiance", "image", "fps", "material"});
+            e = Emitter{f.vec3("center"), 0.0f, area_radiance(f), int(scene->materials.size()), ""};
             e.shape = EmitterShape::rect;
             e.edge_u = f.nonzero_vec3("edge_u");
             e.edge_v = f.nonzero_vec3("edge_v");
@@ -205,8 +215,8 @@ void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
                 f.fail("edge_v", "parallel to edge_u: the rect has no area");
             e.normal = glm::normalize(n);
         } else if (type == "disk") {
-            Fields f(value[i], path, file, {"type", "center", "normal", "radius", "radiance", "material"});
-            e = Emitter{f.vec3("center"), f.positive("radius"), f.non_negative_vec3("radiance"), int(scene->materials.size()), ""};
+            Fields f(value[i], path, file, {"type", "center", "normal", "radius", "radiance", "image", "fps", "material"});
+            e = Emitter{f.vec3("center"), f.positive("radius"), area_radiance(f), int(scene->materials.size()), ""};
             e.shape = EmitterShape::disk;
             e.normal = glm::normalize(f.nonzero_vec3("normal"));
             const brdf::ShadingFrame frame = brdf::frame_from_normal(e.normal);
@@ -215,7 +225,18 @@ void parse_emitters(const Json& value, const std::string& file, Scene* scene) {
         } else {
             throw InputError(file, field_path(path, "type"), "unknown emitter type \"" + type + "\" (expected one of: sphere, rect, disk, point)");
         }
-        Fields f(value[i], path, file, {"type", "center", "radius", "edge_u", "edge_v", "normal", "radiance", "material"});
+        Fields f(value[i], path, file, {"type", "center", "radius", "edge_u", "edge_v", "normal", "radiance", "image", "fps", "material"});
+        if (f.has("image")) {
+            const std::string relative = f.string("image");
+            if (relative.empty()) f.fail("image", "must not be empty");
+            e.image = resolve(file, relative);
+            e.image_field = field_path(path, "image");
+            e.image_fps_field = field_path(path, "fps");
+            if (f.has("fps")) e.image_fps = f.number("fps");
+            ibl::frame_source(e.image, e.image_fps, file, e.image_field, e.image_fps_field);  // a sequence has its fps, nothing else one
+        } else if (f.has("fps")) {
+            f.fail("fps", "only an emitter that shows an image sequence (\"image\": \"screen_%04d.exr\") takes a frame rate");
+        }
         if (f.has("material")) {
             e.surface_material = f.string("material");
             const bool declared = std::any_of(scene->materials.begin(), scene->materials.end(), [&](const MaterialSlot& m) {

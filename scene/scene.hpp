@@ -94,6 +94,13 @@ struct Emitter {
     Vec3 edge_u{0.0f};  // rect: its two edges; disk: an orthonormal tangent pair times the radius
     Vec3 edge_v{0.0f};  //   (so that a point is center + x edge_u + y edge_v, x^2 + y^2 <= 1)
     Vec3 normal{0.0f};  // rect, disk: unit, the emitting side
+    // rect, disk: the image it shows (its path, resolved against the scene file; empty: none), whose
+    // texels `radiance` then scales (docs/scenes.md, kernels/lights/image_emitter.h)
+    std::string image{};
+    std::string image_field{};  // "emitters[i].image", the field an error in the image names
+    // a sequence's frames per second, when `image` is a pattern (screen_%04d.exr): docs/scenes.md, "Time"
+    std::optional<double> image_fps{};
+    std::string image_fps_field{};  // "emitters[i].fps"
 };
 
 // A point light: a light, not geometry (nothing hits it, it casts no shadow).

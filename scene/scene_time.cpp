@@ -1,8 +1,10 @@
 #include "scene/scene_time.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "common/input_error.hpp"
+#include "ibl/frame_source.hpp"
 #include "scene/json_fields.hpp"
 
 namespace lab::scene {
@@ -65,6 +67,11 @@ Scene scene_at_time(const Scene& scene, double t) {
     return s;
 }
 
-bool is_animated(const Scene& scene) { return scene.camera.keyframes || (scene.environment && scene.environment->keyframes); }
+bool is_animated(const Scene& scene) {
+    const bool playing = std::any_of(scene.emitters.begin(), scene.emitters.end(), [](const Emitter& e) {
+        return !e.image.empty() && (e.image_fps || ibl::is_video_path(e.image));  // a sequence or a video
+    });
+    return playing || scene.camera.keyframes || (scene.environment && scene.environment->keyframes);
+}
 
 }  // namespace lab::scene

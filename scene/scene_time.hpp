@@ -1,6 +1,7 @@
 // A scene at a scene time t, in seconds (docs/scenes.md, "Time"): its camera and its environment's
-// rotation follow their keyframes (scene/keyframes.hpp); nothing else in a scene moves. This is the
-// one place that maps a time to what a frame renders.
+// rotation follow their keyframes (scene/keyframes.hpp), and an emitter's image sequence or video
+// shows frame floor(t * fps) (ibl/frame_source.hpp, read when the render's lights are built, at its
+// scene time); nothing else in a scene moves or changes.
 #pragma once
 
 #include <optional>
@@ -25,7 +26,8 @@ std::optional<std::pair<std::string, std::string>> camera_problem(const Camera& 
 // spline can overshoot between keyframes that are each fine).
 Scene scene_at_time(const Scene& scene, double t);
 
-// Whether anything in the scene has keyframes.
+// Whether anything in the scene changes with time: keyframes, or an emitter that plays an image
+// sequence or a video.
 bool is_animated(const Scene& scene);
 
 }  // namespace lab::scene

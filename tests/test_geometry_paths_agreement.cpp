@@ -81,6 +81,7 @@ const std::vector<SceneCase> kScenes = {
     // (t up to 22); the same with sphere lights of the same power in place of its rects and disk
     // (0.11 to 0.29 %), so the march's bias, not the area lights'
     {"studio", 0.05, kMaxDepth, lab::render::LightSampling::mis, 0.003},
+    {"tv_room", 0.05},
     {"veach_mis", 0.20},
 };
 

@@ -227,6 +227,7 @@ std::vector<Case> own_light_cases() {
         {"metaballs", "scenes/metaballs.json", "", 6, 32, 32, 64, 0.10},
         {"veach_mis", "scenes/veach_mis.json", "", 6, 32, 64, 0, 0.35},
         {"studio", "scenes/studio.json", "", 6, 32, 32, 0, 0.10},
+        {"tv_room", "scenes/tv_room.json", "", 6, 32, 32, 64, 0.10},
     };
 }
 

@@ -39,11 +39,18 @@ SS_FN float area_light_area(const Light* l) {
 
 SS_FN float area_light_area_pdf(const Light* l) { return 1.0f / area_light_area(l); }
 
+/* The light's point for st in [0, 1]^2: a rect's c + (s - 1/2) U + (t - 1/2) V, so that st = (0, 0)
+ * is its corner c - U/2 - V/2 and s runs along U, t along V; a disk's through Shirley-Chiu's
+ * concentric map, which keeps areas (every part of the square maps onto pi r^2 times its area). */
+SS_FN float3 area_light_point(const Light* l, float2 st) {
+    float2 xy = l->type == LIGHT_DISK ? square_to_concentric_disk(st.x, st.y) : make_float2(st.x - 0.5f, st.y - 0.5f);
+    return area_light_center(l) + area_light_u(l) * xy.x + area_light_v(l) * xy.y;
+}
+
 /* A point uniform by area (density area_light_area_pdf) and the normal of its emitting side. */
 SS_FN float3 area_light_sample_area(const Light* l, float2 u, float3* normal) {
     *normal = area_light_normal(l);
-    float2 xy = l->type == LIGHT_DISK ? square_to_concentric_disk(u.x, u.y) : make_float2(u.x - 0.5f, u.y - 0.5f);
-    return area_light_center(l) + area_light_u(l) * xy.x + area_light_v(l) * xy.y;
+    return area_light_point(l, u);
 }
 
 /* A point this much (in its coordinates along U and V) outside the light still counts as on it: a
@@ -52,14 +59,20 @@ SS_FN float3 area_light_sample_area(const Light* l, float2 u, float3* normal) {
  * integrates to at most 1 + 4e-5. */
 #define AREA_LIGHT_EDGE_TOLERANCE 1e-5f
 
-/* Whether the point q of the light's plane lies on it: its coordinates x, y along U and V (from the
- * dual vectors V x N / |N|^2 and N x U / |N|^2, N = U x V) within the rect or the unit disk. */
-SS_FN bool area_light_contains(const Light* l, float3 q) {
+/* The coordinates x, y along U and V of the point q of the light's plane (from the dual vectors
+ * V x N / |N|^2 and N x U / |N|^2, N = U x V), and whether q lies on the light: x, y within the rect
+ * or the unit disk. */
+SS_FN float2 area_light_coordinates(const Light* l, float3 q) {
     float3 u = area_light_u(l), v = area_light_v(l);
     float3 n = cross(u, v);
     float3 d = q - area_light_center(l);
     float inv = 1.0f / dot(n, n);
-    float x = dot(d, cross(v, n)) * inv, y = dot(d, cross(n, u)) * inv;
+    return make_float2(dot(d, cross(v, n)) * inv, dot(d, cross(n, u)) * inv);
+}
+
+SS_FN bool area_light_contains(const Light* l, float3 q) {
+    float2 xy = area_light_coordinates(l, q);
+    float x = xy.x, y = xy.y;
     const float reach = 1.0f + AREA_LIGHT_EDGE_TOLERANCE;
     return l->type == LIGHT_DISK ? x * x + y * y <= reach * reach : fabs(x) <= 0.5f * reach && fabs(y) <= 0.5f * reach;
 }
@@ -131,6 +144,23 @@ SS_FN float3 spherical_rect_sample(const SphericalRect* r, float3 p, float2 u) {
     return p + r->ex * xu + r->ey * clamp(yv, r->y0, r->y1) + r->ez * r->z0;
 }
 
+/* The sample's geometry for the light's point q (emitting side's normal n) seen from p: wi,
+ * distance, position and normal into *s, the cosine at q between n and -wi into *cos_l; false when q
+ * is p or p does not see its emitting side. */
+SS_FN bool area_light_sample_point(float3 p, float3 q, float3 n, LightSample* s, float* cos_l) {
+    float3 w = q - p;
+    float dist = length(w);
+    if (!(dist > 0.0f)) return false;
+    float3 wi = w / dist;
+    *cos_l = -dot(n, wi);
+    if (!(*cos_l > 0.0f)) return false;
+    s->wi = wi;
+    s->distance = dist;
+    s->position = q;
+    s->normal = n;
+    return true;
+}
+
 SS_FN LightSample area_light_sample(const Light* l, float3 p, float2 u) {
     float3 n = area_light_normal(l);
     if (!(dot(p - area_light_center(l), n) > 0.0f)) return light_sample_none(); /* behind it: it emits nothing here */
@@ -142,30 +172,29 @@ SS_FN LightSample area_light_sample(const Light* l, float3 p, float2 u) {
         if (rect_light_uses_solid_angle(l, &r)) pdf_solid = 1.0f / r.solid_angle;
     }
     float3 q = pdf_solid > 0.0f ? spherical_rect_sample(&r, p, u) : area_light_sample_area(l, u, &n);
-    float3 w = q - p;
-    float dist = length(w);
-    if (!(dist > 0.0f)) return light_sample_none();
-    float3 wi = w / dist;
-    float cos_l = -dot(n, wi);
-    if (!(cos_l > 0.0f)) return light_sample_none();
-    s.wi = wi;
-    s.distance = dist;
+    float cos_l;
+    if (!area_light_sample_point(p, q, n, &s, &cos_l)) return light_sample_none();
     s.radiance = float3_from_array(l->emission);
-    s.pdf = pdf_solid > 0.0f ? pdf_solid : dist * dist / (area_light_area(l) * cos_l);
-    s.position = q;
-    s.normal = n;
+    s.pdf = pdf_solid > 0.0f ? pdf_solid : s.distance * s.distance / (area_light_area(l) * cos_l);
     return s;
 }
 
 /* The solid-angle density with which area_light_sample() from p returns the unit direction wi; 0
  * when the ray misses the light or meets its back. */
-SS_FN float area_light_pdf(const Light* l, float3 p, float3 wi) {
+/* Whether the ray from p along the unit direction wi meets the light's emitting side: then its
+ * distance *t and the cosine *cos_l there between -wi and the light's normal. */
+SS_FN bool area_light_ray_hit(const Light* l, float3 p, float3 wi, float* t, float* cos_l) {
     float3 n = area_light_normal(l);
-    float cos_l = -dot(n, wi);
+    *cos_l = -dot(n, wi);
     float height = dot(p - area_light_center(l), n);
-    if (!(cos_l > 0.0f) || !(height > 0.0f)) return 0.0f;
-    float t = height / cos_l;
-    if (!area_light_contains(l, p + wi * t)) return 0.0f;
+    if (!(*cos_l > 0.0f) || !(height > 0.0f)) return false;
+    *t = height / *cos_l;
+    return area_light_contains(l, p + wi * *t);
+}
+
+SS_FN float area_light_pdf(const Light* l, float3 p, float3 wi) {
+    float t, cos_l;
+    if (!area_light_ray_hit(l, p, wi, &t, &cos_l)) return 0.0f;
     if (l->type == LIGHT_RECT && rect_light_is_rectangle(l)) {
         SphericalRect r = spherical_rect_make(l, p);
         if (rect_light_uses_solid_angle(l, &r)) return 1.0f / r.solid_angle;

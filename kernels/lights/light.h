@@ -13,6 +13,9 @@
 #define LIGHT_POINT 2       /* a point light: a delta position, not geometry */
 #define LIGHT_RECT 3        /* a rect emitter: a parallelogram emitting on one side, intersected exactly */
 #define LIGHT_DISK 4        /* a disk emitter: emitting on the side of its normal, intersected exactly */
+/* No kind of its own: the bit (1 << LIGHT_IMAGE) of SCENE_LIGHT_TYPES (kernels/lights/light_selection.h)
+ * that says a scene has rects or disks showing an image (kernels/lights/image_emitter.h). */
+#define LIGHT_IMAGE 5
 
 /* The distance reported for a sample of the environment: far beyond any scene, yet finite, so a
  * shadow ray's maximum distance and comparisons stay well defined. */
@@ -22,7 +25,8 @@ typedef struct Light {
     float position[3]; /* sphere, rect, disk: its centre; point light: its position; environment: unused */
     float radius;      /* sphere, disk */
     float emission[3]; /* sphere, rect, disk: radiance Le, W m^-2 sr^-1 (a sphere's the same from both
-                          sides, a rect's and a disk's on their emitting side only);
+                          sides, a rect's and a disk's on their emitting side only; with an image,
+                          the RGB scale of its texels);
                           point light: intensity I, W sr^-1; environment: unused (the map holds it) */
     int type;          /* LIGHT_* */
     float edge_u[3];   /* rect: its edges U, V (the points centre + x U + y V, |x|, |y| <= 1/2,
@@ -30,7 +34,9 @@ typedef struct Light {
                           centre + x U + y V, x^2 + y^2 <= 1, emitting towards U x V) */
     int material_slot; /* sphere, rect, disk: its material slot in the compiled scene; -1 otherwise */
     float edge_v[3];
-    int pad;           /* to 64 bytes, a multiple of 16 */
+    int image;         /* rect, disk showing an image (kernels/lights/image_emitter.h): the offset of
+                          its header in the environment's alias buffer; 0: none (offset 0 is the
+                          environment's own table) */
 } Light;
 
 /* One sample of one light, seen from a reference point p. */

@@ -323,6 +323,12 @@ cli_bad_input(NAME bench_breakdown.bad_repeats EXPECT "${E}--repeats: must be in
 set(RENDER render scenes/metaballs.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.missing_scene ABSENT ${PNG} EXPECT "${E}${D}/absent_scene\\.json: cannot open"
               ARGS render ${D}/absent_scene.json --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.image_emitter_missing ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_image_missing\\.json: emitters\\[0\\]\\.image: ${D}/absent_screen\\.exr: no such file$"
+              ARGS render ${D}/scene_image_missing.json --size 16x16 --spp 1 -o ${PNG})
+cli_bad_input(NAME render.image_emitter_corrupt ABSENT ${PNG}
+              EXPECT "${E}${D}/scene_image_corrupt\\.json: emitters\\[0\\]\\.image: ${D}/corrupt\\.exr: cannot be read as an OpenEXR, Radiance HDR or PNG image$"
+              ARGS render ${D}/scene_image_corrupt.json --size 16x16 --spp 1 -o ${PNG})
 cli_bad_input(NAME render.unknown_integrator ABSENT ${PNG} EXPECT "${E}--integrator: unknown value \"ppm\" \\(pt, bdpt, lt, bdpt-cache, vcm\\)$"
               ARGS ${RENDER} --integrator ppm)
 cli_bad_input(NAME render.bdpt_max_depth ABSENT ${PNG} EXPECT "${E}--max-depth: bdpt takes at most 62 scattering events, got 63$"
@@ -602,7 +608,16 @@ foreach(sequence_case identity resume video)
                    ${CLI_SCRATCH}/sequence_${sequence_case} ${sequence_case})
   set_tests_properties(cli.render.sequence_${sequence_case} PROPERTIES LABELS cli TIMEOUT 120 SKIP_RETURN_CODE 77)
 endforeach()
+# the TV room's screen plays its PNG sequence: frame 2 at 4 frames/s (t = 0.5) shows the screen's frame 6
+add_test(NAME cli.render.sequence_screen
+         COMMAND ${VIEW_TEST_PYTHON} ${CLI_TEST_DIR}/sequence_test.py $<TARGET_FILE:dtoadq> ${PROJECT_SOURCE_DIR}/scenes/tv_room.json
+                 ${CLI_SCRATCH}/sequence_screen identity)
+set_tests_properties(cli.render.sequence_screen PROPERTIES LABELS cli TIMEOUT 120)
 set(SEQUENCE render tests/scene_data/animated.json --device host --size 8x8 --quiet)
+# every frame of the screen's sequence is checked before the first is rendered: it has 12 (0 to 11)
+cli_bad_input(NAME render.frames_screen_missing ABSENT ${CLI_SCRATCH}/tv_0010.exr
+              EXPECT "${E}scenes/tv_room\\.json: emitters\\[0\\]\\.image: scenes/tv_room/screen_0012\\.png: no such file: frame 12 of the sequence scenes/tv_room/screen_%04d\\.png at t = 1 s$"
+              ARGS render scenes/tv_room.json --device host --size 8x8 --quiet --frames 10:14 --fps 12 -o ${CLI_SCRATCH}/tv_%04d.exr)
 cli_bad_input(NAME render.frames_backwards EXPECT "${E}--frames: expected A:B, frame numbers with 0 <= A < B \\(frames A to B-1\\), got \"3:1\"$"
               ARGS ${SEQUENCE} --frames 3:1 --fps 24 -o ${CLI_SCRATCH}/s_%04d.exr)
 cli_bad_input(NAME render.frames_no_fps EXPECT "${E}--fps: --frames needs the frames per second of scene time, in .0, 1000.$"
