@@ -81,7 +81,10 @@ const std::vector<SceneCase> kScenes = {
     // (t up to 22); the same with sphere lights of the same power in place of its rects and disk
     // (0.11 to 0.29 %), so the march's bias, not the area lights'
     {"studio", 0.05, kMaxDepth, lab::render::LightSampling::mis, 0.003},
-    {"tv_room", 0.05},
+    // the lower left (the floor by the coffee table) has a heavy-tailed batch in its red channel
+    // (-4 %, t -1.04, detectable 22 %), the same with a grey Lambert ball and a floor twice as rough;
+    // every other region and channel can see 6 % or less
+    {"tv_room", 0.25},
     {"veach_mis", 0.20},
 };
 

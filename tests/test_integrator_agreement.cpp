@@ -12,7 +12,7 @@
 // can make every path the path tracer makes and the t-test can judge it: no environment (it has no
 // strategy for a camera ray that escapes), no delta surface seen from the camera (its one strategy,
 // t = 1, cannot connect the lens to a delta vertex: caustic, material_showcase), and no near-mirror
-// glossy surface seen from it (glossy_large_light, veach_mis, studio: its splats through such a lobe are so
+// glossy surface seen from it (glossy_large_light, veach_mis, studio, tv_room's floor: its splats through such a lobe are so
 // heavy-tailed that batch means of this budget are skewed, and Welch's test rejects with no bias).
 //
 // Each case states its power: per region and channel, the smallest relative difference its test
@@ -208,6 +208,9 @@ const std::string kSpheresUnderLight =
 //    the pairing does not cancel them, and at 16 x 16 they are smaller than a pixel: the path
 //    tracer's batch means of the top left region are heavy-tailed (0.487 from 32 x 64 spp against
 //    0.556 at 65,536 spp). More samples buy little there: 33 % at 64 per batch, 21 % at 192 and at 256.
+//  - tv_room: lit by its screen alone, whose edges and texels the path tracer's batches jitter
+//    across, paired with bdpt's camera rays but not with its light subpaths (12.4 %, bdpt-cache
+//    13.3 %; the light tracer 38.8 %, through the glossy floor).
 //  - material_showcase, without its point light: the path tracer cannot sample the point light's
 //    caustic under the smooth glass ball (light - glass - floor - eye: next-event estimation from
 //    the floor is blocked by the glass, and no BSDF sample hits a point), which BDPT's light
@@ -227,7 +230,7 @@ std::vector<Case> own_light_cases() {
         {"metaballs", "scenes/metaballs.json", "", 6, 32, 32, 64, 0.10},
         {"veach_mis", "scenes/veach_mis.json", "", 6, 32, 64, 0, 0.35},
         {"studio", "scenes/studio.json", "", 6, 32, 32, 0, 0.10},
-        {"tv_room", "scenes/tv_room.json", "", 6, 32, 32, 64, 0.10},
+        {"tv_room", "scenes/tv_room.json", "", 6, 32, 32, 0, 0.15},
     };
 }
 
