@@ -117,6 +117,7 @@ void Renderer::rebuild_lights() {
 
 void Renderer::rebind_buffers() {
     const ibl::Environment& env = bound_environment();
+    const bool had_extras = !texels_with_extras_.empty();  // else the bound buffers are the environment's, unchanged
     texels_with_extras_.clear();
     alias_with_images_.clear();
     bool images = false;
@@ -129,7 +130,7 @@ void Renderer::rebind_buffers() {
         alias_with_images_ = env.alias();
         bind_emitter_images(emitter_images_, &lights_, &texels_with_extras_, &alias_with_images_);
     }
-    ++texels_version_;
+    if (had_extras || !texels_with_extras_.empty()) ++texels_version_;
 }
 
 scene::CompileOptions Renderer::compile_options() const {

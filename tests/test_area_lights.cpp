@@ -244,8 +244,12 @@ constexpr int kImageW = 8, kImageH = 4;
 double rect_texel(int x, int y) { return y == 1 ? 0.0 : (x == 5 && y == 2 ? 20.0 : 0.5 + 0.25 * x); }
 constexpr double kDiskTexels[2] = {1.0, 3.0};
 
+std::filesystem::path emitter_test_folder() {
+    return std::filesystem::temp_directory_path() / ("dtoadq-image-emitters-" + std::to_string(::getpid()));
+}
+
 std::string write_emitter_test_image(const std::string& name, int width, int height, const std::function<double(int, int)>& value) {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("dtoadq-image-emitters-" + std::to_string(::getpid()));
+    const std::filesystem::path folder = emitter_test_folder();
     std::filesystem::create_directories(folder);
     lab::film::ImageRgb image(width, height);
     for (int y = 0; y < height; ++y)
@@ -299,6 +303,13 @@ double pixel_mean(const std::vector<double>& v) {
 }
 
 struct ImageScenes {
+    ImageScenes() = default;
+    ImageScenes(const ImageScenes&) = delete;
+    ImageScenes& operator=(const ImageScenes&) = delete;
+    ~ImageScenes() {  // the renderers have read the images by now
+        std::error_code ec;
+        std::filesystem::remove_all(emitter_test_folder(), ec);
+    }
     std::string rect_image = write_emitter_test_image("rect.exr", kImageW, kImageH, rect_texel);
     std::string disk_image = write_emitter_test_image("disk.exr", 2, 1, [](int x, int) { return kDiskTexels[x]; });
     std::string scene(bool rect) const { return plane_view_scene(rect, rect_image, disk_image); }

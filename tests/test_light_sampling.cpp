@@ -901,4 +901,6 @@ TEST_CASE("lights: an emitter's image is read as environments are, and bad image
     // (common/image_claim.hpp), and sizes past the limit by their own line
     CHECK_THROWS_WITH(lab::render::emitter_image_from_pixels("big.exr", lab::render::kMaxEmitterImageSide + 1, 1, {}),
                       "big.exr: size: 4097 x 1 (an emitter's image has 1 to 4096 texels a side)");
+    std::error_code ec;
+    std::filesystem::remove_all(std::filesystem::path(png).parent_path(), ec);
 }
