@@ -33,7 +33,7 @@ void add_render_options(CLI::App& cmd, RenderJobOptions* o) {
                    "Blur of the background camera rays see, degrees in [0, 90] (a spherical Gaussian's sigma; 0: sharp); the lighting is "
                    "unchanged (default: the scene's, else 0)");
     cmd.add_option("--scene-time", o->scene_time,
-                   "The scene time in seconds: where the scene's camera and environment keyframes are (docs/scenes.md, Time)")
+                   "The scene time in seconds: where the scene's camera and environment keyframes are, and the frame an emitter's image sequence or video shows (docs/scenes.md, Time)")
         ->capture_default_str();
     cmd.add_option("--size", o->size, "Image size WxH")->capture_default_str();
     cmd.add_option("--light-selection", o->light_selection, "How a light is chosen for next-event estimation: power or uniform")
