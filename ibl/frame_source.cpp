@@ -1,5 +1,6 @@
 #include "ibl/frame_source.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "common/image_open.hpp"
 #include "common/input_error.hpp"
 #include "common/message_number.hpp"
+#include "ibl/radiance_image.hpp"
 
 namespace lab::ibl {
 
@@ -37,7 +39,7 @@ double rational_value(const codec::Attribute& a) {
 
 bool is_video_path(const std::string& path) {
     const std::string ext = lowercase_extension(path);
-    return ext == ".mp4" || ext == ".mov" || ext == ".mkv" || ext == ".avi" || ext == ".webm";
+    return std::any_of(kVideos.begin(), kVideos.end(), [&](const RadianceFormat& f) { return f.extension == ext; });
 }
 
 FrameSource frame_source(const std::string& path, std::optional<double> fps, const std::string& scene_file, const std::string& image_field,

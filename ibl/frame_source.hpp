@@ -18,7 +18,8 @@ struct FrameSource {
     long long frames = 0;  // video: how many it holds (open_video); sequence and still: 0 (a sequence ends at its first missing file)
 };
 
-// Whether `path` names a video file by its extension (.mp4, .mov, .mkv, .avi, .webm).
+// Whether `path` names a video file by its extension: one of ibl/radiance_image.hpp's kVideos
+// (.mp4, .mov, .mkv, .avi, .webm).
 bool is_video_path(const std::string& path);
 
 // What `path` names, for the scene file `scene_file`'s fields `image_field` and `fps_field` (the

@@ -56,8 +56,11 @@ EmitterImage emitter_image_from_pixels(const std::string& path, int width, int h
     return image;
 }
 
-std::string emitter_frame_file(const ibl::FrameSource& source, double time) {
-    const long long frame = ibl::frame_at_time(source, time);
+namespace {
+
+// The file of frame `frame`, shown at scene time `time` (for the messages), checked as
+// emitter_frame_file says.
+std::string checked_frame_file(const ibl::FrameSource& source, long long frame, double time) {
     const std::string path = ibl::frame_file(source, frame);
     const std::string at = " at t = " + message_number(time) + " s";
     std::error_code ec;
@@ -69,12 +72,29 @@ std::string emitter_frame_file(const ibl::FrameSource& source, double time) {
     return path;
 }
 
+// f(), its lab::InputError (a line naming an image file) prefixed with the scene file and the
+// emitter's "image" field.
+template <class F>
+auto naming_emitter(const std::string& scene_file, const scene::Emitter& e, F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const InputError& error) {
+        throw InputError(scene_file, e.image_field, error.what());
+    }
+}
+
+}  // namespace
+
+std::string emitter_frame_file(const ibl::FrameSource& source, double time) {
+    return checked_frame_file(source, ibl::frame_at_time(source, time), time);
+}
+
 EmitterImage load_emitter_image(const ibl::FrameSource& source, double time) {
-    const std::string path = emitter_frame_file(source, time);
+    const long long frame = ibl::frame_at_time(source, time);
+    const std::string path = checked_frame_file(source, frame, time);
     const bool video = source.kind == ibl::FrameSource::Kind::video;
     ibl::RadianceImage read = ibl::read_radiance_image(path, video ? ibl::kVideos : std::vector<ibl::RadianceFormat>{ibl::kOpenExr, ibl::kRadianceHdr, ibl::kPng},
-                                                       [&](int width, int height) { check_size(path, width, height); },
-                                                       video ? int(ibl::frame_at_time(source, time)) : 0);
+                                                       [&](int width, int height) { check_size(path, width, height); }, video ? int(frame) : 0);
     const size_t pixels = size_t(read.width) * size_t(read.height);
     // a PNG's and a video's 8-bit values are display-encoded
     const bool grey = read.channel_names.size() == 1, srgb = read.format == ibl::kPng.format || video;
@@ -90,11 +110,7 @@ EmitterImage load_emitter_image(const ibl::FrameSource& source, double time) {
 ibl::FrameSource emitter_frame_source(const std::string& scene_file, const scene::Emitter& e) {
     // its fps was checked when the scene was read
     ibl::FrameSource source = ibl::frame_source(e.image, e.image_fps, scene_file, e.image_field, e.image_fps_field);
-    try {
-        if (source.kind == ibl::FrameSource::Kind::video) ibl::open_video(&source);
-    } catch (const InputError& error) {
-        throw InputError(scene_file, e.image_field, error.what());
-    }
+    if (source.kind == ibl::FrameSource::Kind::video) naming_emitter(scene_file, e, [&] { ibl::open_video(&source); });
     return source;
 }
 
@@ -102,13 +118,7 @@ void check_emitter_frames(const scene::Scene& scene, int64_t first, int64_t end,
     for (const scene::Emitter& e : scene.emitters) {
         if (e.image.empty()) continue;
         const ibl::FrameSource source = emitter_frame_source(scene.file, e);
-        for (int64_t k = first; k < end; ++k) {
-            try {
-                emitter_frame_file(source, double(k) / fps);
-            } catch (const InputError& error) {
-                throw InputError(scene.file, e.image_field, error.what());
-            }
-        }
+        for (int64_t k = first; k < end; ++k) naming_emitter(scene.file, e, [&] { return emitter_frame_file(source, double(k) / fps); });
     }
 }
 
@@ -118,11 +128,7 @@ std::vector<std::optional<EmitterImage>> load_emitter_images(const scene::Compil
         images.emplace_back();
         if (e.image.empty()) continue;
         const ibl::FrameSource source = emitter_frame_source(scene.file, e);
-        try {
-            images.back() = load_emitter_image(source, time);
-        } catch (const InputError& error) {
-            throw InputError(scene.file, e.image_field, error.what());
-        }
+        images.back() = naming_emitter(scene.file, e, [&] { return load_emitter_image(source, time); });
     }
     return images;
 }

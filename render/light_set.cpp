@@ -28,7 +28,8 @@ double sphere_light_power(const kernel::Light& light) {
     return kPi * luminance_of(light.emission) * 4.0 * kPi * double(light.radius) * double(light.radius);
 }
 
-double area_light_power(const kernel::Light& light) { return kPi * luminance_of(light.emission) * double(kernel::area_light_area(&light)); }
+// a constant rect or disk is an image of one texel of 1
+double area_light_power(const kernel::Light& light) { return image_light_power(light, {1.0, 1.0, 1.0}); }
 
 double image_light_power(const kernel::Light& light, const std::array<double, 3>& image_mean_rgb) {
     const double r = double(light.emission[0]) * image_mean_rgb[0], g = double(light.emission[1]) * image_mean_rgb[1],
