@@ -179,8 +179,6 @@ SS_FN LightSample area_light_sample(const Light* l, float3 p, float2 u) {
     return s;
 }
 
-/* The solid-angle density with which area_light_sample() from p returns the unit direction wi; 0
- * when the ray misses the light or meets its back. */
 /* Whether the ray from p along the unit direction wi meets the light's emitting side: then its
  * distance *t and the cosine *cos_l there between -wi and the light's normal. */
 SS_FN bool area_light_ray_hit(const Light* l, float3 p, float3 wi, float* t, float* cos_l) {
@@ -192,6 +190,8 @@ SS_FN bool area_light_ray_hit(const Light* l, float3 p, float3 wi, float* t, flo
     return area_light_contains(l, p + wi * *t);
 }
 
+/* The solid-angle density with which area_light_sample() from p returns the unit direction wi; 0
+ * when the ray misses the light or meets its back. */
 SS_FN float area_light_pdf(const Light* l, float3 p, float3 wi) {
     float t, cos_l;
     if (!area_light_ray_hit(l, p, wi, &t, &cos_l)) return 0.0f;
