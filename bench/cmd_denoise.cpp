@@ -38,7 +38,7 @@ struct BenchDenoiseCommand {
     std::vector<int> spps{1, 4, 16};
     int reference_spp = 1024;
     int filter_repeats = 5;
-    int passes = film::DenoiseOptions{}.passes;
+    film::DenoiseOptions filter;
     std::string chart;
     std::string csv;
 };
@@ -64,7 +64,9 @@ void run_bench_denoise(const BenchDenoiseCommand& c) {
     if (c.reference_spp < 2 * *std::max_element(c.spps.begin(), c.spps.end()) || c.reference_spp > 1 << 20)
         throw InputError("--reference-spp", std::to_string(c.reference_spp), "must be at least twice the largest --spp and at most 2^20");
     if (c.filter_repeats < 1 || c.filter_repeats > 1000) throw InputError("--filter-repeats", std::to_string(c.filter_repeats), "must be in [1, 1000]");
-    if (c.passes < 1 || c.passes > 8) throw InputError("--passes", std::to_string(c.passes), "must be in [1, 8]");
+    if (c.filter.passes < 1 || c.filter.passes > 8) throw InputError("--passes", std::to_string(c.filter.passes), "must be in [1, 8]");
+    if (!(c.filter.sigma_luminance > 0.0f) || !(c.filter.sigma_normal >= 0.0f) || !(c.filter.sigma_depth > 0.0f))
+        throw InputError("--sigma-luminance", "", "the filter's sigmas must be positive (the normal's may be 0)");
     if (!c.chart.empty()) film::check_output_path(c.chart);
 
     std::optional<opencl::Runtime> runtime;
@@ -74,7 +76,7 @@ void run_bench_denoise(const BenchDenoiseCommand& c) {
         return std::make_unique<render::HostRenderer>(input);
     };
     std::printf("bench denoise: the test model at %s, reference %d spp; filter of %d passes on %s\n\n", c.job.size.c_str(), c.reference_spp,
-                c.passes, runtime ? runtime->device().description().c_str() : "the host");
+                c.filter.passes, runtime ? runtime->device().description().c_str() : "the host");
     std::printf("%-12s %-18s %5s %10s %10s %7s %10s %9s %9s %9s %8s\n", "map", "material", "spp", "raw RMSE", "denoised", "ratio",
                 "ratio w/o", "filter", "passes", "1 spp", "filter /");
     std::printf("%-12s %-18s %5s %10s %10s %7s %10s %9s %9s %9s %8s\n", "", "", "", "", "", "", "ref noise", "ms", "ms", "ms", "1 spp");
@@ -106,8 +108,7 @@ void run_bench_denoise(const BenchDenoiseCommand& c) {
                 // the host, the passes where the render runs, remodulation on the host
                 film::ImageRgb denoised;
                 std::vector<double> filter_times, pass_times;
-                film::DenoiseOptions denoise_options;
-                denoise_options.passes = c.passes;
+                const film::DenoiseOptions& denoise_options = c.filter;
                 const std::unique_ptr<render::DisplayFilter> filter = renderer->display_filter();
                 filter->prepare();  // its program: the times below are the filter alone
                 for (int i = 0; i < c.filter_repeats; ++i) {
@@ -171,7 +172,10 @@ void register_bench_denoise(CLI::App& bench) {
     cmd->add_option("--spp", c->spps, "Sample counts of the raw images")->delimiter(',')->capture_default_str();
     cmd->add_option("--reference-spp", c->reference_spp, "Samples per pixel of the reference (two halves)")->capture_default_str();
     cmd->add_option("--filter-repeats", c->filter_repeats, "Times each filter runs; its median time is given")->capture_default_str();
-    cmd->add_option("--passes", c->passes, "The filter's passes (widths 1, 2, 4, ...: fewer cost less and reach less far)")->capture_default_str();
+    cmd->add_option("--passes", c->filter.passes, "The filter's passes (widths 1, 2, 4, ...: fewer cost less and reach less far)")->capture_default_str();
+    cmd->add_option("--sigma-luminance", c->filter.sigma_luminance, "The filter's luminance tolerance, in standard deviations")->capture_default_str();
+    cmd->add_option("--sigma-normal", c->filter.sigma_normal, "How fast the filter's normal weight falls: exp(-sigma (1 - cos))")->capture_default_str();
+    cmd->add_option("--sigma-depth", c->filter.sigma_depth, "The filter's tolerated relative depth change across the image's width")->capture_default_str();
     cmd->add_option("-o,--chart", c->chart, "Chart (PNG) of relative RMSE against time, raw and denoised");
     cmd->add_option("--csv", c->csv, "The chart's data as CSV");
     cmd->callback([c] { run_bench_denoise(*c); });

@@ -25,38 +25,57 @@ float demodulator(float albedo) { return albedo > kMinAlbedo ? albedo : 1.0f; }
 
 const float* as_floats(const std::vector<std::array<float, 4>>& v) { return v.front().data(); }
 
-// SVGF's spatial estimate (demodulate's comment): 7 x 7, the same surface only.
+// SVGF's spatial estimate (demodulate's comment): the sample variance of the luminance over the
+// 7 x 7 pixels around each pixel that show a surface. The counts and sums are box sums, a row's
+// then a column's, kept as running sums: a few adds a pixel whatever the window.
 void estimate_variance(AtrousBuffers* b) {
-    const int radius = 3;
-    const float same_normal = 0.906f;  // cos 25 degrees
-    const float same_depth = 0.05f;
-    std::vector<float> variance(b->illumination.size(), 0.0f);
-    for (int y = 0; y < b->height; ++y)
-        for (int x = 0; x < b->width; ++x) {
-            const size_t p = size_t(y) * size_t(b->width) + size_t(x);
-            const std::array<float, 4>& gp = b->guide[p];
-            if (gp[3] <= 0.0f) continue;
-            double sum = 0.0, sum_sq = 0.0;
-            int count = 0;
-            for (int j = -radius; j <= radius; ++j)
-                for (int i = -radius; i <= radius; ++i) {
-                    const int qx = x + i, qy = y + j;
-                    if (qx < 0 || qy < 0 || qx >= b->width || qy >= b->height) continue;
-                    const size_t q = size_t(qy) * size_t(b->width) + size_t(qx);
-                    const std::array<float, 4>& gq = b->guide[q];
-                    if (gq[3] <= 0.0f || gp[0] * gq[0] + gp[1] * gq[1] + gp[2] * gq[2] < same_normal ||
-                        std::fabs(gq[3] - gp[3]) > same_depth * gp[3])
-                        continue;
-                    const std::array<float, 4>& c = b->illumination[q];
-                    const double l = atrous::atrous_luminance(c[0], c[1], c[2]);
-                    sum += l;
-                    sum_sq += l * l;
-                    ++count;
-                }
-            const double mean = sum / count;  // count >= 1: the pixel itself
-            variance[p] = count > 1 ? float(std::max(0.0, (sum_sq / count - mean * mean) * count / (count - 1))) : 0.0f;
+    const int radius = 3, w = b->width, h = b->height;
+    const size_t n = b->illumination.size();
+    // per pixel on a surface the moments 1, l, l^2; summed along each row, then down each column
+    std::vector<double> moments(3 * n, 0.0), rows(3 * n);
+    for (size_t p = 0; p < n; ++p)
+        if (b->guide[p][3] > 0.0f) {
+            const std::array<float, 4>& c = b->illumination[p];
+            const double l = atrous::atrous_luminance(c[0], c[1], c[2]);
+            moments[3 * p] = 1.0;
+            moments[3 * p + 1] = l;
+            moments[3 * p + 2] = l * l;
         }
-    for (size_t p = 0; p < variance.size(); ++p) b->illumination[p][3] = variance[p];
+    // along each row: out[x] = the sum of in[k] over |k - x| <= radius within the row
+    for (int y = 0; y < h; ++y) {
+        const double* in = moments.data() + 3 * size_t(y) * size_t(w);
+        double* out = rows.data() + 3 * size_t(y) * size_t(w);
+        double sum[3] = {0.0, 0.0, 0.0};
+        for (int x = 0; x < std::min(radius, w); ++x)
+            for (int m = 0; m < 3; ++m) sum[m] += in[3 * x + m];
+        for (int x = 0; x < w; ++x) {
+            for (int m = 0; m < 3; ++m) {
+                if (x + radius < w) sum[m] += in[3 * (x + radius) + m];
+                if (x - radius - 1 >= 0) sum[m] -= in[3 * (x - radius - 1) + m];
+                out[3 * x + m] = sum[m];
+            }
+        }
+    }
+    // down each column, a row at a time so that the memory is read in order: the rows' sums into moments
+    const size_t row_length = 3 * size_t(w);
+    std::vector<double> column(row_length, 0.0);
+    const auto add_row = [&](int y, double sign) {
+        const double* r = rows.data() + size_t(y) * row_length;
+        for (size_t k = 0; k < row_length; ++k) column[k] += sign * r[k];
+    };
+    for (int y = 0; y < std::min(radius, h); ++y) add_row(y, 1.0);
+    for (int y = 0; y < h; ++y) {
+        if (y + radius < h) add_row(y + radius, 1.0);
+        if (y - radius - 1 >= 0) add_row(y - radius - 1, -1.0);
+        std::copy(column.begin(), column.end(), moments.begin() + std::ptrdiff_t(size_t(y) * row_length));
+    }
+    for (size_t p = 0; p < n; ++p) {
+        // the count is whole, so its running sum is exact; the moments' cancellation is a double's
+        const double count = std::round(moments[3 * p]), mean = count > 0.0 ? moments[3 * p + 1] / count : 0.0;
+        b->illumination[p][3] = b->guide[p][3] > 0.0f && count > 1.0
+                                    ? float(std::max(0.0, (moments[3 * p + 2] / count - mean * mean) * count / (count - 1.0)))
+                                    : 0.0f;
+    }
 }
 
 }  // namespace
@@ -103,10 +122,9 @@ bool atrous_passes(AtrousBuffers* b, const DenoiseOptions& options, const Filter
         const atrous::AtrousPass pass =
             atrous::atrous_pass(b->width, b->height, 1 << i, options.sigma_normal, options.sigma_depth, options.sigma_luminance);
         for (int y = 0; y < b->height; ++y)
-            for (int x = 0; x < b->width; ++x) {
+            for (int x = 0; x < b->width; ++x)
                 atrous::atrous_pixel(&pass, as_floats(b->illumination), as_floats(b->guide), x, y,
                                      next[size_t(y) * size_t(b->width) + size_t(x)].data());
-            }
         b->illumination.swap(next);
     }
     return true;

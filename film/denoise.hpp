@@ -22,15 +22,16 @@ struct DenoiseGuide {
 };
 
 struct DenoiseOptions {
-    int passes = 5;                  // widths 1, 2, 4, 8, 16: a footprint of 125 pixels
-    float sigma_normal = 128.0f;
-    float sigma_depth = 1.0f;
+    int passes = 4;                  // widths 1, 2, 4, 8 of the 3 x 3 taps: a footprint of 31 pixels
+    float sigma_normal = 16.0f;
+    float sigma_depth = 2.0f;
     float sigma_luminance = 4.0f;
 };
 
 // The filter's working buffers: per pixel the illumination (radiance / albedo) with the variance of
 // its luminance, and the guide (normal, depth), as float4 each: the layout of film/denoise_atrous.h,
-// the same on the host (glm::vec4) and in an OpenCL buffer.
+// the same on the host (glm::vec4) and in an OpenCL buffer. (Four planes instead, one 8-float load
+// per channel on the device's lanes, were slower: 24 streams of rows per pass against 6.)
 struct AtrousBuffers {
     int width = 0, height = 0;
     std::vector<std::array<float, 4>> illumination, guide;

@@ -4,8 +4,9 @@
  * the host builds it with -DSDF_LANES=8 (kernels/host/denoise_device.cpp).
  * The host runs the same function a pixel at a time (film/denoise.cpp). */
 
-/* No fused multiply-add, as the host build (x86-64 baseline) rounds every product. */
-#pragma OPENCL FP_CONTRACT OFF
+/* Multiply-adds fused: a pass about 10 % faster; the host build (x86-64 baseline) rounds every
+ * product, and the two differ by under 1e-6 after the passes (tests/test_denoise_opencl.cpp). */
+#pragma OPENCL FP_CONTRACT ON
 
 #include "film/denoise_atrous.h"
 

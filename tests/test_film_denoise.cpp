@@ -9,8 +9,15 @@
 #include <vector>
 
 #include "film/denoise.hpp"
+#include "single_source/host_vocabulary.hpp"
 
 #include "tests/worst_difference.hpp"
+
+// The pass's single-source functions, for its exponential.
+namespace atrous_functions {
+using namespace single_source;
+#include "film/denoise_atrous.h"
+}  // namespace atrous_functions
 
 namespace {
 
@@ -64,17 +71,17 @@ double rmse(const lab::film::ImageRgb& a, const lab::film::ImageRgb& b, Inside i
     return std::sqrt(sum / n);
 }
 
-// The a-trous filter with its edges switched off is a linear filter: the B3 spline [1 4 6 4 1] / 16
+// The a-trous filter with its edges switched off is a linear filter: the linear spline [1 2 1] / 4
 // dilated by 1, 2, 4, ... and convolved, separable. Noise of variance s^2 comes out of it with
 // variance s^2 sum(k^2): the best any edge-stopping weighting can do.
 double linear_filter_noise_gain(int passes) {
     std::vector<double> kernel = {1.0};
     for (int i = 0; i < passes; ++i) {
         const int step = 1 << i;
-        const double b3[5] = {1.0 / 16, 4.0 / 16, 6.0 / 16, 4.0 / 16, 1.0 / 16};
-        std::vector<double> next(kernel.size() + size_t(4 * step), 0.0);
+        const double spline[3] = {1.0 / 4, 2.0 / 4, 1.0 / 4};
+        std::vector<double> next(kernel.size() + size_t(2 * step), 0.0);
         for (size_t k = 0; k < kernel.size(); ++k)
-            for (int t = 0; t < 5; ++t) next[k + size_t(t * step)] += kernel[k] * b3[t];
+            for (int t = 0; t < 3; ++t) next[k + size_t(t * step)] += kernel[k] * spline[t];
         kernel = next;
     }
     double sum_sq = 0.0;
@@ -102,16 +109,19 @@ TEST_CASE("Denoiser: on one flat surface it removes the noise the filter's footp
     const int size = 160;
     const float sigma = 0.05f;
     Synthetic s = flat_surface(size, sigma, 1);
-    const lab::film::ImageRgb denoised = lab::film::denoise(s.noisy, s.guide);
-    // Away from the borders (where the footprint is cut), far enough that the widest pass's taps
-    // all land inside: 2 (2^0 + ... + 2^4) = 62 pixels.
-    auto centre = [&](int x, int y) { return x >= 62 && y >= 62 && x < size - 62 && y < size - 62; };
+    const lab::film::DenoiseOptions options;
+    const lab::film::ImageRgb denoised = lab::film::denoise(s.noisy, s.guide, options);
+    // Away from the borders (where the footprint is cut), far enough that every pass's taps all
+    // land inside: 2^0 + ... + 2^(passes - 1) pixels.
+    const int margin = (1 << options.passes) - 1;
+    auto centre = [&](int x, int y) { return x >= margin && y >= margin && x < size - margin && y < size - margin; };
     const double raw = rmse(s.noisy, s.truth, centre), filtered = rmse(denoised, s.truth, centre);
     // No weighting of the same taps does better on white noise than the linear filter (its gain
-    // is the floor, less a 10 % allowance for the sample's own spread over 36 x 36 pixels); the
-    // luminance weight, exponential in the neighbours' noisy differences, gives up part of it. At
-    // least a tenfold cut is asked (the issue's target is half at 4 spp).
-    const double floor = std::sqrt(linear_filter_noise_gain(5));
+    // is the floor, less a 10 % allowance for the sample's own spread over the centre's pixels,
+    // which the filter correlates over its footprint); the luminance weight, exponential in the
+    // neighbours' noisy differences, gives up part of it. At least a tenfold cut is asked (the
+    // issue's target is half at 4 spp).
+    const double floor = std::sqrt(linear_filter_noise_gain(options.passes));
     INFO("raw " << raw << ", denoised " << filtered << ", linear filter's floor " << raw * floor);
     CHECK(filtered >= 0.9 * raw * floor);
     CHECK(filtered <= 0.1 * raw);
@@ -123,7 +133,7 @@ TEST_CASE("Denoiser: without a variance it estimates each pixel's from the image
     Synthetic s = flat_surface(size, sigma, 3);
     s.guide.variance.clear();
     // The illumination's noise is sigma (the render's, divided by the albedo it was multiplied by):
-    // its luminance's variance sigma^2. The estimate from 49 pixels is unbiased; over the image's
+    // its luminance's variance sigma^2. The estimate from 49 pixels (box sums) is unbiased; over the image's
     // 154^2 interior pixels its mean is within 5 % (the windows overlap, so fewer than that many are
     // independent: about 154^2 / 49 windows of relative spread sqrt(2 / 48) = 0.2 give 0.3 %).
     const lab::film::AtrousBuffers b = lab::film::demodulate(s.noisy, s.guide);
@@ -137,9 +147,53 @@ TEST_CASE("Denoiser: without a variance it estimates each pixel's from the image
     const double estimate = sum / n;
     INFO("mean estimated variance " << estimate << " against " << sigma * sigma);
     CHECK(estimate == Approx(double(sigma) * sigma).epsilon(0.05));
-    auto centre = [&](int x, int y) { return x >= 62 && y >= 62 && x < size - 62 && y < size - 62; };
+    const int margin = (1 << lab::film::DenoiseOptions{}.passes) - 1;
+    auto centre = [&](int x, int y) { return x >= margin && y >= margin && x < size - margin && y < size - margin; };
     const lab::film::ImageRgb denoised = lab::film::denoise(s.noisy, s.guide);
     CHECK(rmse(denoised, s.truth, centre) <= 0.1 * rmse(s.noisy, s.truth, centre));
+}
+
+TEST_CASE("Denoiser: its own variance estimate spans 7 x 7 pixels", "[denoise]") {
+    // One surface whose light steps by delta at x = 80 (and, in a second set of images, at y = 80:
+    // the sums along rows and down columns are checked apart): a window of N = 49 pixels of which k see the
+    // other side has the expected sample variance sigma^2 + delta^2 k (N - k) / (N (N - 1)), k = 7 m
+    // for the m of its seven columns across the step (m = 0 from four columns away). Each m's two
+    // columns are pooled over 154 rows and four images per direction: the sigma^2 part's spread over some 176
+    // independent windows is sqrt(2 / 48 / 176) = 1.5 %, so 5 % tells a window of another size or
+    // place (a radius of 2 moves m = 1 to the sigma^2 alone, a third of it).
+    const int size = 160, step_at = 80;
+    const float sigma = 0.05f, delta = 0.2f;
+    for (bool along_y : {false, true}) {
+        // per m: the sum of the estimates and their count
+        double sums[4] = {0.0, 0.0, 0.0, 0.0};
+        int counts[4] = {0, 0, 0, 0};
+        for (uint32_t seed = 4; seed < 8; ++seed) {
+            Synthetic s = make_synthetic(size, sigma, seed, [&](int x, int y, float* radiance, float* albedo, float* normal, float* depth) {
+                for (int c = 0; c < 3; ++c) {
+                    albedo[c] = 0.5f;
+                    radiance[c] = 0.5f * ((along_y ? y : x) < step_at ? 1.0f : 1.0f + delta);
+                    normal[c] = kUp[c];
+                }
+                *depth = 5.0f;
+            });
+            s.guide.variance.clear();
+            const lab::film::AtrousBuffers b = lab::film::demodulate(s.noisy, s.guide);
+            // the lines (columns, or rows) whose window has m lines across the step: step_at - 4 + m
+            // and step_at + 3 - m
+            for (int m = 0; m <= 3; ++m)
+                for (int line : {step_at - 4 + m, step_at + 3 - m})
+                    for (int along = 3; along < size - 3; ++along) {
+                        sums[m] += b.illumination[along_y ? size_t(line * size + along) : size_t(along * size + line)][3];
+                        ++counts[m];
+                    }
+        }
+        for (int m = 0; m <= 3; ++m) {
+            const double k = 7.0 * m, N = 49.0;
+            const double expected = double(sigma) * sigma + double(delta) * delta * k * (N - k) / (N * (N - 1.0));
+            INFO((along_y ? "rows " : "columns ") << m << " across: mean estimate " << sums[m] / counts[m] << " against " << expected);
+            CHECK(sums[m] / counts[m] == Approx(expected).epsilon(0.05));
+        }
+    }
 }
 
 TEST_CASE("Denoiser: albedo, normal and depth edges and the background stay sharp", "[denoise]") {
@@ -173,10 +227,14 @@ TEST_CASE("Denoiser: albedo, normal and depth edges and the background stay shar
     for (size_t p = 0; p < s.guide.variance.size(); ++p)
         if (s.guide.depth[p] > 0.0f) s.guide.variance[p] = sigma * sigma * s.guide.albedo.rgb[3 * p] * s.guide.albedo.rgb[3 * p];
     const lab::film::ImageRgb denoised = lab::film::denoise(s.noisy, s.guide);
-    // Each pixel is its own side's truth to 1e-3 of the illumination: the weights that stop the
-    // filter at these edges are below exp(-9) (depth: |5 - 20| against 5 x 32 / 96 at the widest
-    // tap) or 0 (normals at right angles), and float rounding is 1e-6; mixing across any edge moves
-    // the pixels beside it by about half its step, 0.1 to 0.3.
+    // Each pixel is its own side's truth to 1e-3 of the illumination. Across the normal edge the
+    // weight is 0 (normals at right angles). Across the depth edge the largest weight is seen from
+    // the far side at the widest pass: exp(-|5 - 20| / (sigma_depth 20 step / 96)) = exp(-4.5) at
+    // step 8, exp(-9) at step 4. There the three taps across the edge hold 1/4 of the spline's
+    // weight against 3/4 on the pixel's own side (weight 1: noise-free, one depth and normal), and
+    // the light's step of 0.2 has a luminance weight of exp(-0.2 / (4 x 0.2)) = 0.78, so the pass
+    // moves the pixel by at most 0.2 x 0.78 exp(-4.5) (1/4) / (3/4) = 6e-4; float rounding is 1e-6.
+    // Mixing across any edge moves the pixels beside it by about half its step, 0.1 to 0.3.
     auto check_band = [&](const char* edge, int x0, int x1, int y0, int y1) {
         double worst = 0.0;
         for (int y = y0; y < y1; ++y)
@@ -191,6 +249,23 @@ TEST_CASE("Denoiser: albedo, normal and depth edges and the background stay shar
     // The background is left exactly as it was.
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < 4; ++x) REQUIRE(denoised.at(x, y) == s.noisy.at(x, y));
+}
+
+TEST_CASE("Denoiser: its weights' exponential is e^-x to its series' remainder", "[denoise]") {
+    // e^-x = 2^-n e^f with |f| <= ln(2) / 2, and e^f's series stops at f^4: the remainder is at
+    // most |f|^5 / 5! e^|f|, against e^f >= e^-|f|: a relative (ln(2) / 2)^5 / 120 x 2 = 8.4e-5 (a
+    // series one power shorter: 6e-4), and float rounding, a few 1e-7.
+    const double bound = std::pow(0.5 * std::log(2.0), 5.0) / 120.0 * 2.0 + 1e-6;
+    double worst = 0.0;
+    for (double x = -0.3; x < 86.5; x += 1e-3) {
+        const double exact = std::exp(-double(float(x)));
+        worst = worse_of(worst, std::fabs(double(atrous_functions::atrous_exp_neg(float(x))) - exact) / exact);
+    }
+    INFO("largest relative error " << worst << " against " << bound);
+    CHECK(worst <= bound);
+    // Past e^-86.6 = 2^-125 the weight stays there: 0 beside any other tap's.
+    CHECK(atrous_functions::atrous_exp_neg(1000.0f) == Approx(std::ldexp(1.0, -125)).epsilon(bound));
+    CHECK(atrous_functions::atrous_exp_neg(INFINITY) == Approx(std::ldexp(1.0, -125)).epsilon(bound));
 }
 
 TEST_CASE("Denoiser: a guide of another size is refused", "[denoise]") {
