@@ -22,7 +22,7 @@
 #include "bench/brdf_model_speed.hpp"
 #include "bench/brdf_workload.hpp"
 #include "kernels/host/brdf_batch.hpp"
-#include "validation/parallel_for.hpp"
+#include "common/parallel_for.hpp"
 #include "validation/sampling_efficiency.hpp"
 
 namespace lab::cli {
@@ -57,7 +57,7 @@ double cpp_rate(const Workload& w, Operation op, int threads, int repeats) {
     long n = long(w.index.size());
     double seconds = best_seconds(repeats, [&] {
         std::vector<float> partial(size_t(threads), 0.0f);
-        validation::parallel_for(threads, threads, [&](int t) {
+        lab::parallel_for(threads, threads, [&](int t) {
             partial[size_t(t)] = run_cpp(w, op, n * t / threads, n * (t + 1) / threads);
         });
         for (float p : partial) g_sink = g_sink + p;
@@ -104,7 +104,7 @@ std::string percent(double fraction) { return std::to_string(int(std::lround(100
 void print_efficiency(const std::vector<brdf::Preset>& presets, const BenchBrdfOptions& o) {
     const float thetas[3] = {0.0f, 45.0f, 75.0f};
     std::vector<validation::SamplingEfficiency> results(presets.size() * 3);
-    validation::parallel_for(int(results.size()), o.threads, [&](int k) {
+    lab::parallel_for(int(results.size()), o.threads, [&](int k) {
         brdf::float3 wo = brdf::direction_from_degrees(thetas[k % 3], 0.0f);
         results[size_t(k)] = validation::sampling_efficiency(presets[size_t(k / 3)].material, wo, o.efficiency_samples, 7);
     });

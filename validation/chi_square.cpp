@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "validation/chi_square_distribution.hpp"
-#include "validation/parallel_for.hpp"
+#include "common/parallel_for.hpp"
 #include "validation/sphere_quadrature.hpp"
 #include "validation/uniform_random.hpp"
 

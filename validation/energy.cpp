@@ -4,7 +4,7 @@
 
 #include "brdf/host/angles.hpp"
 #include "validation/albedo.hpp"
-#include "validation/parallel_for.hpp"
+#include "common/parallel_for.hpp"
 #include "validation/sphere_quadrature.hpp"
 
 namespace lab::validation {

@@ -11,7 +11,7 @@
 
 #include "brdf/host/parameters.hpp"
 #include "validation/albedo.hpp"
-#include "validation/parallel_for.hpp"
+#include "common/parallel_for.hpp"
 
 namespace lab::validation {
 

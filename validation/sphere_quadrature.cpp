@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "validation/parallel_for.hpp"
+#include "common/parallel_for.hpp"
 
 namespace lab::validation {
 

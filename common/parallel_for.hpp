@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-namespace lab::validation {
+namespace lab {
 
 inline void parallel_for(int count, int threads, const std::function<void(int)>& task) {
     std::atomic<int> next{0};
@@ -21,4 +21,4 @@ inline void parallel_for(int count, int threads, const std::function<void(int)>&
     for (std::thread& t : pool) t.join();
 }
 
-}  // namespace lab::validation
+}  // namespace lab
