@@ -228,6 +228,7 @@ private:
             submitted_ = worker_->submit(ui_.view);
             if (worker_b_ && moved) worker_b_->submit(state_b());
             waiting_.emplace_back(submitted_, Clock::now());
+            if (ui_.denoise) waiting_denoised_.emplace_back(submitted_, Clock::now());
         }
         for (const ScriptedSet& s : config_.view_modes)
             if (s.frame == n) {
@@ -351,6 +352,14 @@ private:
                 if (frame_.generation >= it->first && frame_.samples_per_pixel > 0) {
                     stats_.change_seconds.push_back(seconds_between(it->second, Clock::now()));
                     it = waiting_.erase(it);
+                } else {
+                    ++it;
+                }
+            }
+            for (auto it = waiting_denoised_.begin(); it != waiting_denoised_.end();) {
+                if (frame_.generation >= it->first && frame_.denoised_samples > 0) {
+                    stats_.denoised_seconds.push_back(seconds_between(it->second, Clock::now()));
+                    it = waiting_denoised_.erase(it);
                 } else {
                     ++it;
                 }
@@ -634,6 +643,7 @@ private:
     RenderFrame frame_, frame_b_;
     uint64_t submitted_ = 1;  // the worker's first generation is the initial state
     std::vector<std::pair<uint64_t, Clock::time_point>> waiting_;  // scripted changes not yet on screen
+    std::vector<std::pair<uint64_t, Clock::time_point>> waiting_denoised_;  // ... not yet on screen denoised
     Clock::time_point last_ = Clock::now(), script_end_{};
     bool retone_ = false;
     ViewMode view_mode_ = ViewMode::image;  // the view menu's choice (A's image; B shows its image)

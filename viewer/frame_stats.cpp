@@ -25,6 +25,12 @@ std::string describe(const FrameStats& s) {
                       quantile(s.change_seconds, 1.0) * 1e3);
         out += line;
     }
+    if (!s.denoised_seconds.empty()) {
+        std::snprintf(line, sizeof line, "change to first denoised frame: %zu changes, median %.1f ms, p95 %.1f ms, max %.1f ms\n",
+                      s.denoised_seconds.size(), quantile(s.denoised_seconds, 0.5) * 1e3, quantile(s.denoised_seconds, 0.95) * 1e3,
+                      quantile(s.denoised_seconds, 1.0) * 1e3);
+        out += line;
+    }
     if (!s.display_seconds.empty()) {
         std::vector<double> per_pixel;
         for (size_t i = 0; i < s.display_seconds.size(); ++i) per_pixel.push_back(s.display_seconds[i] / std::max(1.0, s.display_pixels[i]));

@@ -1,5 +1,6 @@
 // The figures `dtoadq view --stats` prints: interface frame times (median, 95th percentile) and
-// the time from a scripted change to the first frame that shows it.
+// the time from a scripted change to the first frame that shows it, and to the first that shows it
+// denoised.
 #pragma once
 
 #include <string>
@@ -10,6 +11,7 @@ namespace lab::viewer {
 struct FrameStats {
     std::vector<double> frame_seconds;   // every interface frame, start to start
     std::vector<double> change_seconds;  // per scripted change: submit to the first frame showing it
+    std::vector<double> denoised_seconds;  // per scripted change with the denoiser on: submit to the first frame showing it denoised
     std::vector<double> display_seconds;  // per image shown: its tone map and texture upload, on the interface thread
     std::vector<double> display_pixels;   // ... and its pixels
 };
