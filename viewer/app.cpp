@@ -348,22 +348,19 @@ private:
                 stats_.display_pixels.push_back(double(frame_.image.width) * double(frame_.image.height));
             }
             retone_ = false;
-            for (auto it = waiting_.begin(); it != waiting_.end();) {
-                if (frame_.generation >= it->first && frame_.samples_per_pixel > 0) {
-                    stats_.change_seconds.push_back(seconds_between(it->second, Clock::now()));
-                    it = waiting_.erase(it);
-                } else {
-                    ++it;
+            // a change is shown by a frame of its generation or a later one
+            const auto shown = [&](std::vector<std::pair<uint64_t, Clock::time_point>>* waiting, bool showing, std::vector<double>* latencies) {
+                for (auto it = waiting->begin(); it != waiting->end();) {
+                    if (showing && frame_.generation >= it->first) {
+                        latencies->push_back(seconds_between(it->second, Clock::now()));
+                        it = waiting->erase(it);
+                    } else {
+                        ++it;
+                    }
                 }
-            }
-            for (auto it = waiting_denoised_.begin(); it != waiting_denoised_.end();) {
-                if (frame_.generation >= it->first && frame_.denoised_samples > 0) {
-                    stats_.denoised_seconds.push_back(seconds_between(it->second, Clock::now()));
-                    it = waiting_denoised_.erase(it);
-                } else {
-                    ++it;
-                }
-            }
+            };
+            shown(&waiting_, frame_.samples_per_pixel > 0, &stats_.change_seconds);
+            shown(&waiting_denoised_, frame_.denoised_samples > 0, &stats_.denoised_seconds);
         }
     }
 
