@@ -36,7 +36,7 @@ struct BenchBrdfOptions {
     std::string device;
     std::string presets = "presets";
     long efficiency_samples = 200000;
-    int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    int threads = hardware_threads();
     int repeats = 3;
     bool sorted = false;
     ModelSpeedOptions models;

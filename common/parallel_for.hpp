@@ -10,6 +10,9 @@
 
 namespace lab {
 
+// The threads the machine runs at once (at least 1): the default thread count of the host's loops.
+inline int hardware_threads() { return int(std::max(1u, std::thread::hardware_concurrency())); }
+
 inline void parallel_for(int count, int threads, const std::function<void(int)>& task) {
     std::atomic<int> next{0};
     auto worker = [&]() {

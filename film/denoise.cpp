@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 
 #include "common/parallel_for.hpp"
 #include "single_source/host_vocabulary.hpp"
 
 namespace lab::film {
+
+// The host's steps around the passes (demodulate, estimate_variance, remodulate) run a row or a strip
+// of columns a task on every core: at 1 spp they are a third of the filter's time, and the passes on
+// the device use every core too.
 
 // The filter's single-source pass, compiled for the host here.
 namespace atrous {
@@ -23,10 +26,6 @@ static_assert(sizeof(std::array<float, 4>) == 4 * sizeof(float), "the buffers' p
 // An albedo channel small enough to divide noise up unboundedly: such a pixel is filtered as it is.
 constexpr float kMinAlbedo = 1e-3f;
 
-// The host's steps around the passes, a row (or a strip of columns) a task on every core: at 1 spp
-// they are a third of the filter's time, and the passes on the device use every core too.
-int thread_count() { return int(std::max(1u, std::thread::hardware_concurrency())); }
-
 float demodulator(float albedo) { return albedo > kMinAlbedo ? albedo : 1.0f; }
 
 const float* as_floats(const std::vector<std::array<float, 4>>& v) { return v.front().data(); }
@@ -39,7 +38,7 @@ void estimate_variance(AtrousBuffers* b) {
     const size_t row_length = 3 * size_t(w);
     // the moments 1, l, l^2 of a pixel on a surface (0 elsewhere), summed along its row's window
     std::vector<double> rows(3 * b->illumination.size());
-    parallel_for(h, thread_count(), [&](int y) {
+    parallel_for(h, hardware_threads(), [&](int y) {
         const size_t first = size_t(y) * size_t(w);
         double* out = rows.data() + 3 * first;
         std::vector<double> moments(3 * size_t(w), 0.0);
@@ -63,7 +62,7 @@ void estimate_variance(AtrousBuffers* b) {
     });
     // down each strip of columns, a row at a time so that the memory is read in order
     const int strip = 64, strips = (w + strip - 1) / strip;
-    parallel_for(strips, thread_count(), [&](int s) {
+    parallel_for(strips, hardware_threads(), [&](int s) {
         const int x0 = s * strip, x1 = std::min(w, x0 + strip);
         std::vector<double> column(3 * size_t(x1 - x0), 0.0);
         const auto add_row = [&](int y, double sign) {
@@ -100,7 +99,7 @@ AtrousBuffers demodulate(const ImageRgb& radiance, const DenoiseGuide& guide) {
     b.height = radiance.height;
     b.illumination.resize(n);
     b.guide.resize(n);
-    parallel_for(b.height, thread_count(), [&](int y) {
+    parallel_for(b.height, hardware_threads(), [&](int y) {
         for (size_t p = size_t(y) * size_t(b.width); p < size_t(y + 1) * size_t(b.width); ++p) {
             const float* c = radiance.rgb.data() + 3 * p;
             const float* a = guide.albedo.rgb.data() + 3 * p;
@@ -121,7 +120,7 @@ AtrousBuffers demodulate(const ImageRgb& radiance, const DenoiseGuide& guide) {
 
 ImageRgb remodulate(const AtrousBuffers& filtered, const DenoiseGuide& guide) {
     ImageRgb out(filtered.width, filtered.height);
-    parallel_for(out.height, thread_count(), [&](int y) {
+    parallel_for(out.height, hardware_threads(), [&](int y) {
         for (size_t p = size_t(y) * size_t(out.width); p < size_t(y + 1) * size_t(out.width); ++p)
             for (size_t c = 0; c < 3; ++c) out.rgb[3 * p + c] = filtered.illumination[p][c] * demodulator(guide.albedo.rgb[3 * p + c]);
     });

@@ -5,6 +5,8 @@
 #include <limits>
 #include <thread>
 
+#include "common/parallel_for.hpp"
+
 namespace lab::fit {
 
 brdf::float3 log_residual(brdf::float3 model, brdf::float3 measured, float cos_i) {
@@ -39,7 +41,7 @@ double fit_error(const brdf::Material& m, const std::vector<FitPair>& pairs) {
         for (size_t c = first; c < chunks; c += step)
             partial[c] = squared_residuals(m, pairs.data() + c * kChunk, pairs.data() + std::min(pairs.size(), (c + 1) * kChunk));
     };
-    const size_t threads = std::min<size_t>(chunks, std::max(1u, std::thread::hardware_concurrency()));
+    const size_t threads = std::min<size_t>(chunks, size_t(hardware_threads()));
     std::vector<std::thread> workers;
     for (size_t t = 1; t < threads; ++t) workers.emplace_back(run, t, threads);
     run(0, threads);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "common/parallel_for.hpp"
 #include "ibl/distribution.hpp"
 #include "ibl/ibl.hpp"
 
@@ -118,7 +119,7 @@ BlurredCubemap blur_cubemap(const std::vector<single_source::float4>& texels, in
         }
     };
     std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
+    for (int t = 1; t < hardware_threads(); ++t) pool.emplace_back(work);
     work();
     for (std::thread& t : pool) t.join();
     return out;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "common/parallel_for.hpp"
 #include "ibl/ibl.hpp"
 
 namespace lab::ibl {
@@ -169,7 +170,7 @@ std::vector<single_source::float4> equirect_to_cubemap(const LatLongImage& image
         }
     };
 
-    if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+    if (threads <= 0) threads = hardware_threads();
     threads = std::min(threads, n);
     std::atomic<int> next{0};
     auto worker = [&]() {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "common/parallel_for.hpp"
 #include "render/host_kernels.hpp"
 #include "render/renderer.hpp"
 
@@ -62,7 +63,7 @@ std::optional<FirstHitAovs> Renderer::first_hit_aovs(const SampleRanges& ranges,
                     }
         };
         std::vector<std::thread> pool;
-        for (unsigned t = 1; t < std::max(1u, std::thread::hardware_concurrency()); ++t) pool.emplace_back(work);
+        for (int t = 1; t < hardware_threads(); ++t) pool.emplace_back(work);
         work();
         for (std::thread& t : pool) t.join();
     }

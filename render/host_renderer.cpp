@@ -3,6 +3,7 @@
 #include <atomic>
 #include <thread>
 
+#include "common/parallel_for.hpp"
 #include "render/host_kernels.hpp"
 #include "render/light_cache.hpp"
 #include "render/vcm.hpp"
@@ -12,7 +13,7 @@ namespace lab::render {
 size_t path_state_bytes() { return sizeof(host_kernels::PathState); }
 
 HostRenderer::HostRenderer(RenderInput input, int threads) : Renderer(std::move(input)) {
-    threads_ = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    threads_ = threads > 0 ? threads : hardware_threads();
     initialize();
 }
 

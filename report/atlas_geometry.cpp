@@ -22,8 +22,6 @@ namespace hk = render::host_kernels;
 
 namespace {
 
-int thread_count() { return int(std::max(1u, std::thread::hardware_concurrency())); }
-
 // The scene as the renderer sees it with `--geometry march`: every object and emitter sphere-traced.
 struct MarchedScene {
     scene::Scene scene;
@@ -76,7 +74,7 @@ MarchSweep sweep_march_settings(const scene::Scene& input, const std::vector<dou
     conservative.epsilon_min *= 0.25f;
     conservative.max_steps *= 16;
     std::vector<hk::MarchResult> reference(n);
-    lab::parallel_for(height, thread_count(), [&](int row) {
+    lab::parallel_for(height, hardware_threads(), [&](int row) {
         const render::HostSceneScope scope(m.scene);
         for (size_t k = size_t(row) * w; k < size_t(row + 1) * w; ++k) reference[k] = hk::march(origins[k], directions[k], 0.0f, conservative);
     });
@@ -86,7 +84,7 @@ MarchSweep sweep_march_settings(const scene::Scene& input, const std::vector<dou
     sweep.lipschitz = base.lipschitz;
     for (const hk::MarchResult& r : reference) sweep.reference_unsettled += r.status == MARCH_OUT_OF_STEPS;
     sweep.cells.resize(bound_factors.size() * omegas.size());
-    lab::parallel_for(int(sweep.cells.size()), thread_count(), [&](int c) {
+    lab::parallel_for(int(sweep.cells.size()), hardware_threads(), [&](int c) {
         const render::HostSceneScope scope(m.scene);
         MarchCell cell;
         cell.bound_factor = bound_factors[size_t(c) / omegas.size()];
