@@ -65,8 +65,9 @@ void run_bench_denoise(const BenchDenoiseCommand& c) {
         throw InputError("--reference-spp", std::to_string(c.reference_spp), "must be at least twice the largest --spp and at most 2^20");
     if (c.filter_repeats < 1 || c.filter_repeats > 1000) throw InputError("--filter-repeats", std::to_string(c.filter_repeats), "must be in [1, 1000]");
     if (c.filter.passes < 1 || c.filter.passes > 8) throw InputError("--passes", std::to_string(c.filter.passes), "must be in [1, 8]");
-    if (!(c.filter.sigma_luminance > 0.0f) || !(c.filter.sigma_normal >= 0.0f) || !(c.filter.sigma_depth > 0.0f))
-        throw InputError("--sigma-luminance", "", "the filter's sigmas must be positive (the normal's may be 0)");
+    if (!(c.filter.sigma_luminance > 0.0f)) throw InputError("--sigma-luminance", std::to_string(c.filter.sigma_luminance), "must be > 0");
+    if (!(c.filter.sigma_normal >= 0.0f)) throw InputError("--sigma-normal", std::to_string(c.filter.sigma_normal), "must be >= 0");
+    if (!(c.filter.sigma_depth > 0.0f)) throw InputError("--sigma-depth", std::to_string(c.filter.sigma_depth), "must be > 0");
     if (!c.chart.empty()) film::check_output_path(c.chart);
 
     std::optional<opencl::Runtime> runtime;
@@ -117,14 +118,13 @@ void run_bench_denoise(const BenchDenoiseCommand& c) {
                 // the host, the passes where the render runs, remodulation on the host
                 film::ImageRgb denoised;
                 std::vector<double> filter_times, pass_times;
-                const film::DenoiseOptions& denoise_options = c.filter;
                 const std::unique_ptr<render::DisplayFilter> filter = renderer->display_filter();
                 filter->prepare();  // its program: the times below are the filter alone
                 for (int i = 0; i < c.filter_repeats; ++i) {
                     Clock::time_point start = Clock::now();
                     film::AtrousBuffers buffers = film::demodulate(raw, guide);
                     Clock::time_point passes_start = Clock::now();
-                    filter->passes(&buffers, denoise_options, {});
+                    filter->passes(&buffers, c.filter, {});
                     pass_times.push_back(seconds_since(passes_start));
                     denoised = film::remodulate(buffers, guide);
                     filter_times.push_back(seconds_since(start));

@@ -13,8 +13,9 @@
  * g3x3 is the variance blurred by the same 3 x 3 taps (SVGF's guard against a variance estimate of
  * few samples; SVGF blurs over the adjacent pixels, the same as the first pass's taps). The 3 x 3
  * taps instead of Dammertz's and SVGF's 5 x 5 B3 spline: a third of the loads and weights a pass, and
- * at the viewer's size no more error (docs/render.md, "Measured"). The filtered value is sum(h w c) / sum(h w) and its variance
- * sum((h w)^2 var) / sum(h w)^2, which the next, wider pass reads.
+ * at the viewer's size no more error (docs/render.md, "Measured"). The filtered value is
+ * sum(h w c) / sum(h w) and its variance sum((h w)^2 var) / sum(h w)^2, which the next, wider pass
+ * reads.
  * What it filters is the illumination (radiance / albedo: film/denoise.cpp), so texture is not
  * blurred. A pixel without a surface (depth <= 0: the background) is left as it is and never
  * mixed with one that has a surface.
@@ -67,7 +68,8 @@ SS_FN SDF_FLOAT atrous_inside_lanes(SDF_MASK x, int y, int width, int height) {
 /* e^-x for x >= 0 (and a little below), to a relative 5e-5: 2^-y with y = x log2(e) split into a
  * whole n and a rest r in [-1/2, 1/2], e^(-r ln 2) by its Taylor series to the fourth power, 2^-n from
  * the exponent's bits. A weight under 2^-125 is 0 to the filter, so y stops there. Cheaper than the
- * library's exp on eight lanes (no table, no special cases), and the same bits on the host and the device. */
+ * library's exp on eight lanes (no table, no special cases), and one formula on the host and the
+ * device. */
 #if defined(__OPENCL_C_VERSION__) && defined(SDF_LANES)
 SS_FN float8 atrous_pow2_neg(float8 n) { return as_float8((int8)(127 - convert_int8(n)) << 23); }
 #elif defined(__OPENCL_C_VERSION__)

@@ -19,18 +19,15 @@ std::string describe(const FrameStats& s) {
     std::snprintf(line, sizeof line, "interface: %zu frames, median %.1f ms (%.1f frames/s), p95 %.1f ms\n", s.frame_seconds.size(),
                   median * 1e3, median > 0.0 ? 1.0 / median : 0.0, p95 * 1e3);
     std::string out = line;
-    if (!s.change_seconds.empty()) {
-        std::snprintf(line, sizeof line, "change to first updated frame: %zu changes, median %.1f ms, p95 %.1f ms, max %.1f ms\n",
-                      s.change_seconds.size(), quantile(s.change_seconds, 0.5) * 1e3, quantile(s.change_seconds, 0.95) * 1e3,
-                      quantile(s.change_seconds, 1.0) * 1e3);
+    // the changes' latency to a frame that shows them, when there were any
+    const auto latency = [&](const char* frame, const std::vector<double>& seconds) {
+        if (seconds.empty()) return;
+        std::snprintf(line, sizeof line, "change to first %s frame: %zu changes, median %.1f ms, p95 %.1f ms, max %.1f ms\n", frame,
+                      seconds.size(), quantile(seconds, 0.5) * 1e3, quantile(seconds, 0.95) * 1e3, quantile(seconds, 1.0) * 1e3);
         out += line;
-    }
-    if (!s.denoised_seconds.empty()) {
-        std::snprintf(line, sizeof line, "change to first denoised frame: %zu changes, median %.1f ms, p95 %.1f ms, max %.1f ms\n",
-                      s.denoised_seconds.size(), quantile(s.denoised_seconds, 0.5) * 1e3, quantile(s.denoised_seconds, 0.95) * 1e3,
-                      quantile(s.denoised_seconds, 1.0) * 1e3);
-        out += line;
-    }
+    };
+    latency("updated", s.change_seconds);
+    latency("denoised", s.denoised_seconds);
     if (!s.display_seconds.empty()) {
         std::vector<double> per_pixel;
         for (size_t i = 0; i < s.display_seconds.size(); ++i) per_pixel.push_back(s.display_seconds[i] / std::max(1.0, s.display_pixels[i]));
